@@ -5,8 +5,10 @@ namespace NerfDatasetCreator
 {
     /// <summary>
     /// A path around the target, like nerf_synthetic's test views: <see cref="Turns"/> turns of azimuth while the
-    /// elevation swings once from high to low and back. The swing is sampled at (i + ½)/N so that, with an even
-    /// number of turns, the two passes through the middle elevation never fall on the same spot.
+    /// elevation swings once from high to low and back. The swing is sampled at phase 2π(i + ¼)/N: two views share
+    /// an elevation only if i + j + ½ is a multiple of N, which no whole numbers satisfy, so no two views ever
+    /// coincide whatever N and the turns. (Sampling at i/N, as nerf_synthetic's script does, puts views N/4 and 3N/4
+    /// of a two-turn path on the same spot; (i + ½)/N does the same when N ≡ 2 mod 4.)
     /// </summary>
     [Serializable]
     public sealed class OrbitFormation : ICameraFormation
@@ -53,7 +55,7 @@ namespace NerfDatasetCreator
             var directions = new SphericalDirection[count];
             for (var i = 0; i < count; i++)
             {
-                var t = (i + 0.5) / count;
+                var t = (i + 0.25) / count;
                 var elevation = low + (high - low) * (1 + Math.Cos(2 * Math.PI * t)) / 2;
                 var azimuth = FormationMath.WrapRadians(start + 2 * Math.PI * Turns * i / count);
                 directions[i] = new SphericalDirection(azimuth, elevation);

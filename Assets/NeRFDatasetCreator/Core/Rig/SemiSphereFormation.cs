@@ -53,6 +53,10 @@ namespace NerfDatasetCreator
                 bottom = new ValidationProblem("bottomElevationDegrees", ValidationProblem.Format(BottomElevationDegrees),
                     "is above topElevationDegrees (" + ValidationProblem.Format(TopElevationDegrees) + ").",
                     "Make the bottom of the band lower than or equal to its top.");
+            if (top == null && bottom == null && BottomElevationDegrees == TopElevationDegrees && Math.Abs(TopElevationDegrees) == 90)
+                bottom = new ValidationProblem("bottomElevationDegrees", ValidationProblem.Format(BottomElevationDegrees),
+                    "makes the band a single point on the pole, where every camera would stand on the same spot.",
+                    "Lower the bottom of the band (or raise it, at the south pole).");
             return FormationMath.Collect(fieldPrefix, top, bottom,
                 ValidationProblem.OutsideRange("spiralRatio", SpiralRatio, 0, 1000));
         }
