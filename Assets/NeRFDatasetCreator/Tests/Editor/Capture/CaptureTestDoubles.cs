@@ -31,11 +31,9 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         public readonly List<RecordedView> Views = new List<RecordedView>();
         public bool Finished;
         public bool Aborted;
-        public Action<CapturedView> OnConsume;
 
         public void Consume(CapturedView view)
         {
-            OnConsume?.Invoke(view);
             Views.Add(new RecordedView
             {
                 ViewIndex = view.ViewIndex,
