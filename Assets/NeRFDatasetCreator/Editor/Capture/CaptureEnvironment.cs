@@ -70,6 +70,23 @@ namespace NerfDatasetCreator.Editor.Capture
 #endif
         }
 
+        /// <summary>
+        /// URP's Render Scale (the public <c>renderScale</c> property of UniversalRenderPipelineAsset, read by name so no
+        /// URP assembly is referenced), or null for the Built-in pipeline and pipelines without one. URP ignores
+        /// differences below 0.05 from 1 (kRenderScaleThreshold in UniversalRenderPipeline.cs).
+        /// </summary>
+        public static float? PipelineRenderScale
+        {
+            get
+            {
+                var asset = GraphicsSettings.currentRenderPipeline;
+                var property = asset == null ? null : asset.GetType().GetProperty("renderScale",
+                    System.Reflection.BindingFlags.Public | System.Reflection.BindingFlags.Instance);
+                if (property == null || property.PropertyType != typeof(float) || !property.CanRead) return null;
+                return (float)property.GetValue(asset);
+            }
+        }
+
         /// <summary>Throws a <see cref="CaptureException"/> saying why this editor cannot render a capture, if it cannot.</summary>
         public static void ThrowIfCannotRender(CapturePasses passes)
         {
@@ -83,6 +100,14 @@ namespace NerfDatasetCreator.Editor.Capture
                     "The project uses the High Definition Render Pipeline (" + RenderPipelineName + "), which this version " +
                     "does not support: its exposure and tonemapping would alter the colours and the depth, normal and mask " +
                     "passes. Capture in a Built-in or Universal Render Pipeline project.");
+            var scale = PipelineRenderScale;
+            if (scale.HasValue && Math.Abs(scale.Value - 1f) >= 0.05f)
+                throw new CaptureException(
+                    "The render pipeline asset (" + RenderPipelineName + ") has Render Scale " +
+                    scale.Value.ToString("0.##", System.Globalization.CultureInfo.InvariantCulture) + ". URP would then render " +
+                    "at another resolution and rescale into the capture's textures, blurring the colour and blending depth " +
+                    "and normals across edges. Set Render Scale to 1 in the asset (Quality settings may select another " +
+                    "asset per level), then capture.");
             Require(ColorFormat, "colour", passes, CapturePasses.Color);
             Require(MaskFormat, "mask", passes, CapturePasses.Mask | CapturePasses.Color);
             Require(DepthFormat, "depth", passes, CapturePasses.Depth);

@@ -27,7 +27,7 @@ namespace NerfDatasetCreator.Editor.Capture
         public Camera Camera { get; private set; }
 
         /// <summary>Renderers the data passes cannot draw (particles, lines, sprites…, terrains): hidden in mask, depth and normal.</summary>
-        public int UnsupportedRendererCount => _hiddenInDataPasses.Count;
+        public int UnsupportedRendererCount { get; private set; }
 
         /// <summary>False once anything the stage owns was destroyed from outside (a scene reload, a script).</summary>
         public bool IsIntact => _root != null && Camera != null && _scene.IsValid();
@@ -157,9 +157,18 @@ namespace NerfDatasetCreator.Editor.Capture
                 if (renderer is MeshRenderer || renderer is SkinnedMeshRenderer)
                     _renderers.Add(new SwappableRenderer(renderer));
                 else
+                {
                     Hide(renderer);
+                    UnsupportedRendererCount++;
+                }
             }
-            foreach (var terrain in _root.GetComponentsInChildren<Terrain>(true)) Hide(terrain);
+            foreach (var terrain in _root.GetComponentsInChildren<Terrain>(true))
+            {
+                Hide(terrain);
+                UnsupportedRendererCount++;
+            }
+            // The data shaders are unlit: lights would only cost shadow-map renders in those passes.
+            foreach (var light in _root.GetComponentsInChildren<Light>(true)) Hide(light);
         }
 
         void Hide(Behaviour behaviour)

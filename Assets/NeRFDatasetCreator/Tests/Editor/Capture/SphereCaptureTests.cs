@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Linq;
 using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
 using UnityEditor.SceneManagement;
@@ -218,6 +219,34 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
             finally
             {
                 Object.DestroyImmediate(material);
+            }
+        }
+
+        /// <summary>
+        /// The threaded path end to end: every view's raw passes are encoded with ImageConversion on worker threads
+        /// and written (PNG signature, EXR magic number).
+        /// </summary>
+        [Test]
+        public void EveryViewsFilesAreWrittenByTheWorkerThreads()
+        {
+            var folder = Path.Combine(Path.GetTempPath(), "NerfCaptureTest_" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                using (var consumer = new ParallelViewConsumer(new RawPassWriter(folder), 2, 2))
+                    CaptureRunner.RunBlocking(_sphere, Poses(Vector3d.Zero), Options(), consumer, new ScriptedProgress());
+                for (var i = 0; i < 8; i++)
+                {
+                    var stem = Path.Combine(folder, "view_" + i.ToString("0000"));
+                    var png = File.ReadAllBytes(stem + "_color.png");
+                    Assert.That(png.Take(8), Is.EqualTo(new byte[] { 137, 80, 78, 71, 13, 10, 26, 10 }), stem + "_color.png");
+                    foreach (var exr in new[] { stem + "_depth.exr", stem + "_normal.exr" })
+                        Assert.That(File.ReadAllBytes(exr).Take(4), Is.EqualTo(new byte[] { 0x76, 0x2f, 0x31, 0x01 }), exr);
+                }
+                Assert.That(Directory.GetFiles(folder), Has.Length.EqualTo(24));
+            }
+            finally
+            {
+                if (Directory.Exists(folder)) Directory.Delete(folder, true);
             }
         }
 
