@@ -30,6 +30,8 @@ namespace NerfDatasetCreator.Editor.Capture
         SynchronousReadback _synchronous;
         CapturePools _pools;
         bool _reloadLocked;
+        bool _asyncShadersChanged;
+        bool _asyncShadersWereAllowed;
         bool _cancelRequested;
         bool _finished;
         bool _disposed;
@@ -133,6 +135,12 @@ namespace NerfDatasetCreator.Editor.Capture
             // A domain reload in the middle would orphan the preview scene and the render textures.
             EditorApplication.LockReloadAssemblies();
             _reloadLocked = true;
+
+            // With asynchronous shader compilation the editor draws not-yet-compiled variants with a cyan
+            // placeholder: the first views of a capture would record it. Compile synchronously instead.
+            _asyncShadersWereAllowed = ShaderUtil.allowAsyncCompilation;
+            ShaderUtil.allowAsyncCompilation = false;
+            _asyncShadersChanged = true;
 
             _materials = new CaptureMaterials();
             _stage = new CaptureStage(_target, _options);
@@ -313,6 +321,11 @@ namespace NerfDatasetCreator.Editor.Capture
             if (_synchronous != null) Try(_synchronous.Dispose);
             if (_stage != null) Try(_stage.Dispose);
             if (_materials != null) Try(_materials.Dispose);
+            if (_asyncShadersChanged)
+            {
+                _asyncShadersChanged = false;
+                ShaderUtil.allowAsyncCompilation = _asyncShadersWereAllowed;
+            }
             if (_reloadLocked)
             {
                 _reloadLocked = false;

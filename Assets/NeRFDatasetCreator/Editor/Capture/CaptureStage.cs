@@ -39,8 +39,9 @@ namespace NerfDatasetCreator.Editor.Capture
                 _scene = EditorSceneManager.NewPreviewScene();
                 if (!_scene.IsValid()) throw new CaptureException("Unity could not create the preview scene the capture renders in.");
 
-                // Copies are made under an inactive root, so that no Awake/OnEnable of the user's [ExecuteAlways]
-                // scripts runs on them before their behaviours are switched off below.
+                // Copies are made under an inactive root and their scripts are disabled before it is activated, so
+                // OnEnable/Update of the user's [ExecuteAlways] scripts never run on them. (Awake still does: Unity calls
+                // it on disabled components when their object becomes active.)
                 _root = NewHiddenObject("NeRF Dataset Creator capture");
                 _root.SetActive(false);
 
