@@ -65,6 +65,7 @@ namespace NerfDatasetCreator.Editor.Capture
             options.ThrowIfInvalid();
             if (poses.Count == 0)
                 throw new InvalidParameterException(new[] { new ValidationProblem("capture.poses", "0", "has no views to render.", "Plan at least one view.") });
+            InvalidParameterException.ThrowIfAny(PoseProblem(poses));
             CaptureEnvironment.ThrowIfCannotRender(options.EffectivePasses);
             CheckTarget(target, options.Isolation);
             if (EditorApplication.isPlayingOrWillChangePlaymode)
@@ -99,6 +100,23 @@ namespace NerfDatasetCreator.Editor.Capture
 
         /// <summary>Asks the run to stop; the next <see cref="Step"/> throws <see cref="CaptureCancelledException"/>.</summary>
         public void Cancel() => _cancelRequested = true;
+
+        /// <summary>The first pose that is not finite or whose rotation is not a unit quaternion, or null.</summary>
+        static ValidationProblem PoseProblem(IReadOnlyList<UnityPose> poses)
+        {
+            for (var i = 0; i < poses.Count; i++)
+            {
+                var p = poses[i].Position;
+                var q = poses[i].Rotation;
+                var finite = !double.IsNaN(p.X + p.Y + p.Z + q.X + q.Y + q.Z + q.W) &&
+                             !double.IsInfinity(p.X + p.Y + p.Z + q.X + q.Y + q.Z + q.W);
+                if (!finite || Math.Abs(q.Norm - 1) > 1e-6)
+                    return new ValidationProblem("capture.poses[" + i + "]", "position " + p + ", rotation " + q,
+                        finite ? "has a rotation quaternion that is not of unit length." : "is not finite.",
+                        "Recompute the camera plan; poses come from the formation settings.");
+            }
+            return null;
+        }
 
         static void CheckTarget(GameObject target, CaptureIsolation isolation)
         {
