@@ -122,7 +122,16 @@ namespace NerfDatasetCreator.Editor.Capture
                 var go = NewHiddenObject("Light copy: " + light.name, typeof(Light));
                 go.transform.SetParent(_root.transform, false);
                 go.transform.SetPositionAndRotation(light.transform.position, light.transform.rotation);
-                CopyLight(light, go.GetComponent<Light>());
+                try
+                {
+                    CopyLight(light, go.GetComponent<Light>());
+                }
+                catch (Exception e)
+                {
+                    // Some setters validate against the pipeline (e.g. shadow types); one odd light must not stop a capture.
+                    Object.DestroyImmediate(go);
+                    Debug.LogWarning("NeRF Dataset Creator: the light '" + light.name + "' could not be copied into the capture and is left out: " + e.Message);
+                }
             }
         }
 
