@@ -1,0 +1,125 @@
+using System;
+using UnityEngine;
+using UnityEngine.Experimental.Rendering;
+using UnityEngine.Rendering;
+
+namespace NerfDatasetCreator.Editor.Capture
+{
+    /// <summary>Facts about this editor that decide whether and how a capture can render.</summary>
+    public static class CaptureEnvironment
+    {
+        /// <summary>True when Unity runs without a graphics device (<c>-nographics</c>): nothing can be rendered.</summary>
+        public static bool HasNoGraphicsDevice => SystemInfo.graphicsDeviceType == GraphicsDeviceType.Null;
+
+        /// <summary>"Built-in" or the active render pipeline asset's type name (quality level first, then graphics settings).</summary>
+        public static string RenderPipelineName
+        {
+            get
+            {
+                var asset = GraphicsSettings.currentRenderPipeline;
+                return asset == null ? "Built-in" : asset.GetType().Name;
+            }
+        }
+
+        /// <summary>
+        /// HDRP is recognised by its asset's type name (HDRenderPipelineAsset), so that no HDRP assembly is referenced.
+        /// Its exposure and tonemapping would change the colours and its passes ignore our untagged aux shaders.
+        /// </summary>
+        public static bool IsHdrp
+        {
+            get
+            {
+                var asset = GraphicsSettings.currentRenderPipeline;
+                for (var type = asset == null ? null : asset.GetType(); type != null; type = type.BaseType)
+                    if (type.Name.IndexOf("HDRenderPipelineAsset", StringComparison.Ordinal) >= 0) return true;
+                return false;
+            }
+        }
+
+        /// <summary>
+        /// The colour target's format, chosen so that its bytes are sRGB-encoded in both colour spaces. Linear: shaders
+        /// output linear values, an _SRGB target encodes them on write. Gamma: shaders already output gamma-space
+        /// values and Unity treats textures as non-sRGB ("In Gamma project color space, Unity returns a linear
+        /// GraphicsFormat", GraphicsFormatUtility.GetGraphicsFormat), so a UNorm target stores them as they are.
+        /// </summary>
+        public static GraphicsFormat ColorFormat =>
+            QualitySettings.activeColorSpace == ColorSpace.Linear ? GraphicsFormat.R8G8B8A8_SRGB : GraphicsFormat.R8G8B8A8_UNorm;
+
+        public const GraphicsFormat DepthFormat = GraphicsFormat.R32_SFloat;
+        public const GraphicsFormat NormalFormat = GraphicsFormat.R32G32B32A32_SFloat;
+
+        /// <summary>R8_UNorm where it can be rendered to (1 byte per sample), else RGBA8 (the red channel is read).</summary>
+        public static GraphicsFormat MaskFormat =>
+            CanRenderTo(GraphicsFormat.R8_UNorm) ? GraphicsFormat.R8_UNorm : GraphicsFormat.R8G8B8A8_UNorm;
+
+        public static bool CanRenderTo(GraphicsFormat format)
+        {
+#if UNITY_2023_2_OR_NEWER
+            return SystemInfo.IsFormatSupported(format, GraphicsFormatUsage.Render);
+#else
+            return SystemInfo.IsFormatSupported(format, FormatUsage.Render);
+#endif
+        }
+
+        public static bool CanReadPixels(GraphicsFormat format)
+        {
+#if UNITY_2023_2_OR_NEWER
+            return SystemInfo.IsFormatSupported(format, GraphicsFormatUsage.ReadPixels);
+#else
+            return SystemInfo.IsFormatSupported(format, FormatUsage.ReadPixels);
+#endif
+        }
+
+        /// <summary>
+        /// URP's Render Scale (the public <c>renderScale</c> property of UniversalRenderPipelineAsset, read by name so no
+        /// URP assembly is referenced), or null for the Built-in pipeline and pipelines without one. URP ignores
+        /// differences below 0.05 from 1 (kRenderScaleThreshold in UniversalRenderPipeline.cs).
+        /// </summary>
+        public static float? PipelineRenderScale
+        {
+            get
+            {
+                var asset = GraphicsSettings.currentRenderPipeline;
+                var property = asset == null ? null : asset.GetType().GetProperty("renderScale",
+                    System.Reflection.BindingFlags.Public | System.Reflection.BindingFlags.Instance);
+                if (property == null || property.PropertyType != typeof(float) || !property.CanRead) return null;
+                return (float)property.GetValue(asset);
+            }
+        }
+
+        /// <summary>Throws a <see cref="CaptureException"/> saying why this editor cannot render a capture, if it cannot.</summary>
+        public static void ThrowIfCannotRender(CapturePasses passes)
+        {
+            if (HasNoGraphicsDevice)
+                throw new CaptureException(
+                    "Unity has no graphics device (it was started with -nographics), so nothing can be rendered. " +
+                    "Run the capture without -nographics; in batch mode keep -batchmode and, on a machine without a display, " +
+                    "start Unity under a virtual display such as xvfb-run.");
+            if (IsHdrp)
+                throw new CaptureException(
+                    "The project uses the High Definition Render Pipeline (" + RenderPipelineName + "), which this version " +
+                    "does not support: its exposure and tonemapping would alter the colours and the depth, normal and mask " +
+                    "passes. Capture in a Built-in or Universal Render Pipeline project.");
+            var scale = PipelineRenderScale;
+            if (scale.HasValue && Math.Abs(scale.Value - 1f) >= 0.05f)
+                throw new CaptureException(
+                    "The render pipeline asset (" + RenderPipelineName + ") has Render Scale " +
+                    scale.Value.ToString("0.##", System.Globalization.CultureInfo.InvariantCulture) + ". URP would then render " +
+                    "at another resolution and rescale into the capture's textures, blurring the colour and blending depth " +
+                    "and normals across edges. Set Render Scale to 1 in the asset (Quality settings may select another " +
+                    "asset per level), then capture.");
+            Require(ColorFormat, "colour", passes, CapturePasses.Color);
+            Require(MaskFormat, "mask", passes, CapturePasses.Mask | CapturePasses.Color);
+            Require(DepthFormat, "depth", passes, CapturePasses.Depth);
+            Require(NormalFormat, "normal", passes, CapturePasses.Normal);
+        }
+
+        static void Require(GraphicsFormat format, string pass, CapturePasses passes, CapturePasses needing)
+        {
+            if ((passes & needing) == 0 || CanRenderTo(format)) return;
+            throw new CaptureException(
+                "This GPU (" + SystemInfo.graphicsDeviceName + ", " + SystemInfo.graphicsDeviceType + ") cannot render to " +
+                format + ", the format of the " + pass + " pass. Turn the " + pass + " pass off or capture on another machine.");
+        }
+    }
+}

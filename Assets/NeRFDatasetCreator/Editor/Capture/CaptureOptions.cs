@@ -1,0 +1,107 @@
+using System.Collections.Generic;
+using System.Globalization;
+using UnityEngine;
+
+namespace NerfDatasetCreator.Editor.Capture
+{
+    /// <summary>
+    /// How to render the views of one capture: output size, supersampling, passes, lens and isolation. The lead's
+    /// settings layer fills this from the user's Core settings; nothing here is persisted.
+    /// </summary>
+    public sealed class CaptureOptions
+    {
+        public const int MaxSize = 8192;
+        public const int MaxSupersampling = 8;
+        public const int MaxReadbacksInFlight = 8;
+
+        /// <summary>Output image width in pixels (the written PNG's width, before supersampling).</summary>
+        public int Width = 800;
+
+        /// <summary>Output image height in pixels.</summary>
+        public int Height = 800;
+
+        /// <summary>k: colour and mask are rendered at k·W × k·H and box-filtered later (anti-aliased edges, true alpha).</summary>
+        public int Supersampling = 2;
+
+        public CapturePasses Passes = CapturePasses.All;
+
+        /// <summary>
+        /// Vertical field of view in degrees, used unless <see cref="TemplateCamera"/> is set. Written to
+        /// <c>Camera.fieldOfView</c> with physical properties off, so it is exactly the vertical FOV of the images.
+        /// </summary>
+        public double VerticalFieldOfViewDegrees = 39.6;
+
+        public double NearClip = 0.05;
+        public double FarClip = 1000.0;
+
+        /// <summary>
+        /// Optional user camera to copy settings from (field of view, clip planes, culling mask, via <c>Camera.CopyFrom</c>).
+        /// Everything the dataset depends on (aspect, clear colour, HDR, MSAA, physical properties…) is re-applied after.
+        /// </summary>
+        public Camera TemplateCamera;
+
+        public CaptureIsolation Isolation = CaptureIsolation.TargetOnly;
+
+        /// <summary>TargetOnly mode: bring copies of the scene's enabled lights into the preview scene (else it is unlit but for ambient).</summary>
+        public bool CopySceneLights = true;
+
+        /// <summary>Views whose GPU readback may be pending at once; each holds its own set of render textures.</summary>
+        public int ReadbacksInFlight = 3;
+
+        /// <summary>
+        /// Render depth and normals at the output size (one sample exactly at each pixel centre, k² less memory) instead
+        /// of the supersampled size. Depth and normals must never be averaged, so nothing is lost.
+        /// </summary>
+        public bool DepthAndNormalAtOutputSize = true;
+
+        /// <summary>Use ReadPixels even where AsyncGPUReadback is supported (diagnostics; the slower, always-available path).</summary>
+        public bool ForceSynchronousReadback;
+
+        public int SupersampledWidth => Width * Supersampling;
+        public int SupersampledHeight => Height * Supersampling;
+        public int DataWidth => DepthAndNormalAtOutputSize ? Width : SupersampledWidth;
+        public int DataHeight => DepthAndNormalAtOutputSize ? Height : SupersampledHeight;
+
+        /// <summary>Every problem with these options at once, each naming the field, its value and the fix.</summary>
+        public List<ValidationProblem> Validate()
+        {
+            var problems = new List<ValidationProblem>
+            {
+                ValidationProblem.OutsideRange("capture.width", Width, 1, MaxSize),
+                ValidationProblem.OutsideRange("capture.height", Height, 1, MaxSize),
+                ValidationProblem.OutsideRange("capture.supersampling", Supersampling, 1, MaxSupersampling),
+                ValidationProblem.OutsideRange("capture.readbacksInFlight", ReadbacksInFlight, 1, MaxReadbacksInFlight),
+            };
+            if (TemplateCamera == null)
+            {
+                problems.Add(ValidationProblem.OutsideRange("capture.verticalFieldOfViewDegrees", VerticalFieldOfViewDegrees, 0.01, 179.0, "degrees"));
+                problems.Add(ValidationProblem.OutsideRange("capture.nearClip", NearClip, 1e-5, 1e6));
+                if (!(FarClip > NearClip) || double.IsInfinity(FarClip))
+                    problems.Add(new ValidationProblem("capture.farClip", ValidationProblem.Format(FarClip),
+                        "must be a finite distance beyond the near clip plane (" + ValidationProblem.Format(NearClip) + ").",
+                        "Use a far clip larger than the near clip that encloses the target from every camera."));
+            }
+            if (Width > 0 && Supersampling > 0 && (long)Width * Supersampling > 16384)
+                problems.Add(new ValidationProblem("capture.supersampling",
+                    Supersampling.ToString(CultureInfo.InvariantCulture),
+                    "makes the rendered width " + ((long)Width * Supersampling).ToString(CultureInfo.InvariantCulture) + " pixels, beyond the 16384 GPUs support.",
+                    "Lower the supersampling or the resolution."));
+            if (Height > 0 && Supersampling > 0 && (long)Height * Supersampling > 16384)
+                problems.Add(new ValidationProblem("capture.supersampling",
+                    Supersampling.ToString(CultureInfo.InvariantCulture),
+                    "makes the rendered height " + ((long)Height * Supersampling).ToString(CultureInfo.InvariantCulture) + " pixels, beyond the 16384 GPUs support.",
+                    "Lower the supersampling or the resolution."));
+            if (Passes == CapturePasses.None)
+                problems.Add(new ValidationProblem("capture.passes", "None", "renders nothing.", "Choose at least the colour pass."));
+            problems.RemoveAll(p => p == null);
+            return problems;
+        }
+
+        /// <summary>Throws <see cref="InvalidParameterException"/> listing every problem, if any.</summary>
+        public void ThrowIfInvalid() => InvalidParameterException.ThrowIfAny(Validate().ToArray());
+
+        /// <summary>Colour always needs the mask (its alpha); the mask alone is allowed.</summary>
+        public CapturePasses EffectivePasses =>
+            (Passes & CapturePasses.Color) != 0 ? Passes | CapturePasses.Mask : Passes;
+    }
+}

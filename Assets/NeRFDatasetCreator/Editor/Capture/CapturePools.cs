@@ -1,0 +1,34 @@
+using System;
+
+namespace NerfDatasetCreator.Editor.Capture
+{
+    /// <summary>Pooled pixel arrays of one capture, one pool per pass, sized for its render targets.</summary>
+    sealed class CapturePools
+    {
+        public CapturePools(CaptureOptions options, int retained)
+        {
+            var samples = options.SupersampledWidth * options.SupersampledHeight;
+            var data = options.DataWidth * options.DataHeight;
+            Color = new ExactArrayPool<byte>(samples * 4, retained);
+            Mask = new ExactArrayPool<byte>(samples, retained);
+            Depth = new ExactArrayPool<float>(data, retained);
+            Normal = new ExactArrayPool<float>(data * 4, retained);
+        }
+
+        public ExactArrayPool<byte> Color { get; }
+        public ExactArrayPool<byte> Mask { get; }
+        public ExactArrayPool<float> Depth { get; }
+        public ExactArrayPool<float> Normal { get; }
+
+        /// <summary>The release callback of a <see cref="CapturedView"/>: returns its arrays. Runs on any thread.</summary>
+        public void Return(CapturedView view)
+        {
+            Color.Return(view.Color);
+            Mask.Return(view.Mask);
+            Depth.Return(view.Depth);
+            Normal.Return(view.Normal);
+        }
+
+        public Action<CapturedView> ReturnCallback => Return;
+    }
+}

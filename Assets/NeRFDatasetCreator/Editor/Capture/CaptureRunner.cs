@@ -1,0 +1,91 @@
+using System;
+using System.Collections.Generic;
+using UnityEditor;
+using UnityEngine;
+
+namespace NerfDatasetCreator.Editor.Capture
+{
+    /// <summary>Ways to drive a <see cref="CaptureSession"/>: to the end in one call, or a slice per editor update.</summary>
+    public static class CaptureRunner
+    {
+        /// <summary>
+        /// Captures every pose before returning (CLI, tests, scripts), with a cancellable progress bar unless another
+        /// reporter is given. Throws <see cref="CaptureCancelledException"/>, <see cref="CaptureException"/> or
+        /// <see cref="InvalidParameterException"/>; the scene is restored and the consumer aborted in every case.
+        /// </summary>
+        public static CaptureSummary RunBlocking(GameObject target, IReadOnlyList<UnityPose> poses, CaptureOptions options,
+            IViewConsumer consumer, ICaptureProgress progress = null)
+        {
+            progress = progress ?? new ProgressBarReporter();
+            try
+            {
+                using (var session = CaptureSession.Begin(target, poses, options, consumer, progress))
+                {
+                    while (session.Step(0.25))
+                    {
+                    }
+                    var summary = session.Summary;
+                    Debug.Log(summary.ToString());
+                    return summary;
+                }
+            }
+            finally
+            {
+                progress.Close();
+            }
+        }
+
+        /// <summary>
+        /// Starts a capture that renders for about <paramref name="sliceSeconds"/> per editor update, so the editor stays
+        /// usable; progress and Cancel appear in Unity's Background Tasks. <paramref name="done"/> gets the summary, or
+        /// the exception (a <see cref="CaptureCancelledException"/> after a cancel); entering Play mode cancels.
+        /// Setup errors are thrown from this call. Returns the session, whose <c>Cancel()</c> stops it.
+        /// </summary>
+        public static CaptureSession RunInBackground(GameObject target, IReadOnlyList<UnityPose> poses, CaptureOptions options,
+            IViewConsumer consumer, Action<CaptureSummary, Exception> done, double sliceSeconds = 0.05)
+        {
+            var progress = new BackgroundProgressReporter();
+            CaptureSession session;
+            try
+            {
+                session = CaptureSession.Begin(target, poses, options, consumer, progress);
+            }
+            catch (Exception)
+            {
+                progress.FinalStatus = Progress.Status.Failed;
+                progress.Close();
+                throw;
+            }
+
+            EditorApplication.CallbackFunction tick = null;
+            Action<PlayModeStateChange> onPlayMode = change =>
+            {
+                if (change == PlayModeStateChange.ExitingEditMode) session.Cancel();
+            };
+            void End(CaptureSummary summary, Exception error)
+            {
+                EditorApplication.update -= tick;
+                EditorApplication.playModeStateChanged -= onPlayMode;
+                session.Dispose();
+                progress.FinalStatus = error == null ? Progress.Status.Succeeded : Progress.Status.Failed;
+                progress.Close();
+                if (summary != null) Debug.Log(summary.ToString());
+                done?.Invoke(summary, error);
+            }
+            tick = () =>
+            {
+                try
+                {
+                    if (!session.Step(sliceSeconds)) End(session.Summary, null);
+                }
+                catch (Exception e)
+                {
+                    End(null, e);
+                }
+            };
+            EditorApplication.update += tick;
+            EditorApplication.playModeStateChanged += onPlayMode;
+            return session;
+        }
+    }
+}

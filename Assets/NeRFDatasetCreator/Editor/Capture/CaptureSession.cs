@@ -1,0 +1,368 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using UnityEditor;
+using UnityEngine;
+using Object = UnityEngine.Object;
+
+namespace NerfDatasetCreator.Editor.Capture
+{
+    /// <summary>
+    /// One capture run: renders each pose's passes with one hidden camera into owned render textures, reads them back
+    /// (several views in flight, waiting on the oldest) and hands each view to an <see cref="IViewConsumer"/> in order.
+    /// Driven by <see cref="Step"/> so that it can run inside one call (CLI, tests) or a slice per editor update
+    /// (<see cref="CaptureRunner"/>). <see cref="Dispose"/> always restores everything, after success, cancel or error.
+    /// </summary>
+    public sealed class CaptureSession : IDisposable
+    {
+        readonly GameObject _target;
+        readonly string _targetName;
+        readonly IReadOnlyList<UnityPose> _poses;
+        readonly CaptureOptions _options;
+        readonly CapturePasses _passes;
+        readonly IViewConsumer _consumer;
+        readonly ICaptureProgress _progress;
+        readonly Stopwatch _clock = new Stopwatch();
+        CaptureStage _stage;
+        CaptureMaterials _materials;
+        RenderTargetSet[] _targets;
+        ViewReadback[] _readbacks;
+        SynchronousReadback _synchronous;
+        CapturePools _pools;
+        bool _reloadLocked;
+        bool _asyncShadersChanged;
+        bool _asyncShadersWereAllowed;
+        bool _cancelRequested;
+        bool _finished;
+        bool _disposed;
+        int _nextView;
+        int _delivered;
+
+        CaptureSession(GameObject target, IReadOnlyList<UnityPose> poses, CaptureOptions options, IViewConsumer consumer,
+            ICaptureProgress progress)
+        {
+            _target = target;
+            _targetName = target == null ? "" : target.name;
+            _poses = poses;
+            _options = options;
+            _passes = options.EffectivePasses;
+            _consumer = consumer;
+            _progress = progress;
+            Meter = new ThroughputMeter(poses.Count);
+        }
+
+        /// <summary>
+        /// Checks everything that can be checked before touching the GPU, then sets up the preview scene, camera,
+        /// render textures and readback ring. Throws <see cref="InvalidParameterException"/> for bad options and
+        /// <see cref="CaptureException"/> when this editor or this target cannot be captured; nothing is left behind.
+        /// </summary>
+        public static CaptureSession Begin(GameObject target, IReadOnlyList<UnityPose> poses, CaptureOptions options,
+            IViewConsumer consumer, ICaptureProgress progress = null)
+        {
+            if (options == null) throw new ArgumentNullException(nameof(options));
+            if (poses == null) throw new ArgumentNullException(nameof(poses));
+            if (consumer == null) throw new ArgumentNullException(nameof(consumer));
+            options.ThrowIfInvalid();
+            if (poses.Count == 0)
+                throw new InvalidParameterException(new[] { new ValidationProblem("capture.poses", "0", "has no views to render.", "Plan at least one view.") });
+            InvalidParameterException.ThrowIfAny(PoseProblem(poses));
+            CaptureEnvironment.ThrowIfCannotRender(options.EffectivePasses);
+            CheckTarget(target, options.Isolation);
+            if (EditorApplication.isPlayingOrWillChangePlaymode)
+                throw new CaptureException("Unity is in (or entering) Play mode. Stop Play mode, then capture.");
+
+            var session = new CaptureSession(target, poses, options, consumer, progress);
+            try
+            {
+                session.SetUp();
+                return session;
+            }
+            catch
+            {
+                session.Dispose();
+                throw;
+            }
+        }
+
+        public int Total => _poses.Count;
+        public int Delivered => _delivered;
+        public bool IsFinished => _finished;
+        public ThroughputMeter Meter { get; }
+
+        /// <summary>True when views were read back with AsyncGPUReadback, false on the ReadPixels fallback.</summary>
+        public bool UsesAsyncReadback { get; private set; }
+
+        /// <summary>The vertical FOV (degrees) the images were rendered with: the template camera's when one was given.</summary>
+        public double VerticalFieldOfViewDegrees { get; private set; }
+
+        /// <summary>Non-mesh renderers (particles, lines, sprites) and terrains left out of the mask, depth and normal passes.</summary>
+        public int UnsupportedRendererCount => _stage == null ? 0 : _stage.UnsupportedRendererCount;
+
+        /// <summary>Asks the run to stop; the next <see cref="Step"/> throws <see cref="CaptureCancelledException"/>.</summary>
+        public void Cancel() => _cancelRequested = true;
+
+        /// <summary>The first pose that is not finite or whose rotation is not a unit quaternion, or null.</summary>
+        static ValidationProblem PoseProblem(IReadOnlyList<UnityPose> poses)
+        {
+            for (var i = 0; i < poses.Count; i++)
+            {
+                var p = poses[i].Position;
+                var q = poses[i].Rotation;
+                var finite = !double.IsNaN(p.X + p.Y + p.Z + q.X + q.Y + q.Z + q.W) &&
+                             !double.IsInfinity(p.X + p.Y + p.Z + q.X + q.Y + q.Z + q.W);
+                if (!finite || Math.Abs(q.Norm - 1) > 1e-6)
+                    return new ValidationProblem("capture.poses[" + i + "]", "position " + p + ", rotation " + q,
+                        finite ? "has a rotation quaternion that is not of unit length." : "is not finite.",
+                        "Recompute the camera plan; poses come from the formation settings.");
+            }
+            return null;
+        }
+
+        static void CheckTarget(GameObject target, CaptureIsolation isolation)
+        {
+            if (isolation == CaptureIsolation.WholeScene) return;
+            if (target == null)
+                throw new CaptureException("No target is set (or it was deleted). Pick the GameObject to capture.");
+            if (EditorUtility.IsPersistent(target))
+                throw new CaptureException("The target '" + target.name + "' is a prefab or model asset, not an object in the scene. " +
+                    "Drag it into the scene and pick that instance.");
+            foreach (var renderer in target.GetComponentsInChildren<Renderer>(true))
+            {
+                if (!renderer.enabled || !ActiveBelow(renderer.transform, target.transform)) continue;
+                if (renderer is SkinnedMeshRenderer skinned && skinned.sharedMesh != null) return;
+                if (renderer is MeshRenderer)
+                {
+                    var filter = renderer.GetComponent<MeshFilter>();
+                    if (filter != null && filter.sharedMesh != null) return;
+                }
+            }
+            throw new CaptureException("The target '" + target.name + "' has no enabled MeshRenderer or SkinnedMeshRenderer with " +
+                "a mesh on itself or its active children, so there is nothing to capture. Pick the object that holds the model's renderers.");
+        }
+
+        /// <summary>Whether <paramref name="t"/> is active, ignoring the target's own and its parents' active states (the copy is activated).</summary>
+        static bool ActiveBelow(Transform t, Transform target)
+        {
+            for (; t != null && t != target; t = t.parent)
+                if (!t.gameObject.activeSelf) return false;
+            return true;
+        }
+
+        void SetUp()
+        {
+            // A domain reload in the middle would orphan the preview scene and the render textures.
+            EditorApplication.LockReloadAssemblies();
+            _reloadLocked = true;
+
+            // With asynchronous shader compilation the editor draws not-yet-compiled variants with a cyan
+            // placeholder: the first views of a capture would record it. Compile synchronously instead.
+            _asyncShadersWereAllowed = ShaderUtil.allowAsyncCompilation;
+            ShaderUtil.allowAsyncCompilation = false;
+            _asyncShadersChanged = true;
+
+            _materials = new CaptureMaterials();
+            _stage = new CaptureStage(_target, _options);
+            VerticalFieldOfViewDegrees = _stage.Camera.fieldOfView;
+
+            UsesAsyncReadback = SystemInfo.supportsAsyncGPUReadback && !_options.ForceSynchronousReadback;
+            var inFlight = UsesAsyncReadback ? _options.ReadbacksInFlight : 1;
+            _targets = new RenderTargetSet[inFlight];
+            _readbacks = new ViewReadback[inFlight];
+            for (var i = 0; i < inFlight; i++)
+            {
+                _targets[i] = new RenderTargetSet(_options, _passes, i);
+                _readbacks[i] = new ViewReadback();
+            }
+            if (!UsesAsyncReadback) _synchronous = new SynchronousReadback();
+            // Enough arrays for the views in flight plus what a consumer's queue and workers typically hold.
+            _pools = new CapturePools(_options, inFlight + 2 * Environment.ProcessorCount + 2);
+            _clock.Start();
+        }
+
+        /// <summary>
+        /// Renders views until about <paramref name="budgetSeconds"/> have passed (at least one view), reports progress
+        /// and returns true while views remain. The last call drains the readbacks and calls the consumer's Finish.
+        /// Throws <see cref="CaptureCancelledException"/> after a cancel and <see cref="CaptureException"/> on failure;
+        /// the caller then disposes the session, which restores everything and aborts the consumer.
+        /// </summary>
+        public bool Step(double budgetSeconds)
+        {
+            if (_disposed) throw new ObjectDisposedException(nameof(CaptureSession));
+            if (_finished) return false;
+            var sliceStart = _clock.Elapsed.TotalSeconds;
+            var previousActive = RenderTexture.active;
+            try
+            {
+                do
+                {
+                    ThrowIfCancelledOrBroken();
+                    if (_nextView < _poses.Count)
+                    {
+                        RenderView(_nextView);
+                        _nextView++;
+                    }
+                    else
+                    {
+                        DrainAll();
+                        _consumer.Finish();
+                        _finished = true;
+                    }
+                    Meter.Update(_delivered, _clock.Elapsed.TotalSeconds);
+                    _progress?.Report(Meter);
+                } while (!_finished && _clock.Elapsed.TotalSeconds - sliceStart < budgetSeconds);
+            }
+            finally
+            {
+                RenderTexture.active = previousActive;
+            }
+            if (_finished) _clock.Stop();
+            return !_finished;
+        }
+
+        void ThrowIfCancelledOrBroken()
+        {
+            if (_cancelRequested || (_progress != null && _progress.CancelRequested))
+                throw new CaptureCancelledException();
+            if (_options.Isolation == CaptureIsolation.TargetOnly && _target == null)
+                throw new CaptureException("The target '" + _targetName + "' was deleted during the capture. The capture stopped; " +
+                    "no dataset was written.");
+            if (!_stage.IsIntact)
+                throw new CaptureException("The capture's preview scene was destroyed from outside (a scene reload or a script). " +
+                    "The capture stopped; no dataset was written.");
+        }
+
+        void RenderView(int index)
+        {
+            var slot = index % _targets.Length;
+            var readback = _readbacks[slot];
+            if (readback.IsPending) Deliver(readback); // the oldest view in flight: its textures are about to be reused
+
+            var pose = _poses[index];
+            var camera = _stage.Camera;
+            pose.ApplyTo(camera.transform);
+            var targets = _targets[slot];
+
+            if (targets.Color != null) Render(camera, targets.Color, null);
+            if (targets.Mask != null) Render(camera, targets.Mask, _materials.Mask);
+            if (targets.Depth != null) Render(camera, targets.Depth, _materials.Depth);
+            if (targets.Normal != null) Render(camera, targets.Normal, _materials.Normal);
+            _stage.UseMaterial(null);
+            camera.targetTexture = null;
+
+            if (UsesAsyncReadback)
+            {
+                readback.Request(index, pose, targets);
+            }
+            else
+            {
+                var view = NewView(index, pose);
+                try
+                {
+                    _synchronous.ReadInto(targets, view, _pools);
+                }
+                catch
+                {
+                    view.Release();
+                    throw;
+                }
+                Hand(view);
+            }
+        }
+
+        void Render(Camera camera, RenderTexture target, Material passMaterial)
+        {
+            _stage.UseMaterial(passMaterial);
+            camera.targetTexture = target;
+            camera.Render();
+        }
+
+        void DrainAll()
+        {
+            // Oldest first: the slot after the last one written holds the oldest pending view.
+            for (var i = 0; i < _readbacks.Length; i++)
+            {
+                var readback = _readbacks[(_nextView + i) % _readbacks.Length];
+                if (readback.IsPending) Deliver(readback);
+            }
+        }
+
+        void Deliver(ViewReadback readback)
+        {
+            var view = NewView(readback.ViewIndex, readback.Pose);
+            try
+            {
+                readback.CompleteInto(view, _pools);
+            }
+            catch
+            {
+                view.Release();
+                throw;
+            }
+            Hand(view);
+        }
+
+        CapturedView NewView(int index, UnityPose pose) => new CapturedView(index, pose,
+            _options.SupersampledWidth, _options.SupersampledHeight, _options.Supersampling,
+            _options.DataWidth, _options.DataHeight, _pools.ReturnCallback);
+
+        void Hand(CapturedView view)
+        {
+            _consumer.Consume(view);
+            _delivered++;
+        }
+
+        /// <summary>What a finished run reports and a dataset's provenance records.</summary>
+        public CaptureSummary Summary => new CaptureSummary(
+            _delivered, _clock.Elapsed.TotalSeconds, Meter.ViewsPerSecond, VerticalFieldOfViewDegrees,
+            CaptureEnvironment.RenderPipelineName, QualitySettings.activeColorSpace.ToString(), UsesAsyncReadback,
+            Application.unityVersion, SystemInfo.graphicsDeviceType.ToString(), UnsupportedRendererCount);
+
+        /// <summary>Releases everything the run created and, unless it finished, aborts the consumer. Never throws.</summary>
+        public void Dispose()
+        {
+            if (_disposed) return;
+            _disposed = true;
+            if (!_finished) Try(_consumer.Abort);
+            var anyPending = false;
+            if (_readbacks != null)
+                foreach (var readback in _readbacks)
+                {
+                    if (readback == null || !readback.IsPending) continue;
+                    anyPending = true;
+                    readback.Forget();
+                }
+            // Let the GPU finish reading the textures before they are destroyed (stalls, but only after a cancel or error).
+            if (anyPending) Try(UnityEngine.Rendering.AsyncGPUReadback.WaitAllRequests);
+            if (_targets != null)
+                foreach (var set in _targets)
+                    if (set != null) Try(set.Dispose);
+            if (_synchronous != null) Try(_synchronous.Dispose);
+            if (_stage != null) Try(_stage.Dispose);
+            if (_materials != null) Try(_materials.Dispose);
+            if (_asyncShadersChanged)
+            {
+                _asyncShadersChanged = false;
+                ShaderUtil.allowAsyncCompilation = _asyncShadersWereAllowed;
+            }
+            if (_reloadLocked)
+            {
+                _reloadLocked = false;
+                EditorApplication.UnlockReloadAssemblies();
+            }
+            _clock.Stop();
+        }
+
+        static void Try(Action action)
+        {
+            try
+            {
+                action();
+            }
+            catch (Exception e)
+            {
+                // Cleanup must go on; the original error (if any) is what the user needs to see.
+                UnityEngine.Debug.LogException(e);
+            }
+        }
+    }
+}

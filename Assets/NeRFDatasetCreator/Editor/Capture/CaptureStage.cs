@@ -1,0 +1,291 @@
+using System;
+using System.Collections.Generic;
+using UnityEditor;
+using UnityEditor.SceneManagement;
+using UnityEngine;
+using UnityEngine.SceneManagement;
+using Object = UnityEngine.Object;
+
+namespace NerfDatasetCreator.Editor.Capture
+{
+    /// <summary>
+    /// The isolated world a capture renders: an editor preview scene holding copies of the target (or of every root
+    /// object), copies of the scene's lights and the hidden capture camera. The user's scenes are only read, never
+    /// written: no object, layer, material or active state of theirs changes, so their dirty flags stay as they were.
+    /// Everything here is HideAndDontSave and goes away with <see cref="Dispose"/>.
+    /// </summary>
+    sealed class CaptureStage : IDisposable
+    {
+        readonly List<SwappableRenderer> _renderers = new List<SwappableRenderer>();
+        readonly List<Behaviour> _hiddenInDataPasses = new List<Behaviour>();
+        readonly List<bool> _hiddenWasEnabled = new List<bool>();
+        Scene _scene;
+        GameObject _root;
+        GameObject _cameraObject;
+        Material _current;
+
+        public Camera Camera { get; private set; }
+
+        /// <summary>Renderers the data passes cannot draw (particles, lines, sprites…, terrains): hidden in mask, depth and normal.</summary>
+        public int UnsupportedRendererCount { get; private set; }
+
+        /// <summary>False once anything the stage owns was destroyed from outside (a scene reload, a script).</summary>
+        public bool IsIntact => _root != null && Camera != null && _scene.IsValid();
+
+        public CaptureStage(GameObject target, CaptureOptions options)
+        {
+            try
+            {
+                _scene = EditorSceneManager.NewPreviewScene();
+                if (!_scene.IsValid()) throw new CaptureException("Unity could not create the preview scene the capture renders in.");
+
+                // Copies are made under an inactive root and their scripts are disabled before it is activated, so
+                // OnEnable/Update of the user's [ExecuteAlways] scripts never run on them. (Awake still does: Unity calls
+                // it on disabled components when their object becomes active.)
+                _root = NewHiddenObject("NeRF Dataset Creator capture");
+                _root.SetActive(false);
+
+                foreach (var source in Sources(target, options.Isolation))
+                {
+                    var copy = Object.Instantiate(source, _root.transform, true);
+                    copy.name = source.name;
+                    if (options.Isolation == CaptureIsolation.TargetOnly) copy.SetActive(true);
+                    Neutralise(copy);
+                }
+                if (options.Isolation == CaptureIsolation.TargetOnly && options.CopySceneLights)
+                    CopySceneLights(target);
+
+                CollectRenderers();
+                _root.SetActive(true);
+
+                _cameraObject = NewHiddenObject("NeRF Dataset Creator camera", typeof(Camera));
+                Camera = _cameraObject.GetComponent<Camera>();
+                ConfigureCamera(Camera, options, _scene);
+            }
+            catch
+            {
+                Dispose();
+                throw;
+            }
+        }
+
+        GameObject NewHiddenObject(string name, params Type[] components)
+        {
+            var go = EditorUtility.CreateGameObjectWithHideFlags(name, HideFlags.HideAndDontSave, components);
+            SceneManager.MoveGameObjectToScene(go, _scene);
+            return go;
+        }
+
+        static IEnumerable<GameObject> Sources(GameObject target, CaptureIsolation isolation)
+        {
+            if (isolation == CaptureIsolation.TargetOnly)
+            {
+                yield return target;
+                yield break;
+            }
+            for (var i = 0; i < SceneManager.sceneCount; i++)
+            {
+                var scene = SceneManager.GetSceneAt(i);
+                if (!scene.isLoaded) continue;
+                foreach (var root in scene.GetRootGameObjects())
+                {
+                    // Editor-internal objects (DontSave) are not part of the user's scene.
+                    if ((root.hideFlags & HideFlags.DontSave) != 0 || !root.activeInHierarchy) continue;
+                    yield return root;
+                }
+            }
+        }
+
+        /// <summary>Copies carry the user's components; only rendering ones may act. Cameras and scripts are switched off.</summary>
+        static void Neutralise(GameObject copy)
+        {
+            foreach (var t in copy.GetComponentsInChildren<Transform>(true)) t.gameObject.hideFlags = HideFlags.HideAndDontSave;
+            foreach (var camera in copy.GetComponentsInChildren<Camera>(true)) camera.enabled = false;
+            foreach (var script in copy.GetComponentsInChildren<MonoBehaviour>(true))
+                if (script != null) script.enabled = false;
+        }
+
+        /// <summary>
+        /// A preview scene renders only what is in it, so the scene's lights are brought along as copies at the same
+        /// world pose. Lights under the target are already copied with it. Lights baked into lightmaps would light
+        /// nothing on a copy (it has no lightmap in this scene), so every copy is realtime. The properties are copied
+        /// one by one (not EditorUtility.CopySerialized) so that nothing ties the copy to the user's light.
+        /// </summary>
+        void CopySceneLights(GameObject target)
+        {
+            foreach (var light in Object.FindObjectsByType<Light>(FindObjectsInactive.Exclude, FindObjectsSortMode.None))
+            {
+                if (light == null || !light.isActiveAndEnabled) continue;
+                if ((light.gameObject.hideFlags & HideFlags.DontSave) != 0) continue;
+                if (EditorSceneManager.IsPreviewSceneObject(light)) continue;
+                if (light.transform.IsChildOf(target.transform)) continue;
+                var go = NewHiddenObject("Light copy: " + light.name, typeof(Light));
+                go.transform.SetParent(_root.transform, false);
+                go.transform.SetPositionAndRotation(light.transform.position, light.transform.rotation);
+                try
+                {
+                    CopyLight(light, go.GetComponent<Light>());
+                }
+                catch (Exception e)
+                {
+                    // Some setters validate against the pipeline (e.g. shadow types); one odd light must not stop a capture.
+                    Object.DestroyImmediate(go);
+                    Debug.LogWarning("NeRF Dataset Creator: the light '" + light.name + "' could not be copied into the capture and is left out: " + e.Message);
+                }
+            }
+        }
+
+        static void CopyLight(Light from, Light to)
+        {
+            to.type = from.type;
+            to.color = from.color;
+            to.colorTemperature = from.colorTemperature;
+            to.useColorTemperature = from.useColorTemperature;
+            to.intensity = from.intensity;
+            to.bounceIntensity = from.bounceIntensity;
+            to.range = from.range;
+            to.spotAngle = from.spotAngle;
+            to.innerSpotAngle = from.innerSpotAngle;
+            to.areaSize = from.areaSize;
+            to.shadows = from.shadows;
+            to.shadowStrength = from.shadowStrength;
+            to.shadowBias = from.shadowBias;
+            to.shadowNormalBias = from.shadowNormalBias;
+            to.shadowNearPlane = from.shadowNearPlane;
+            to.cullingMask = from.cullingMask;
+            to.renderingLayerMask = from.renderingLayerMask;
+            to.cookie = from.cookie;
+            to.cookieSize = from.cookieSize;
+            to.renderMode = from.renderMode;
+            to.lightmapBakeType = LightmapBakeType.Realtime;
+        }
+
+        void CollectRenderers()
+        {
+            foreach (var renderer in _root.GetComponentsInChildren<Renderer>(true))
+            {
+                if (renderer is MeshRenderer || renderer is SkinnedMeshRenderer)
+                    _renderers.Add(new SwappableRenderer(renderer));
+                else
+                {
+                    Hide(renderer);
+                    UnsupportedRendererCount++;
+                }
+            }
+            foreach (var terrain in _root.GetComponentsInChildren<Terrain>(true))
+            {
+                Hide(terrain);
+                UnsupportedRendererCount++;
+            }
+            // The data shaders are unlit: lights would only cost shadow-map renders in those passes.
+            foreach (var light in _root.GetComponentsInChildren<Light>(true)) Hide(light);
+        }
+
+        void Hide(Behaviour behaviour)
+        {
+            _hiddenInDataPasses.Add(behaviour);
+            _hiddenWasEnabled.Add(behaviour.enabled);
+        }
+
+        void Hide(Renderer renderer)
+        {
+            // Renderer is a Component, not a Behaviour: keep its own enabled flag separately.
+            _otherRenderers.Add(renderer);
+            _otherRenderersWereEnabled.Add(renderer.enabled);
+        }
+
+        readonly List<Renderer> _otherRenderers = new List<Renderer>();
+        readonly List<bool> _otherRenderersWereEnabled = new List<bool>();
+
+        /// <summary>Renders every copy with <paramref name="material"/> (a data pass), or with its own materials when null.</summary>
+        public void UseMaterial(Material material)
+        {
+            if (material == _current) return;
+            _current = material;
+            foreach (var swappable in _renderers) swappable.Use(material);
+            for (var i = 0; i < _hiddenInDataPasses.Count; i++)
+                if (_hiddenInDataPasses[i] != null) _hiddenInDataPasses[i].enabled = material == null && _hiddenWasEnabled[i];
+            for (var i = 0; i < _otherRenderers.Count; i++)
+                if (_otherRenderers[i] != null) _otherRenderers[i].enabled = material == null && _otherRenderersWereEnabled[i];
+        }
+
+        static void ConfigureCamera(Camera camera, CaptureOptions options, Scene scene)
+        {
+            camera.enabled = false; // renders only when Render() is called
+            if (options.TemplateCamera != null)
+            {
+                camera.CopyFrom(options.TemplateCamera);
+            }
+            else
+            {
+                camera.fieldOfView = (float)options.VerticalFieldOfViewDegrees;
+                camera.nearClipPlane = (float)options.NearClip;
+                camera.farClipPlane = (float)options.FarClip;
+                camera.cullingMask = ~0;
+            }
+            // Whatever the template says, these are what the dataset needs.
+            camera.enabled = false;
+            camera.usePhysicalProperties = false; // fieldOfView is then exactly the vertical FOV: no gate fit, no lens shift
+            camera.aspect = (float)options.Width / options.Height;
+            camera.cameraType = CameraType.Game;
+            camera.renderingPath = RenderingPath.Forward; // deferred loses alpha and needs MRT formats we do not own
+            camera.clearFlags = CameraClearFlags.SolidColor;
+            camera.backgroundColor = new Color(0f, 0f, 0f, 0f);
+            camera.allowHDR = false;
+            camera.allowMSAA = false; // anti-aliasing is supersampling: MSAA would blend depth and normals
+            camera.useOcclusionCulling = false;
+            camera.depthTextureMode = DepthTextureMode.None;
+            camera.targetTexture = null;
+            camera.scene = scene;
+            camera.transform.SetParent(null, false);
+            camera.transform.localScale = Vector3.one;
+        }
+
+        public void Dispose()
+        {
+            if (Camera != null) Camera.targetTexture = null;
+            // As PreviewRenderUtility does: close the scene (which destroys its objects), then make sure.
+            if (_scene.IsValid()) EditorSceneManager.ClosePreviewScene(_scene);
+            if (_root != null) Object.DestroyImmediate(_root);
+            if (_cameraObject != null) Object.DestroyImmediate(_cameraObject);
+            _renderers.Clear();
+            _hiddenInDataPasses.Clear();
+            _otherRenderers.Clear();
+            Camera = null;
+            _root = null;
+            _cameraObject = null;
+        }
+
+        /// <summary>A copy's renderer with its own materials and, per data pass, an array of the pass material of the same length.</summary>
+        sealed class SwappableRenderer
+        {
+            readonly Renderer _renderer;
+            readonly Material[] _own;
+            readonly Dictionary<Material, Material[]> _byPass = new Dictionary<Material, Material[]>();
+
+            public SwappableRenderer(Renderer renderer)
+            {
+                _renderer = renderer;
+                _own = renderer.sharedMaterials;
+            }
+
+            public void Use(Material material)
+            {
+                if (_renderer == null) return;
+                if (material == null)
+                {
+                    _renderer.sharedMaterials = _own;
+                    return;
+                }
+                if (!_byPass.TryGetValue(material, out var array))
+                {
+                    // One entry per material slot (submesh), so that every submesh is drawn with the pass material.
+                    array = new Material[Math.Max(1, _own.Length)];
+                    for (var i = 0; i < array.Length; i++) array[i] = material;
+                    _byPass.Add(material, array);
+                }
+                _renderer.sharedMaterials = array;
+            }
+        }
+    }
+}

@@ -1,0 +1,41 @@
+using System.Globalization;
+
+namespace NerfDatasetCreator.Editor.Capture
+{
+    /// <summary>Figures of a finished capture, for the log and the dataset's provenance (so runs can be compared).</summary>
+    public sealed class CaptureSummary
+    {
+        public CaptureSummary(int views, double seconds, double viewsPerSecond, double verticalFieldOfViewDegrees,
+            string renderPipeline, string colorSpace, bool asyncReadback, string unityVersion, string graphicsApi,
+            int unsupportedRenderers)
+        {
+            Views = views;
+            Seconds = seconds;
+            ViewsPerSecond = viewsPerSecond;
+            VerticalFieldOfViewDegrees = verticalFieldOfViewDegrees;
+            RenderPipeline = renderPipeline;
+            ColorSpace = colorSpace;
+            AsyncReadback = asyncReadback;
+            UnityVersion = unityVersion;
+            GraphicsApi = graphicsApi;
+            UnsupportedRenderers = unsupportedRenderers;
+        }
+
+        public int Views { get; }
+        public double Seconds { get; }
+        public double ViewsPerSecond { get; }
+        public double VerticalFieldOfViewDegrees { get; }
+        public string RenderPipeline { get; }
+        public string ColorSpace { get; }
+        public bool AsyncReadback { get; }
+        public string UnityVersion { get; }
+        public string GraphicsApi { get; }
+        public int UnsupportedRenderers { get; }
+
+        public override string ToString() => string.Format(CultureInfo.InvariantCulture,
+            "NeRF Dataset Creator: {0} views in {1:0.0} s ({2:0.00} views/s); {3}, {4} colour space, {5}, {6} readback, Unity {7}{8}",
+            Views, Seconds, ViewsPerSecond, RenderPipeline, ColorSpace, GraphicsApi, AsyncReadback ? "async" : "ReadPixels",
+            UnityVersion, UnsupportedRenderers == 0 ? "" : string.Format(CultureInfo.InvariantCulture,
+                "; {0} non-mesh renderers left out of mask/depth/normal", UnsupportedRenderers));
+    }
+}

@@ -1,0 +1,80 @@
+using System;
+using System.Threading;
+
+namespace NerfDatasetCreator.Editor.Capture
+{
+    /// <summary>
+    /// One view's pixels, copied out of the GPU readback into managed arrays (so they outlive the frame and can go to
+    /// a worker thread). All images have rows bottom-up (row 0 is the bottom of the picture), as Unity reads them back.
+    /// The arrays are pooled: call <see cref="Release"/> once done with them, from any thread; touching them after that
+    /// is a bug.
+    /// </summary>
+    public sealed class CapturedView
+    {
+        Action<CapturedView> _release;
+        int _released;
+
+        internal CapturedView(int viewIndex, UnityPose pose, int width, int height, int supersampling,
+            int dataWidth, int dataHeight, Action<CapturedView> release)
+        {
+            ViewIndex = viewIndex;
+            Pose = pose;
+            Width = width;
+            Height = height;
+            Supersampling = supersampling;
+            DataWidth = dataWidth;
+            DataHeight = dataHeight;
+            _release = release;
+        }
+
+        /// <summary>Index into the pose list the capture was given.</summary>
+        public int ViewIndex { get; }
+
+        /// <summary>The pose the camera had (the capturer's input, double precision), for writing its matrix.</summary>
+        public UnityPose Pose { get; }
+
+        /// <summary>Width of <see cref="Color"/> and <see cref="Mask"/>: output width × <see cref="Supersampling"/>.</summary>
+        public int Width { get; }
+
+        /// <summary>Height of <see cref="Color"/> and <see cref="Mask"/>: output height × <see cref="Supersampling"/>.</summary>
+        public int Height { get; }
+
+        public int Supersampling { get; }
+
+        /// <summary>Width of <see cref="Depth"/> and <see cref="Normal"/>: the output width or the supersampled one.</summary>
+        public int DataWidth { get; }
+
+        public int DataHeight { get; }
+
+        /// <summary>
+        /// RGBA, 4 bytes per pixel, sRGB-encoded (what a PNG stores) in Linear and in Gamma projects alike. The alpha
+        /// byte is whatever the material's shader wrote and must be ignored: the coverage is <see cref="Mask"/>.
+        /// Premultiplied by coverage at edges (the background is black). Null when the colour pass is off.
+        /// </summary>
+        public byte[] Color { get; internal set; }
+
+        /// <summary>Coverage, 1 byte per pixel: 255 where the target's geometry covers the sample, 0 elsewhere.</summary>
+        public byte[] Mask { get; internal set; }
+
+        /// <summary>Eye depth (along the camera's forward axis) in Unity units, 1 float per pixel; 0 = no geometry.</summary>
+        public float[] Depth { get; internal set; }
+
+        /// <summary>
+        /// 4 floats per pixel: the unit geometry normal in Unity's world frame (x, y, z) and 1 where geometry covers,
+        /// all 0 elsewhere. <see cref="NormalFrames.ToOutputWorld"/> relabels them into the dataset's world frame.
+        /// </summary>
+        public float[] Normal { get; internal set; }
+
+        /// <summary>Gives the arrays back to the capture's pools. Safe to call more than once and from any thread.</summary>
+        public void Release()
+        {
+            if (Interlocked.Exchange(ref _released, 1) != 0) return;
+            var release = Interlocked.Exchange(ref _release, null);
+            release?.Invoke(this);
+            Color = null;
+            Mask = null;
+            Depth = null;
+            Normal = null;
+        }
+    }
+}

@@ -1,0 +1,76 @@
+using System;
+using System.Collections.Generic;
+using NerfDatasetCreator.Editor.Capture;
+
+namespace NerfDatasetCreator.Editor.Tests.Capture
+{
+    /// <summary>A view's pixels copied out of the pooled arrays, so they can be inspected after the run.</summary>
+    sealed class RecordedView
+    {
+        public int ViewIndex;
+        public UnityPose Pose;
+        public int Width, Height, DataWidth, DataHeight;
+        public byte[] Color, Mask;
+        public float[] Depth, Normal;
+
+        public byte MaskAt(int x, int y) => Mask[y * Width + x];
+        public float DepthAt(int x, int y) => Depth[y * DataWidth + x];
+        public byte ColorAt(int x, int y, int channel) => Color[(y * Width + x) * 4 + channel];
+
+        public Vector3d NormalAt(int x, int y, out float coverage)
+        {
+            var i = (y * DataWidth + x) * 4;
+            coverage = Normal[i + 3];
+            return new Vector3d(Normal[i], Normal[i + 1], Normal[i + 2]);
+        }
+    }
+
+    /// <summary>Keeps copies of every view in memory and records how the run ended.</summary>
+    sealed class RecordingConsumer : IViewConsumer
+    {
+        public readonly List<RecordedView> Views = new List<RecordedView>();
+        public bool Finished;
+        public bool Aborted;
+
+        public void Consume(CapturedView view)
+        {
+            Views.Add(new RecordedView
+            {
+                ViewIndex = view.ViewIndex,
+                Pose = view.Pose,
+                Width = view.Width,
+                Height = view.Height,
+                DataWidth = view.DataWidth,
+                DataHeight = view.DataHeight,
+                Color = (byte[])view.Color?.Clone(),
+                Mask = (byte[])view.Mask?.Clone(),
+                Depth = (float[])view.Depth?.Clone(),
+                Normal = (float[])view.Normal?.Clone(),
+            });
+            view.Release();
+        }
+
+        public void Finish() => Finished = true;
+        public void Abort() => Aborted = true;
+    }
+
+    /// <summary>No display; cancels or acts after a given number of reports.</summary>
+    sealed class ScriptedProgress : ICaptureProgress
+    {
+        public int CancelAfterViews = int.MaxValue;
+        public Action<ThroughputMeter> OnReport;
+        public int Reports;
+        public bool Closed;
+        bool _cancel;
+
+        public void Report(ThroughputMeter meter)
+        {
+            Reports++;
+            OnReport?.Invoke(meter);
+            if (meter.Done >= CancelAfterViews) _cancel = true;
+        }
+
+        public bool CancelRequested => _cancel;
+        public void Close() => Closed = true;
+    }
+}
