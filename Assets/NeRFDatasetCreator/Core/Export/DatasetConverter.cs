@@ -1,0 +1,113 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// <c>nerf-dataset convert &lt;dir&gt; --to nerfstudio|colmap|ngp</c>: turns any Blender-format dataset (nerf_synthetic
+    /// included) into another loader's format without touching the source. Default output locations:
+    /// nerfstudio → <c>&lt;dir&gt;/transforms.json</c>; ngp → <c>&lt;dir&gt;/ngp/transforms.json</c>; colmap →
+    /// <c>&lt;dir&gt;/colmap/</c> with <c>images/</c> (copies, flattened names) and <c>sparse/0/</c>. Nothing is ever
+    /// overwritten: every destination is checked before the first byte is written.
+    /// </summary>
+    public static class DatasetConverter
+    {
+        public const string ColmapFolderName = "colmap";
+
+        public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null)
+        {
+            var warnings = new List<ValidationProblem>();
+            var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
+            warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
+            switch (target)
+            {
+                case ExportTarget.Nerfstudio: return ToNerfstudio(scene, outDir ?? scene.RootDirectory, warnings);
+                case ExportTarget.Ngp: return ToNgp(scene, outDir ?? Path.Combine(scene.RootDirectory, NgpWriter.FolderName), warnings);
+                case ExportTarget.Colmap: return ToColmap(scene, outDir ?? Path.Combine(scene.RootDirectory, ColmapFolderName), warnings);
+                default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
+            }
+        }
+
+        static ConversionResult ToNerfstudio(ExportScene scene, string outDir, List<ValidationProblem> warnings)
+        {
+            outDir = Path.GetFullPath(outDir);
+            var file = Path.Combine(outDir, NerfstudioWriter.FileName);
+            EnsureAbsent(file);
+            warnings.AddRange(NerfstudioWriter.Warnings(scene));
+            var text = ExportJson.Serialise(NerfstudioWriter.Build(scene, outDir));
+            WriteNewText(file, text);
+            return new ConversionResult(outDir, file, new[] { file }, warnings);
+        }
+
+        static ConversionResult ToNgp(ExportScene scene, string outDir, List<ValidationProblem> warnings)
+        {
+            outDir = Path.GetFullPath(outDir);
+            var file = Path.Combine(outDir, NgpWriter.FileName);
+            EnsureAbsent(file);
+            var text = ExportJson.Serialise(NgpWriter.Build(scene, outDir, NgpWriter.DefaultSceneRadius, warnings));
+            WriteNewText(file, text);
+            return new ConversionResult(outDir, file, new[] { file }, warnings);
+        }
+
+        static ConversionResult ToColmap(ExportScene scene, string outDir, List<ValidationProblem> warnings)
+        {
+            outDir = Path.GetFullPath(outDir);
+            var sparse = Path.Combine(outDir, "sparse", "0");
+            var images = Path.Combine(outDir, ColmapTextWriter.ImagesFolder);
+            var names = ColmapTextWriter.ImageNames(scene.Frames);
+            var copies = scene.Frames.Select((f, i) => (from: Path.Combine(scene.RootDirectory, f.ImagePath), to: Path.Combine(images, names[i]))).ToList();
+            var cameras = Path.Combine(sparse, "cameras.txt");
+            var imagesTxt = Path.Combine(sparse, "images.txt");
+            var pointsTxt = Path.Combine(sparse, "points3D.txt");
+            // 3DGS reads sparse/0/points3D.ply before points3D.txt; a copy of the real cloud keeps normals too.
+            var pointsPly = scene.PointCloudPath == null ? null : Path.Combine(sparse, "points3D.ply");
+            var all = new List<string> { cameras, imagesTxt, pointsTxt };
+            if (pointsPly != null) all.Add(pointsPly);
+            all.AddRange(copies.Select(c => c.to));
+            foreach (var path in all) EnsureAbsent(path);
+
+            IReadOnlyList<CloudPoint> points = null;
+            if (scene.PointCloudPath == null)
+            {
+                points = RandomInitCloud.Cube(RandomInitCloud.DefaultCount, SceneNormalisation.GaussianSplattingInitHalfSize, 0);
+                warnings.Add(new ValidationProblem("points3D.txt", points.Count + " random points",
+                    "the dataset has no points3d.ply, and 3DGS's COLMAP loader fails on an empty points3D.txt, so it holds the same uniform [−1.3, 1.3]³ cloud 3DGS would generate for the Blender layout.",
+                    "Export the target's surface point cloud from Unity for a better start."));
+            }
+
+            Directory.CreateDirectory(images);
+            foreach (var (from, to) in copies) File.Copy(from, to, false);
+            WriteNewText(cameras, ColmapTextWriter.CamerasText(scene.Intrinsics));
+            WriteNewText(imagesTxt, ColmapTextWriter.ImagesText(scene.Frames, names));
+            WriteNewText(pointsTxt, ColmapTextWriter.Points3DText(points));
+            if (pointsPly != null) File.Copy(Path.Combine(scene.RootDirectory, scene.PointCloudPath), pointsPly, false);
+            if (scene.Frames.Any(f => f.Split != "train"))
+                warnings.Add(new ValidationProblem("images.txt", scene.Frames.Count + " images",
+                    "COLMAP has no splits: train, val and test views are all listed; 3DGS's --eval holds out every 8th image by name instead.",
+                    "For the nerf_synthetic protocol, train 3DGS on the Blender layout itself (train.py -s <dir> --eval)."));
+            return new ConversionResult(outDir, outDir, all, warnings);
+        }
+
+        static void EnsureAbsent(string path)
+        {
+            if (File.Exists(path) || Directory.Exists(path))
+                throw new InvalidParameterException(new[]
+                {
+                    new ValidationProblem("outDir", path, "already exists; convert never overwrites files.", "Move or delete it, or pass another output folder."),
+                });
+        }
+
+        static void WriteNewText(string path, string text)
+        {
+            Directory.CreateDirectory(Path.GetDirectoryName(path));
+            using (var file = new FileStream(path, FileMode.CreateNew, FileAccess.Write))
+            {
+                var bytes = new UTF8Encoding(false).GetBytes(text);
+                file.Write(bytes, 0, bytes.Length);
+            }
+        }
+    }
+}
