@@ -109,6 +109,7 @@ namespace NerfDatasetCreator
         static string R(double v)
         {
             if (double.IsNaN(v) || double.IsInfinity(v)) throw new ArgumentException("COLMAP files cannot hold " + v + ".");
+            if (v == 0) v = 0; // "-0" is valid but reads like a sign error
             return v.ToString("R", CultureInfo.InvariantCulture);
         }
 
