@@ -17,16 +17,30 @@ namespace NerfDatasetCreator
     {
         public const string ColmapFolderName = "colmap";
 
+        /// <summary>Loads the Blender-format dataset in <paramref name="datasetDir"/> and exports it (see <see cref="Export"/>).</summary>
         public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null)
         {
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
+            return Export(scene, target, outDir, null, NgpWriter.DefaultSceneRadius, warnings);
+        }
+
+        /// <summary>
+        /// Writes <paramref name="scene"/> in <paramref name="target"/>'s format: the path a fresh capture takes too.
+        /// <paramref name="points"/> (output frame) fills COLMAP's points3D.txt; <paramref name="sceneRadius"/>
+        /// (output units, e.g. s·b of the target) sets instant-ngp's aabb_scale.
+        /// </summary>
+        public static ConversionResult Export(ExportScene scene, ExportTarget target, string outDir = null,
+            IReadOnlyList<CloudPoint> points = null, double sceneRadius = NgpWriter.DefaultSceneRadius,
+            List<ValidationProblem> warnings = null)
+        {
+            warnings = warnings ?? new List<ValidationProblem>();
             switch (target)
             {
                 case ExportTarget.Nerfstudio: return ToNerfstudio(scene, outDir ?? scene.RootDirectory, warnings);
-                case ExportTarget.Ngp: return ToNgp(scene, outDir ?? Path.Combine(scene.RootDirectory, NgpWriter.FolderName), warnings);
-                case ExportTarget.Colmap: return ToColmap(scene, outDir ?? Path.Combine(scene.RootDirectory, ColmapFolderName), warnings);
+                case ExportTarget.Ngp: return ToNgp(scene, outDir ?? Path.Combine(scene.RootDirectory, NgpWriter.FolderName), sceneRadius, warnings);
+                case ExportTarget.Colmap: return ToColmap(scene, outDir ?? Path.Combine(scene.RootDirectory, ColmapFolderName), points, warnings);
                 default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
             }
         }
@@ -42,17 +56,17 @@ namespace NerfDatasetCreator
             return new ConversionResult(outDir, file, new[] { file }, warnings);
         }
 
-        static ConversionResult ToNgp(ExportScene scene, string outDir, List<ValidationProblem> warnings)
+        static ConversionResult ToNgp(ExportScene scene, string outDir, double sceneRadius, List<ValidationProblem> warnings)
         {
             outDir = Path.GetFullPath(outDir);
             var file = Path.Combine(outDir, NgpWriter.FileName);
             EnsureAbsent(file);
-            var text = ExportJson.Serialise(NgpWriter.Build(scene, outDir, NgpWriter.DefaultSceneRadius, warnings));
+            var text = ExportJson.Serialise(NgpWriter.Build(scene, outDir, sceneRadius, warnings));
             WriteNewText(file, text);
             return new ConversionResult(outDir, file, new[] { file }, warnings);
         }
 
-        static ConversionResult ToColmap(ExportScene scene, string outDir, List<ValidationProblem> warnings)
+        static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings)
         {
             outDir = Path.GetFullPath(outDir);
             var sparse = Path.Combine(outDir, "sparse", "0");
@@ -69,12 +83,13 @@ namespace NerfDatasetCreator
             all.AddRange(copies.Select(c => c.to));
             foreach (var path in all) EnsureAbsent(path);
 
-            IReadOnlyList<CloudPoint> points = null;
-            if (scene.PointCloudPath == null)
+            if (points == null && scene.PointCloudPath != null)
+                points = PlyReader.Read(Path.Combine(scene.RootDirectory, scene.PointCloudPath));
+            if (points == null)
             {
                 points = RandomInitCloud.Cube(RandomInitCloud.DefaultCount, SceneNormalisation.GaussianSplattingInitHalfSize, 0);
                 warnings.Add(new ValidationProblem("points3D.txt", points.Count + " random points",
-                    "the dataset has no points3d.ply, and 3DGS's COLMAP loader fails on an empty points3D.txt, so it holds the same uniform [−1.3, 1.3]³ cloud 3DGS would generate for the Blender layout.",
+                    "there is no point cloud, and 3DGS's COLMAP loader fails on an empty points3D.txt, so it holds the same uniform [−1.3, 1.3]³ cloud 3DGS would generate for the Blender layout.",
                     "Export the target's surface point cloud from Unity for a better start."));
             }
 

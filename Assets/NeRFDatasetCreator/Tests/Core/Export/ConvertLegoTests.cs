@@ -245,6 +245,31 @@ namespace NerfDatasetCreator.Tests
             Assert.That(warnings.Select(w => w.Field), Does.Contain("depth"));
         }
 
+        [Test]
+        public void WithPoints3dPly_NerfstudioReferencesIt_AndColmapListsItsPoints()
+        {
+            var mesh = new SurfaceMesh(new[] { new Vector3d(-1, -1, 0), new Vector3d(1, -1, 0), new Vector3d(0, 1, 0.5) }, new[] { 0, 1, 2 });
+            var cloud = SurfaceSampler.Sample(new[] { mesh }, 300, 4, new Vector3d(0.2, 0.4, 0.6));
+            PlyWriter.Write(Path.Combine(_lego.Root, "points3d.ply"), cloud);
+
+            var ns = JObject.Parse(File.ReadAllText(DatasetConverter.Convert(_lego.Root, ExportTarget.Nerfstudio).MainFile));
+            Assert.That((string)ns["ply_file_path"], Is.EqualTo("points3d.ply"));
+
+            var colmap = DatasetConverter.Convert(_lego.Root, ExportTarget.Colmap);
+            var sparse = Path.Combine(colmap.OutputDirectory, "sparse", "0");
+            Assert.That(File.ReadAllBytes(Path.Combine(sparse, "points3D.ply")), Is.EqualTo(File.ReadAllBytes(Path.Combine(_lego.Root, "points3d.ply"))));
+            var points = DataLines(Path.Combine(sparse, "points3D.txt"));
+            Assert.That(points.Count, Is.EqualTo(300));
+            for (var i = 0; i < points.Count; i++)
+            {
+                var e = points[i].Split(' ');
+                Assert.That(D(e[1]), Is.EqualTo(cloud[i].Position.X).Within(1e-6), "float32 in the PLY");
+                Assert.That(D(e[3]), Is.EqualTo(cloud[i].Position.Z).Within(1e-6));
+                Assert.That(e.Skip(4).Take(3), Is.EqualTo(new[] { "51", "102", "153" }));
+            }
+            Assert.That(colmap.Warnings.Select(w => w.Field), Does.Not.Contain("points3D.txt"));
+        }
+
         static List<string> DataLines(string path) =>
             File.ReadAllLines(path).Where(l => l.Length > 0 && !l.StartsWith("#")).ToList();
 

@@ -54,5 +54,26 @@ namespace NerfDatasetCreator.Tests
 
             Assert.That(problems.Select(p => p.Field), Is.EqualTo(new[] { "normalisation.far", "normalisation.targetRadius" }));
         }
+    
+
+        [Test]
+        public void ForCapture_MeasuresFromTheTarget_AndFlagsAnOffOriginTarget()
+        {
+            var target = new Vector3d(10, 1, -4);
+            var poses = CameraRig.Place(new RandomFormation(1), 12, target, 4.0);
+
+            // Unnormalised: distances are fine (4 ± 1) but the target sits ~10.8 from the origin.
+            var raw = LoaderRangeCheck.ForCapture(poses, SceneNormalisation.Identity, target, 1.0);
+            Assert.That(raw.Select(p => p.Field), Is.EqualTo(new[] { "normalisation.targetRadius" }));
+
+            var recentred = SceneNormalisation.ForTarget(NormalisationMode.Recentre, target, 1.0, 4.0);
+            Assert.That(LoaderRangeCheck.ForCapture(poses, recentred, target, 1.0), Is.Empty);
+
+            // The same rig 2.5 m out needs the preset: before it, near warnings; after it, none.
+            var close = CameraRig.Place(new RandomFormation(1), 12, target, 2.5);
+            Assert.That(LoaderRangeCheck.ForCapture(close, recentred, target, 0.7).Select(p => p.Field), Is.EqualTo(new[] { "normalisation.near" }));
+            var preset = SceneNormalisation.ForTarget(NormalisationMode.NerfSyntheticScale, target, 0.7, 2.5);
+            Assert.That(LoaderRangeCheck.ForCapture(close, preset, target, 0.7), Is.Empty);
+        }
     }
 }

@@ -90,6 +90,28 @@ namespace NerfDatasetCreator.Tests
             Assert.That((int)CloudPoint.ToByte(channel), Is.EqualTo(expected));
         }
 
+        [Test]
+        public void Reader_RoundTripsTheWriter_AndRefusesOtherLayouts()
+        {
+            var path = Path.Combine(Path.GetTempPath(), "nerf-ply-" + Guid.NewGuid().ToString("N") + ".ply");
+            try
+            {
+                PlyWriter.Write(path, Points);
+                var back = PlyReader.Read(path);
+                Assert.That(back.Count, Is.EqualTo(2));
+                Assert.That(back[1].Position.Z, Is.EqualTo((double)(float)1.3));
+                Assert.That(new[] { back[0].Red, back[0].Green, back[0].Blue }, Is.EqualTo(new byte[] { 255, 128, 0 }));
+
+                File.WriteAllText(path, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n1\n");
+                var e = Assert.Throws<InvalidParameterException>(() => PlyReader.Read(path));
+                Assert.That(e.Problems[0].Field, Is.EqualTo("points3d.ply"));
+            }
+            finally
+            {
+                File.Delete(path);
+            }
+        }
+
         static float LittleEndianSingle(byte[] b, int offset)
         {
             var bits = b[offset] | (b[offset + 1] << 8) | (b[offset + 2] << 16) | (b[offset + 3] << 24);
