@@ -92,9 +92,12 @@ namespace NerfDatasetCreator
         /// </summary>
         public static void WorldToCamera(Matrix4x4d cameraToWorldOpenGl, out Quaterniond rotation, out Vector3d translation)
         {
-            var x = cameraToWorldOpenGl.Column(0);
-            var y = -cameraToWorldOpenGl.Column(1);
-            var z = -cameraToWorldOpenGl.Column(2);
+            // Re-orthonormalise, keeping the viewing axis exact: float32 sources such as nerf_synthetic are
+            // orthonormal only to ~1e-7, and a quaternion of a non-rotation would tilt the view by as much.
+            var z = (-cameraToWorldOpenGl.Column(2)).Normalized();
+            var right = cameraToWorldOpenGl.Column(0);
+            var x = (right - Vector3d.Dot(right, z) * z).Normalized();
+            var y = Vector3d.Cross(z, x); // OpenCV is right-handed: x × y = z
             var centre = cameraToWorldOpenGl.Translation;
             // Rows of R are the OpenCV camera axes in world coordinates; FromBasis takes R's columns.
             var c0 = new Vector3d(x.X, y.X, z.X);

@@ -78,7 +78,11 @@ namespace NerfDatasetCreator
             var pointsTxt = Path.Combine(sparse, "points3D.txt");
             // 3DGS reads sparse/0/points3D.ply before points3D.txt; a copy of the real cloud keeps normals too.
             var pointsPly = scene.PointCloudPath == null ? null : Path.Combine(sparse, "points3D.ply");
+            // 3DGS (upstream with llffhold 0, and forks that prefer it) takes its --eval test views from sparse/0/test.txt.
+            var testNames = scene.Frames.Select((f, i) => f.Split == "test" ? names[i] : null).Where(n => n != null).ToList();
+            var testTxt = testNames.Count > 0 ? Path.Combine(sparse, "test.txt") : null;
             var all = new List<string> { cameras, imagesTxt, pointsTxt };
+            if (testTxt != null) all.Add(testTxt);
             if (pointsPly != null) all.Add(pointsPly);
             all.AddRange(copies.Select(c => c.to));
             foreach (var path in all) EnsureAbsent(path);
@@ -98,10 +102,11 @@ namespace NerfDatasetCreator
             WriteNewText(cameras, ColmapTextWriter.CamerasText(scene.Intrinsics));
             WriteNewText(imagesTxt, ColmapTextWriter.ImagesText(scene.Frames, names));
             WriteNewText(pointsTxt, ColmapTextWriter.Points3DText(points));
+            if (testTxt != null) WriteNewText(testTxt, string.Join("\n", testNames) + "\n");
             if (pointsPly != null) File.Copy(Path.Combine(scene.RootDirectory, scene.PointCloudPath), pointsPly, false);
             if (scene.Frames.Any(f => f.Split != "train"))
                 warnings.Add(new ValidationProblem("images.txt", scene.Frames.Count + " images",
-                    "COLMAP has no splits: train, val and test views are all listed; 3DGS's --eval holds out every 8th image by name instead.",
+                    "COLMAP has no splits: train, val and test views are all listed; upstream 3DGS's --eval holds out every 8th image by name (sparse/0/test.txt lists the real test views for loaders that read it).",
                     "For the nerf_synthetic protocol, train 3DGS on the Blender layout itself (train.py -s <dir> --eval)."));
             return new ConversionResult(outDir, outDir, all, warnings);
         }

@@ -10,11 +10,17 @@ namespace NerfDatasetCreator.Tests
 
         public static double[] ViewDirection(double[][] c2w) => new[] { -c2w[0][2], -c2w[1][2], -c2w[2][2] };
 
-        public static void Close(double[] actual, double[] expected, double tolerance, string what)
+        /// <summary>Asserts closeness and returns the largest component difference (printed as a figure).</summary>
+        public static double Close(double[] actual, double[] expected, double tolerance, string what)
         {
             Assert.That(actual.Length, Is.EqualTo(3), what);
+            double worst = 0;
             for (var i = 0; i < 3; i++)
+            {
                 Assert.That(actual[i], Is.EqualTo(expected[i]).Within(tolerance), what + "[" + i + "]");
+                worst = Math.Max(worst, Math.Abs(actual[i] - expected[i]));
+            }
+            return worst;
         }
 
         public static double[] Normalised(double[] v)
