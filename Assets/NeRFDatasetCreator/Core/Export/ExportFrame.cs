@@ -15,6 +15,11 @@ namespace NerfDatasetCreator
         {
             if (string.IsNullOrEmpty(split)) throw new ArgumentException("A frame needs a split (train, val or test).", nameof(split));
             if (string.IsNullOrEmpty(imagePath)) throw new ArgumentException("A frame needs an image path.", nameof(imagePath));
+            // nerfstudio and COLMAP use the path as given, so unlike the Blender files it must name the file exactly.
+            if (!System.IO.Path.HasExtension(imagePath))
+                throw new InvalidParameterException(new[] { new ValidationProblem("file_path", imagePath, "has no extension; exports need the exact file name.", "Pass e.g. train/r_0.png.") });
+            if (!cameraToWorld.IsFinite)
+                throw new InvalidParameterException(new[] { new ValidationProblem("transform_matrix", cameraToWorld.ToString(), "contains a non-finite number.", "Fix the camera pose.") });
             Split = split;
             ImagePath = ExportPaths.Normalise(imagePath);
             CameraToWorld = cameraToWorld;

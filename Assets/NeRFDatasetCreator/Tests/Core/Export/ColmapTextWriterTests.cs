@@ -62,6 +62,15 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void ExportFrame_NeedsTheImageExtension()
+        {
+            var e = Assert.Throws<InvalidParameterException>(() => new ExportFrame("train", "./train/r_0", Matrix4x4d.Identity));
+
+            Assert.That(e.Problems[0].Field, Is.EqualTo("file_path"));
+            Assert.That(new ExportFrame("train", ".\\train\\r_0.png", Matrix4x4d.Identity).ImagePath, Is.EqualTo("train/r_0.png"));
+        }
+
+        [Test]
         public void Points3DText_HeaderOnlyWhenEmpty_OtherwiseOneLinePerPoint()
         {
             Assert.That(ColmapTextWriter.Points3DText(null).Split('\n').Where(l => l.Length > 0).All(l => l.StartsWith("#")), Is.True);

@@ -53,6 +53,12 @@ namespace NerfDatasetCreator.Tests
                     Assert.That(after[1], Is.EqualTo(before[1]).Within(1e-8), "row");
                     // Depth is a length: it scales by s and nothing else (the documented depth rule).
                     Assert.That(after[2], Is.EqualTo(n.ApplyToDepth(before[2])).Within(1e-9), "z-depth");
+                    // And NeRF itself agrees: its ray through the pixel where the raw camera saw the point passes
+                    // through the normalised point, at the normalised depth.
+                    var q = n.ApplyToUnityPoint(point);
+                    NerfRays.Ray(normalised.ToRows(), intrinsics.CameraAngleX, Width, Height, before[0], before[1], out var o, out var dir);
+                    Assert.That(NerfRays.DistanceToRay(o, dir, new[] { q.X, q.Y, q.Z }, out var t), Is.LessThan(1e-9 * Math.Max(1, n.Scale)));
+                    Assert.That(t, Is.EqualTo(after[2]).Within(1e-9));
                     compared++;
                 }
             }
