@@ -44,10 +44,11 @@ namespace NerfDatasetCreator
                     new ValidationProblem("pointCloud.meshes", meshes.Count + " meshes", "have no triangle with a non-zero area to sample.", "Pick a target with visible mesh surfaces, or turn the point cloud off."),
                 });
 
+            var areas = cumulative.ToArray(); // arrays: this loop runs up to millions of times in the Editor
             var random = new SeededRandom(seed);
             for (var i = 0; i < count; i++)
             {
-                var pick = Pick(cumulative, random.NextDouble() * total);
+                var pick = Pick(areas, random.NextDouble() * total);
                 var (m, t) = owners[pick];
                 var mesh = meshes[m];
                 var i0 = mesh.Triangles[3 * t];
@@ -74,9 +75,9 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>The first index whose cumulative area exceeds <paramref name="u"/> (binary search).</summary>
-        static int Pick(List<double> cumulative, double u)
+        static int Pick(double[] cumulative, double u)
         {
-            int lo = 0, hi = cumulative.Count - 1;
+            int lo = 0, hi = cumulative.Length - 1;
             while (lo < hi)
             {
                 var mid = (lo + hi) / 2;
