@@ -29,13 +29,13 @@ namespace NerfDatasetCreator
             var tooNear = distances.Where(d => d - b < SceneNormalisation.NerfNear).ToList();
             if (tooNear.Count > 0)
                 problems.Add(new ValidationProblem(Field + ".near", F(tooNear.Min() - b),
-                    $"{tooNear.Count} of {distances.Count} cameras have target surface closer than NeRF's fixed near plane {F(SceneNormalisation.NerfNear)} (closest: {F(tooNear.Min() - b)} output units); bmild/nerf and nerf-pytorch will not see it.",
+                    $"{tooNear.Count} of {distances.Count} cameras are closer to the target's surface than NeRF's fixed near distance {F(SceneNormalisation.NerfNear)} (closest: {F(tooNear.Min() - b)} output units); bmild/nerf and nerf-pytorch will not see that part.",
                     suggestion));
 
             var tooFar = distances.Where(d => d + b > SceneNormalisation.NerfFar).ToList();
             if (tooFar.Count > 0)
                 problems.Add(new ValidationProblem(Field + ".far", F(tooFar.Max() + b),
-                    $"{tooFar.Count} of {distances.Count} cameras have target surface beyond NeRF's fixed far plane {F(SceneNormalisation.NerfFar)} (farthest: {F(tooFar.Max() + b)} output units); bmild/nerf and nerf-pytorch will cut it off.",
+                    $"{tooFar.Count} of {distances.Count} cameras see target surface beyond NeRF's fixed far distance {F(SceneNormalisation.NerfFar)} (farthest: {F(tooFar.Max() + b)} output units); bmild/nerf and nerf-pytorch will cut it off.",
                     suggestion));
 
             var reach = centre.Length + b;
