@@ -1,0 +1,153 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using Newtonsoft.Json;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// A deliberately small reader of a Blender-format dataset (nerf_synthetic or this plugin's output) for the
+    /// converters: <c>transforms_{train,val,test}.json</c> (train required), <c>file_path</c> resolved like the
+    /// loaders do (<c>+ ".png"</c> when extensionless), W×H from each PNG's IHDR, <c>camera_angle_x</c> → a square-pixel
+    /// pinhole, optional <c>cx</c>/<c>cy</c>. Picks up this plugin's extras when present for EVERY frame:
+    /// <c>&lt;image&gt;_depth.png</c> (16-bit grey), <c>&lt;image&gt;_mask.png</c> (8-bit grey), <c>points3d.ply</c>,
+    /// <c>scene_normalisation</c>. (May later merge with the dataset module's transforms reader.)
+    /// </summary>
+    public static class BlenderDatasetLoader
+    {
+        public static readonly string[] Splits = { "train", "val", "test" };
+        public const string PointCloudFileName = "points3d.ply";
+
+        public static ExportScene Load(string datasetDirectory, ICollection<ValidationProblem> warnings = null)
+        {
+            warnings = warnings ?? new List<ValidationProblem>();
+            var problems = new List<ValidationProblem>();
+            if (string.IsNullOrEmpty(datasetDirectory) || !Directory.Exists(datasetDirectory))
+                Throw(new ValidationProblem("datasetDir", datasetDirectory ?? "", "is not an existing folder.", "Pass the folder that contains transforms_train.json."));
+            var root = Path.GetFullPath(datasetDirectory);
+            if (!File.Exists(Path.Combine(root, "transforms_train.json")))
+                Throw(new ValidationProblem("datasetDir", root, "has no transforms_train.json, so it is not a Blender-format (nerf_synthetic) dataset.", "Pass the folder that contains transforms_{train,val,test}.json."));
+
+            var frames = new List<ExportFrame>();
+            double? angleX = null;
+            double? cx = null, cy = null;
+            SceneNormalisation normalisation = null;
+            PngHeader size = null;
+            string sizeSource = null;
+            foreach (var split in Splits)
+            {
+                var jsonPath = Path.Combine(root, "transforms_" + split + ".json");
+                if (!File.Exists(jsonPath))
+                {
+                    warnings.Add(new ValidationProblem("transforms_" + split + ".json", jsonPath, "is missing; the export has no " + split + " frames.", "bmild/nerf and nerf-pytorch need all three split files."));
+                    continue;
+                }
+                JObject json;
+                try { json = JObject.Parse(File.ReadAllText(jsonPath)); }
+                catch (JsonException e) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, "is not valid JSON: " + e.Message, "Fix or regenerate the file.")); return null; }
+
+                var angle = json["camera_angle_x"];
+                if (angle == null || (angle.Type != JTokenType.Float && angle.Type != JTokenType.Integer) || !((double)angle > 0 && (double)angle < Math.PI))
+                    problems.Add(new ValidationProblem(split + ".camera_angle_x", angle?.ToString() ?? "missing", "must be the horizontal field of view in radians, in (0, π).", "Write camera_angle_x, e.g. 0.6911112070083618 for nerf_synthetic."));
+                else if (angleX == null) angleX = (double)angle;
+                else if (Math.Abs(angleX.Value - (double)angle) > 1e-9)
+                    warnings.Add(new ValidationProblem(split + ".camera_angle_x", ((double)angle).ToString("R", CultureInfo.InvariantCulture), "differs from train's " + angleX.Value.ToString("R", CultureInfo.InvariantCulture) + "; the export uses train's (NeRF itself uses the test file's).", "Write the same field of view in every split."));
+                if (cx == null && json["cx"] != null && json["cy"] != null) { cx = (double)json["cx"]; cy = (double)json["cy"]; }
+                if (normalisation == null && json["scene_normalisation"] != null) normalisation = SceneNormalisation.FromJson(json["scene_normalisation"]);
+
+                if (!(json["frames"] is JArray list) || list.Count == 0)
+                {
+                    problems.Add(new ValidationProblem(split + ".frames", "missing or empty", "must list at least one frame.", "Regenerate the split file."));
+                    continue;
+                }
+                for (var i = 0; i < list.Count; i++)
+                {
+                    var field = split + ".frames[" + i + "]";
+                    var frame = list[i] as JObject;
+                    var filePath = frame?["file_path"]?.Type == JTokenType.String ? (string)frame["file_path"] : null;
+                    if (filePath == null) { problems.Add(new ValidationProblem(field + ".file_path", "missing", "must be the image path.", "Write file_path, e.g. ./train/r_0.")); continue; }
+                    var image = ResolveImage(root, filePath);
+                    if (image == null) { problems.Add(new ValidationProblem(field + ".file_path", filePath, "names no image (looked for the path and the path + \".png\").", "Copy the images next to the split files.")); continue; }
+                    if (!TryMatrix(frame["transform_matrix"], out var c2w, out var reason)) { problems.Add(new ValidationProblem(field + ".transform_matrix", frame["transform_matrix"]?.ToString(Formatting.None) ?? "missing", reason, "Write a 4×4 rigid camera-to-world matrix.")); continue; }
+
+                    var header = PngHeader.Read(Path.Combine(root, image));
+                    if (size == null) { size = header; sizeSource = image; }
+                    else if (header.Width != size.Width || header.Height != size.Height)
+                        problems.Add(new ValidationProblem(field + ".file_path", image, $"is {header.Width}×{header.Height} but {sizeSource} is {size.Width}×{size.Height}.", "Every loader needs one image size for the whole dataset."));
+                    frames.Add(new ExportFrame(split, image, c2w, Extra(root, image, "_depth.png", 16, size), Extra(root, image, "_mask.png", 8, size)));
+                }
+            }
+            InvalidParameterException.ThrowIfAny(problems.ToArray());
+            if (angleX == null || size == null) Throw(new ValidationProblem("datasetDir", root, "has no usable frame.", "Regenerate the dataset."));
+
+            ReportPartial(frames, f => f.DepthPath, "depth", warnings);
+            ReportPartial(frames, f => f.MaskPath, "mask", warnings);
+            var focal = 0.5 * size.Width / Math.Tan(0.5 * angleX.Value);
+            var vfov = 2 * Math.Atan(0.5 * size.Height / focal) * 180 / Math.PI;
+            var shiftX = cx == null ? 0 : (size.Width / 2.0 - cx.Value) / size.Width;
+            var shiftY = cy == null ? 0 : (cy.Value - size.Height / 2.0) / size.Height;
+            var intrinsics = CameraIntrinsics.FromVerticalFov(vfov, size.Width, size.Height, shiftX, shiftY);
+            var ply = File.Exists(Path.Combine(root, PointCloudFileName)) ? PointCloudFileName : null;
+            return new ExportScene(root, intrinsics, frames, ply, normalisation);
+        }
+
+        /// <summary>The root-relative image path with extension, or null when neither the path nor path + ".png" exists.</summary>
+        static string ResolveImage(string root, string filePath)
+        {
+            var relative = ExportPaths.Normalise(filePath);
+            if (Path.HasExtension(relative) && File.Exists(Path.Combine(root, relative))) return relative;
+            return File.Exists(Path.Combine(root, relative + ".png")) ? relative + ".png" : null;
+        }
+
+        /// <summary>A companion image (depth, mask) of the plugin's layout if it exists with the expected format.</summary>
+        static string Extra(string root, string image, string suffix, int bitDepth, PngHeader size)
+        {
+            var stem = image.Substring(0, image.Length - Path.GetExtension(image).Length);
+            var candidate = stem + suffix;
+            if (!File.Exists(Path.Combine(root, candidate))) return null;
+            var h = PngHeader.Read(Path.Combine(root, candidate));
+            return h.ColorType == 0 && h.BitDepth == bitDepth && h.Width == size.Width && h.Height == size.Height ? candidate : null;
+        }
+
+        static void ReportPartial(List<ExportFrame> frames, Func<ExportFrame, string> path, string what, ICollection<ValidationProblem> warnings)
+        {
+            var with = frames.Count(f => path(f) != null);
+            if (with > 0 && with < frames.Count)
+                warnings.Add(new ValidationProblem(what, with + " of " + frames.Count + " frames",
+                    $"only some frames have a usable {what} image; loaders need all or none, so {what} is not exported.",
+                    $"Re-capture with {what} for every split."));
+        }
+
+        static bool TryMatrix(JToken token, out Matrix4x4d matrix, out string reason)
+        {
+            matrix = Matrix4x4d.Identity;
+            reason = "must be a 4×4 array of numbers.";
+            if (!(token is JArray rows) || rows.Count != 4) return false;
+            var values = new double[16];
+            for (var r = 0; r < 4; r++)
+            {
+                if (!(rows[r] is JArray row) || row.Count != 4) return false;
+                for (var c = 0; c < 4; c++)
+                {
+                    if (row[c].Type != JTokenType.Float && row[c].Type != JTokenType.Integer) return false;
+                    values[r * 4 + c] = (double)row[c];
+                }
+            }
+            matrix = Matrix4x4d.FromRowMajor(values);
+            if (!matrix.IsFinite) { reason = "contains a non-finite number."; return false; }
+            // nerf_synthetic stores float32 rotations: orthonormal to ~1e-7, so the tolerance is loose but still
+            // rejects scaled or mirrored matrices, which no converter could turn into a camera pose.
+            if (Math.Abs(matrix.Determinant3x3 - 1) > 1e-4 || matrix[3, 0] != 0 || matrix[3, 1] != 0 || matrix[3, 2] != 0 || matrix[3, 3] != 1)
+            {
+                reason = "is not a rigid camera-to-world matrix (rotation determinant " + matrix.Determinant3x3.ToString("R", CultureInfo.InvariantCulture) + ", last row must be 0 0 0 1).";
+                return false;
+            }
+            return true;
+        }
+
+        static void Throw(ValidationProblem problem) => throw new InvalidParameterException(new[] { problem });
+    }
+}

@@ -1,0 +1,121 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Linq;
+using System.Text;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// COLMAP's text model (<c>sparse/0/cameras.txt</c>, <c>images.txt</c>, <c>points3D.txt</c>) as COLMAP writes it and
+    /// as 3D Gaussian Splatting's COLMAP reader parses it. One shared PINHOLE camera (fx fy cx cy, pixel coordinates
+    /// with the top-left image corner at 0 — the same convention as <see cref="CameraIntrinsics"/>). Each image line
+    /// holds the world-to-camera rotation as a Hamilton quaternion (QW QX QY QZ) and translation in COLMAP's camera
+    /// axes (x right, y down, looking along +z): the OpenGL c2w with its y and z axes negated, inverted. The second
+    /// line of each image (2D observations) is empty. Image names are single tokens: 3DGS splits lines on
+    /// whitespace and opens <c>&lt;source&gt;/images/&lt;basename of NAME&gt;</c>, so split folders are flattened into
+    /// unique names (<see cref="ImageName"/>).
+    /// </summary>
+    public static class ColmapTextWriter
+    {
+        public const string SparseFolder = "sparse/0";
+        public const string ImagesFolder = "images";
+
+        /// <summary><c>train/r_0.png</c> → <c>train_r_0.png</c>: unique across splits, no folder, no whitespace.</summary>
+        public static string ImageName(string relativeImagePath) => ExportPaths.Normalise(relativeImagePath).Replace('/', '_');
+
+        /// <summary>The COLMAP names of the frames, checked to be unique and free of whitespace.</summary>
+        public static IReadOnlyList<string> ImageNames(IReadOnlyList<ExportFrame> frames)
+        {
+            var names = frames.Select(f => ImageName(f.ImagePath)).ToList();
+            var problems = new List<ValidationProblem>();
+            foreach (var bad in names.Where(n => n.Any(char.IsWhiteSpace)))
+                problems.Add(new ValidationProblem("file_path", bad, "contains whitespace, which COLMAP's text format cannot hold in an image name.", "Rename the images without spaces."));
+            foreach (var dup in names.GroupBy(n => n).Where(g => g.Count() > 1))
+                problems.Add(new ValidationProblem("file_path", dup.Key, $"is the flattened name of {dup.Count()} images; COLMAP needs unique names.", "Give every image a distinct path."));
+            InvalidParameterException.ThrowIfAny(problems.ToArray());
+            return names;
+        }
+
+        public static string CamerasText(CameraIntrinsics k)
+        {
+            var sb = new StringBuilder();
+            sb.Append("# Camera list with one line of data per camera:\n");
+            sb.Append("#   CAMERA_ID, MODEL, WIDTH, HEIGHT, PARAMS[]\n");
+            sb.Append("# Number of cameras: 1\n");
+            sb.Append("1 PINHOLE ").Append(I(k.Width)).Append(' ').Append(I(k.Height)).Append(' ')
+                .Append(R(k.FlX)).Append(' ').Append(R(k.FlY)).Append(' ').Append(R(k.Cx)).Append(' ').Append(R(k.Cy)).Append('\n');
+            return sb.ToString();
+        }
+
+        public static string ImagesText(IReadOnlyList<ExportFrame> frames, IReadOnlyList<string> names)
+        {
+            if (names.Count != frames.Count) throw new ArgumentException("One name per frame is needed.", nameof(names));
+            var sb = new StringBuilder();
+            sb.Append("# Image list with two lines of data per image:\n");
+            sb.Append("#   IMAGE_ID, QW, QX, QY, QZ, TX, TY, TZ, CAMERA_ID, NAME\n");
+            sb.Append("#   POINTS2D[] as (X, Y, POINT3D_ID)\n");
+            sb.Append("# Number of images: ").Append(I(frames.Count)).Append(", mean observations per image: 0\n");
+            for (var i = 0; i < frames.Count; i++)
+            {
+                WorldToCamera(frames[i].CameraToWorld, out var q, out var t);
+                sb.Append(I(i + 1)).Append(' ')
+                    .Append(R(q.W)).Append(' ').Append(R(q.X)).Append(' ').Append(R(q.Y)).Append(' ').Append(R(q.Z)).Append(' ')
+                    .Append(R(t.X)).Append(' ').Append(R(t.Y)).Append(' ').Append(R(t.Z)).Append(" 1 ")
+                    .Append(names[i]).Append('\n');
+                sb.Append('\n'); // no 2D observations
+            }
+            return sb.ToString();
+        }
+
+        /// <summary>Points with empty tracks; with no points, only the header (valid COLMAP, but see the converter's warning).</summary>
+        public static string Points3DText(IReadOnlyList<CloudPoint> points)
+        {
+            var count = points?.Count ?? 0;
+            var sb = new StringBuilder();
+            sb.Append("# 3D point list with one line of data per point:\n");
+            sb.Append("#   POINT3D_ID, X, Y, Z, R, G, B, ERROR, TRACK[] as (IMAGE_ID, POINT2D_IDX)\n");
+            sb.Append("# Number of points: ").Append(I(count)).Append(", mean track length: 0\n");
+            for (var i = 0; i < count; i++)
+            {
+                var p = points[i];
+                sb.Append(I(i + 1)).Append(' ')
+                    .Append(R(p.Position.X)).Append(' ').Append(R(p.Position.Y)).Append(' ').Append(R(p.Position.Z)).Append(' ')
+                    .Append(I(p.Red)).Append(' ').Append(I(p.Green)).Append(' ').Append(I(p.Blue)).Append(" 0\n");
+            }
+            return sb.ToString();
+        }
+
+        /// <summary>
+        /// COLMAP's extrinsics of an OpenGL camera-to-world matrix: C = c2w·diag(1, −1, −1) (OpenCV axes), then
+        /// R = Cᵀ (world-to-camera rotation), t = −R·centre. The quaternion has w ≥ 0.
+        /// </summary>
+        public static void WorldToCamera(Matrix4x4d cameraToWorldOpenGl, out Quaterniond rotation, out Vector3d translation)
+        {
+            // Re-orthonormalise, keeping the viewing axis exact: float32 sources such as nerf_synthetic are
+            // orthonormal only to ~1e-7, and a quaternion of a non-rotation would tilt the view by as much.
+            var z = (-cameraToWorldOpenGl.Column(2)).Normalized();
+            var right = cameraToWorldOpenGl.Column(0);
+            var x = (right - Vector3d.Dot(right, z) * z).Normalized();
+            var y = Vector3d.Cross(z, x); // OpenCV is right-handed: x × y = z
+            var centre = cameraToWorldOpenGl.Translation;
+            // Rows of R are the OpenCV camera axes in world coordinates; FromBasis takes R's columns.
+            var c0 = new Vector3d(x.X, y.X, z.X);
+            var c1 = new Vector3d(x.Y, y.Y, z.Y);
+            var c2 = new Vector3d(x.Z, y.Z, z.Z);
+            rotation = Quaterniond.FromBasis(c0, c1, c2);
+            // t from the quaternion's own (exactly orthonormal) rotation, so that the reader's centre −Rᵀt is the
+            // written centre even when the input rotation is only float32-orthonormal (nerf_synthetic: ~1e-7).
+            translation = -rotation.Rotate(centre);
+        }
+
+        static string R(double v)
+        {
+            if (double.IsNaN(v) || double.IsInfinity(v)) throw new ArgumentException("COLMAP files cannot hold " + v + ".");
+            if (v == 0) v = 0; // "-0" is valid but reads like a sign error
+            return v.ToString("R", CultureInfo.InvariantCulture);
+        }
+
+        static string I(int v) => v.ToString(CultureInfo.InvariantCulture);
+    }
+}

@@ -1,0 +1,133 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// <c>nerf-dataset convert &lt;dir&gt; --to nerfstudio|colmap|ngp</c>: turns any Blender-format dataset (nerf_synthetic
+    /// included) into another loader's format without touching the source. Default output locations:
+    /// nerfstudio → <c>&lt;dir&gt;/transforms.json</c>; ngp → <c>&lt;dir&gt;/ngp/transforms.json</c>; colmap →
+    /// <c>&lt;dir&gt;/colmap/</c> with <c>images/</c> (copies, flattened names) and <c>sparse/0/</c>. Nothing is ever
+    /// overwritten: every destination is checked before the first byte is written.
+    /// </summary>
+    public static class DatasetConverter
+    {
+        public const string ColmapFolderName = "colmap";
+
+        /// <summary>Loads the Blender-format dataset in <paramref name="datasetDir"/> and exports it (see <see cref="Export"/>).</summary>
+        public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null)
+        {
+            var warnings = new List<ValidationProblem>();
+            var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
+            warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
+            return Export(scene, target, outDir, null, NgpWriter.DefaultSceneRadius, warnings);
+        }
+
+        /// <summary>
+        /// Writes <paramref name="scene"/> in <paramref name="target"/>'s format: the path a fresh capture takes too.
+        /// <paramref name="points"/> (output frame) fills COLMAP's points3D.txt; <paramref name="sceneRadius"/>
+        /// (output units, e.g. s·b of the target) sets instant-ngp's aabb_scale.
+        /// </summary>
+        public static ConversionResult Export(ExportScene scene, ExportTarget target, string outDir = null,
+            IReadOnlyList<CloudPoint> points = null, double sceneRadius = NgpWriter.DefaultSceneRadius,
+            List<ValidationProblem> warnings = null)
+        {
+            warnings = warnings ?? new List<ValidationProblem>();
+            switch (target)
+            {
+                case ExportTarget.Nerfstudio: return ToNerfstudio(scene, outDir ?? scene.RootDirectory, warnings);
+                case ExportTarget.Ngp: return ToNgp(scene, outDir ?? Path.Combine(scene.RootDirectory, NgpWriter.FolderName), sceneRadius, warnings);
+                case ExportTarget.Colmap: return ToColmap(scene, outDir ?? Path.Combine(scene.RootDirectory, ColmapFolderName), points, warnings);
+                default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
+            }
+        }
+
+        static ConversionResult ToNerfstudio(ExportScene scene, string outDir, List<ValidationProblem> warnings)
+        {
+            outDir = Path.GetFullPath(outDir);
+            var file = Path.Combine(outDir, NerfstudioWriter.FileName);
+            EnsureAbsent(file);
+            warnings.AddRange(NerfstudioWriter.Warnings(scene));
+            var text = ExportJson.Serialise(NerfstudioWriter.Build(scene, outDir));
+            WriteNewText(file, text);
+            return new ConversionResult(outDir, file, new[] { file }, warnings);
+        }
+
+        static ConversionResult ToNgp(ExportScene scene, string outDir, double sceneRadius, List<ValidationProblem> warnings)
+        {
+            outDir = Path.GetFullPath(outDir);
+            var file = Path.Combine(outDir, NgpWriter.FileName);
+            EnsureAbsent(file);
+            var text = ExportJson.Serialise(NgpWriter.Build(scene, outDir, sceneRadius, warnings));
+            WriteNewText(file, text);
+            return new ConversionResult(outDir, file, new[] { file }, warnings);
+        }
+
+        static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings)
+        {
+            outDir = Path.GetFullPath(outDir);
+            var sparse = Path.Combine(outDir, "sparse", "0");
+            var images = Path.Combine(outDir, ColmapTextWriter.ImagesFolder);
+            var names = ColmapTextWriter.ImageNames(scene.Frames);
+            var copies = scene.Frames.Select((f, i) => (from: Path.Combine(scene.RootDirectory, f.ImagePath), to: Path.Combine(images, names[i]))).ToList();
+            var cameras = Path.Combine(sparse, "cameras.txt");
+            var imagesTxt = Path.Combine(sparse, "images.txt");
+            var pointsTxt = Path.Combine(sparse, "points3D.txt");
+            // 3DGS reads sparse/0/points3D.ply before points3D.txt; a copy of the real cloud keeps normals too.
+            var pointsPly = scene.PointCloudPath == null ? null : Path.Combine(sparse, "points3D.ply");
+            // 3DGS (upstream with llffhold 0, and forks that prefer it) takes its --eval test views from sparse/0/test.txt.
+            var testNames = scene.Frames.Select((f, i) => f.Split == "test" ? names[i] : null).Where(n => n != null).ToList();
+            var testTxt = testNames.Count > 0 ? Path.Combine(sparse, "test.txt") : null;
+            var all = new List<string> { cameras, imagesTxt, pointsTxt };
+            if (testTxt != null) all.Add(testTxt);
+            if (pointsPly != null) all.Add(pointsPly);
+            all.AddRange(copies.Select(c => c.to));
+            foreach (var path in all) EnsureAbsent(path);
+
+            if (points == null && scene.PointCloudPath != null)
+                points = PlyReader.Read(Path.Combine(scene.RootDirectory, scene.PointCloudPath));
+            if (points == null)
+            {
+                points = RandomInitCloud.Cube(RandomInitCloud.DefaultCount, SceneNormalisation.GaussianSplattingInitHalfSize, 0);
+                warnings.Add(new ValidationProblem("points3D.txt", points.Count + " random points",
+                    "there is no point cloud, and 3DGS's COLMAP loader fails on an empty points3D.txt, so it holds the same uniform [−1.3, 1.3]³ cloud 3DGS would generate for the Blender layout.",
+                    "Export the target's surface point cloud from Unity for a better start."));
+            }
+
+            Directory.CreateDirectory(images);
+            foreach (var (from, to) in copies) File.Copy(from, to, false);
+            WriteNewText(cameras, ColmapTextWriter.CamerasText(scene.Intrinsics));
+            WriteNewText(imagesTxt, ColmapTextWriter.ImagesText(scene.Frames, names));
+            WriteNewText(pointsTxt, ColmapTextWriter.Points3DText(points));
+            if (testTxt != null) WriteNewText(testTxt, string.Join("\n", testNames) + "\n");
+            if (pointsPly != null) File.Copy(Path.Combine(scene.RootDirectory, scene.PointCloudPath), pointsPly, false);
+            if (scene.Frames.Any(f => f.Split != "train"))
+                warnings.Add(new ValidationProblem("images.txt", scene.Frames.Count + " images",
+                    "COLMAP has no splits: train, val and test views are all listed; upstream 3DGS's --eval holds out every 8th image by name (sparse/0/test.txt lists the real test views for loaders that read it).",
+                    "For the nerf_synthetic protocol, train 3DGS on the Blender layout itself (train.py -s <dir> --eval)."));
+            return new ConversionResult(outDir, outDir, all, warnings);
+        }
+
+        static void EnsureAbsent(string path)
+        {
+            if (File.Exists(path) || Directory.Exists(path))
+                throw new InvalidParameterException(new[]
+                {
+                    new ValidationProblem("outDir", path, "already exists; convert never overwrites files.", "Move or delete it, or pass another output folder."),
+                });
+        }
+
+        static void WriteNewText(string path, string text)
+        {
+            Directory.CreateDirectory(Path.GetDirectoryName(path));
+            using (var file = new FileStream(path, FileMode.CreateNew, FileAccess.Write))
+            {
+                var bytes = new UTF8Encoding(false).GetBytes(text);
+                file.Write(bytes, 0, bytes.Length);
+            }
+        }
+    }
+}

@@ -1,0 +1,34 @@
+using System.Globalization;
+using System.IO;
+using Newtonsoft.Json;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>JSON as the exporters write it: Newtonsoft's round-trip doubles, invariant culture, "\n" line ends.</summary>
+    public static class ExportJson
+    {
+        public static JArray Matrix(Matrix4x4d m) => Rows(m, 4);
+
+        /// <summary>The upper 3×4 block: nerfstudio's <c>applied_transform</c> shape.</summary>
+        public static JArray Matrix3x4(Matrix4x4d m) => Rows(m, 3);
+
+        static JArray Rows(Matrix4x4d m, int rows)
+        {
+            var result = new JArray();
+            for (var r = 0; r < rows; r++) result.Add(new JArray(m[r, 0], m[r, 1], m[r, 2], m[r, 3]));
+            return result;
+        }
+
+        public static string Serialise(JToken token)
+        {
+            using (var text = new StringWriter(CultureInfo.InvariantCulture) { NewLine = "\n" })
+            {
+                using (var writer = new JsonTextWriter(text) { Formatting = Formatting.Indented, Culture = CultureInfo.InvariantCulture, CloseOutput = false })
+                    token.WriteTo(writer);
+                text.Write("\n");
+                return text.ToString();
+            }
+        }
+    }
+}

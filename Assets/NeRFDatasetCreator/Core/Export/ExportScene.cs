@@ -1,0 +1,47 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Everything an exporter writes: shared pinhole intrinsics, the frames of every split, and the optional extras
+    /// (point cloud, applied normalisation). Paths are relative to <see cref="RootDirectory"/>.
+    /// </summary>
+    public sealed class ExportScene
+    {
+        public ExportScene(string rootDirectory, CameraIntrinsics intrinsics, IEnumerable<ExportFrame> frames,
+            string pointCloudPath = null, SceneNormalisation normalisation = null, double depthUnitScale = DefaultDepthUnitScale)
+        {
+            RootDirectory = rootDirectory ?? throw new ArgumentNullException(nameof(rootDirectory));
+            Intrinsics = intrinsics ?? throw new ArgumentNullException(nameof(intrinsics));
+            Frames = (frames ?? throw new ArgumentNullException(nameof(frames))).ToList();
+            PointCloudPath = string.IsNullOrEmpty(pointCloudPath) ? null : ExportPaths.Normalise(pointCloudPath);
+            Normalisation = normalisation;
+            if (!(depthUnitScale > 0) || double.IsInfinity(depthUnitScale))
+                throw new InvalidParameterException(new[] { ValidationProblem.OutsideRange("depthUnitScale", depthUnitScale, 1e-9, 1e9) });
+            DepthUnitScale = depthUnitScale;
+        }
+
+        /// <summary>16-bit depth PNGs store round(z·1000): one step is a thousandth of an output unit (nerfstudio's default factor).</summary>
+        public const double DefaultDepthUnitScale = 0.001;
+
+        public string RootDirectory { get; }
+        public CameraIntrinsics Intrinsics { get; }
+        public IReadOnlyList<ExportFrame> Frames { get; }
+
+        /// <summary>Relative path of a <c>points3d.ply</c> in the output frame, or null.</summary>
+        public string PointCloudPath { get; }
+
+        /// <summary>The recentring and scaling already applied to the poses (and to depth and points), or null if unknown.</summary>
+        public SceneNormalisation Normalisation { get; }
+
+        /// <summary>Output units per integer step of the depth PNGs.</summary>
+        public double DepthUnitScale { get; }
+
+        public bool HasDepth => Frames.Count > 0 && Frames.All(f => f.DepthPath != null);
+        public bool HasMasks => Frames.Count > 0 && Frames.All(f => f.MaskPath != null);
+
+        public IEnumerable<ExportFrame> Split(string split) => Frames.Where(f => f.Split == split);
+    }
+}

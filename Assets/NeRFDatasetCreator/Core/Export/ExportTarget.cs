@@ -1,0 +1,28 @@
+using System;
+using System.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>The formats <c>nerf-dataset convert --to</c> writes.</summary>
+    public enum ExportTarget
+    {
+        Nerfstudio,
+        Colmap,
+        Ngp,
+    }
+
+    public static class ExportTargets
+    {
+        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp" };
+
+        public static string Name(ExportTarget target) => Names[(int)target];
+
+        /// <summary>Parses a <c>--to</c> value; null with a problem naming the valid values otherwise.</summary>
+        public static ExportTarget? Parse(string value, out ValidationProblem problem)
+        {
+            var index = Array.FindIndex(Names, n => string.Equals(n, value?.Trim(), StringComparison.OrdinalIgnoreCase));
+            problem = index >= 0 ? null : new ValidationProblem("--to", value ?? "", "is not an export format.", "Use one of: " + string.Join(", ", Names.Select(n => n)) + ".");
+            return index >= 0 ? (ExportTarget?)index : null;
+        }
+    }
+}

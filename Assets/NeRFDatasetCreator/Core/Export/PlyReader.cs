@@ -1,0 +1,67 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Text;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Reads back exactly the layout <see cref="PlyWriter"/> writes (and 3DGS's storePly): binary little-endian,
+    /// one vertex element, float x y z nx ny nz, uchar red green blue. Anything else is refused with a message
+    /// rather than misread; a general PLY reader is out of scope.
+    /// </summary>
+    public static class PlyReader
+    {
+        public static IReadOnlyList<CloudPoint> Read(string path)
+        {
+            using (var file = File.OpenRead(path))
+            {
+                var header = ReadHeader(file);
+                var count = ParseCount(header, path);
+                var expected = PlyWriter.Header(count);
+                if (header != expected)
+                    throw Problem(path, "is not a binary little-endian PLY with exactly x y z nx ny nz (float) red green blue (uchar).");
+                var points = new List<CloudPoint>(count);
+                using (var reader = new BinaryReader(file, Encoding.ASCII, leaveOpen: true))
+                {
+                    for (var i = 0; i < count; i++)
+                    {
+                        var p = new Vector3d(reader.ReadSingle(), reader.ReadSingle(), reader.ReadSingle());
+                        var n = new Vector3d(reader.ReadSingle(), reader.ReadSingle(), reader.ReadSingle());
+                        points.Add(new CloudPoint(p, n, reader.ReadByte(), reader.ReadByte(), reader.ReadByte()));
+                    }
+                }
+                return points;
+            }
+        }
+
+        static string ReadHeader(Stream stream)
+        {
+            var header = new StringBuilder();
+            const string end = "end_header\n";
+            while (header.Length < 4096)
+            {
+                var b = stream.ReadByte();
+                if (b < 0) break;
+                header.Append((char)b);
+                if (header.Length >= end.Length && header.ToString(header.Length - end.Length, end.Length) == end)
+                    return header.ToString();
+            }
+            return header.ToString();
+        }
+
+        static int ParseCount(string header, string path)
+        {
+            const string key = "element vertex ";
+            var start = header.IndexOf(key, StringComparison.Ordinal);
+            if (start < 0) throw Problem(path, "has no vertex element.");
+            var stop = header.IndexOf('\n', start);
+            if (stop < 0 || !int.TryParse(header.Substring(start + key.Length, stop - start - key.Length), System.Globalization.NumberStyles.None, System.Globalization.CultureInfo.InvariantCulture, out var count))
+                throw Problem(path, "has an unreadable vertex count.");
+            return count;
+        }
+
+        static InvalidParameterException Problem(string path, string reason) =>
+            new InvalidParameterException(new[] { new ValidationProblem("points3d.ply", path, reason, "Re-export the point cloud with this plugin, or remove the file.") });
+    }
+}
