@@ -10,8 +10,12 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class MarkerPicking
     {
-        /// <summary>How close, in GUI pixels, a click must land to a marker to pick it.</summary>
-        public const double DefaultRadiusPixels = 10;
+        /// <summary>
+        /// How close, in GUI points, a click must land to a marker to pick it: 5, the distance within which Unity's
+        /// <c>HandleUtility.nearestControl</c> reports a control at all (<c>HandleUtility.kPickDistance</c>), so the
+        /// preview's pick and Unity's agree.
+        /// </summary>
+        public const double DefaultRadiusPixels = 5;
 
         /// <summary>
         /// The index of the point nearest to (<paramref name="clickX"/>, <paramref name="clickY"/>) among the first
