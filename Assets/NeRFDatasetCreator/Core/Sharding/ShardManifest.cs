@@ -102,7 +102,8 @@ namespace NerfDatasetCreator
             JObject root;
             try
             {
-                root = JObject.Parse(json);
+                root = ShardMerger.ParseVerbatim(json) as JObject;
+                if (root == null) throw new JsonReaderException("The top level is not a JSON object.");
             }
             catch (JsonException e)
             {

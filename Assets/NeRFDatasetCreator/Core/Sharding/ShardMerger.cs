@@ -23,6 +23,13 @@ namespace NerfDatasetCreator
     {
         public const string ConfigFileName = "dataset_config.json";
 
+        /// <summary>
+        /// Top-level keys of <c>dataset_config.json</c> that describe one run rather than the dataset (when and
+        /// where it ran, what it rendered): they may differ between shards, which merge reports as a warning. Every
+        /// other key (settings, seed, distance, target, plugin version) must be identical.
+        /// </summary>
+        public static readonly IReadOnlyList<string> PerRunConfigKeys = new[] { "createdUtc", "imagesRendered", "statistics", "tool", "unityVersion", "shard" };
+
         static readonly Regex FilePathPattern = new Regex(@"^(?:\./)?([^/]+)/r_(\d+)(\.[A-Za-z0-9]+)?$", RegexOptions.CultureInvariant);
         static readonly Regex ViewFilePattern = new Regex(@"^r_(\d+)(?:[^0-9].*)?$", RegexOptions.CultureInvariant);
 
@@ -52,7 +59,7 @@ namespace NerfDatasetCreator
 
             var counts = shards[0].Manifest.Counts;
             var frames = CollectFrames(shards, counts, problems, warnings);
-            CheckConsistency(shards, problems);
+            CheckConsistency(shards, problems, warnings);
             var transfers = PlanTransfers(shards, frames, problems, warnings);
             if (problems.Count > 0) return new MergeResult(output, problems, warnings, empty, 0);
 
@@ -143,7 +150,7 @@ namespace NerfDatasetCreator
             if (!File.Exists(path)) return null;
             try
             {
-                return JToken.Parse(File.ReadAllText(path));
+                return ParseVerbatim(File.ReadAllText(path));
             }
             catch (JsonException e)
             {
@@ -244,7 +251,7 @@ namespace NerfDatasetCreator
             return frames.OrderBy(f => Array.IndexOf(ViewCounts.SplitNames.ToArray(), f.Split)).ThenBy(f => f.Index).ToList();
         }
 
-        static void CheckConsistency(List<Shard> shards, List<ValidationProblem> problems)
+        static void CheckConsistency(List<Shard> shards, List<ValidationProblem> problems, List<string> warnings)
         {
             foreach (var split in ViewCounts.SplitNames)
             {
@@ -252,7 +259,7 @@ namespace NerfDatasetCreator
                 if (withFile.Count < 2) continue;
                 var reference = withFile[0];
                 foreach (var other in withFile.Skip(1))
-                    CompareKeys(reference, other, reference.Transforms[split], other.Transforms[split], TransformsFileName(split), "frames", problems);
+                    CompareKeys(reference, other, reference.Transforms[split], other.Transforms[split], TransformsFileName(split), new[] { "frames" }, problems, null);
             }
 
             var configured = shards.Where(s => s.Config != null).ToList();
@@ -262,20 +269,30 @@ namespace NerfDatasetCreator
             foreach (var other in configured.Skip(1))
             {
                 if (configured[0].Config is JObject a && other.Config is JObject b)
-                    CompareKeys(configured[0], other, a, b, ConfigFileName, null, problems);
+                    CompareKeys(configured[0], other, a, b, ConfigFileName, PerRunConfigKeys, problems, warnings);
                 else if (!JToken.DeepEquals(configured[0].Config, other.Config))
                     problems.Add(new ValidationProblem(Path.Combine(other.Folder, ConfigFileName), "", "differs from " + configured[0].Name + ".", "Capture every shard with the same config."));
             }
         }
 
-        static void CompareKeys(Shard reference, Shard other, JObject a, JObject b, string file, string skip, List<ValidationProblem> problems)
+        /// <summary>Every key that differs is a problem, except <paramref name="lenient"/> keys: skipped, or a warning when <paramref name="warnings"/> is given.</summary>
+        static void CompareKeys(Shard reference, Shard other, JObject a, JObject b, string file, IReadOnlyList<string> lenient,
+            List<ValidationProblem> problems, List<string> warnings)
         {
-            var keys = a.Properties().Select(p => p.Name).Concat(b.Properties().Select(p => p.Name)).Distinct().Where(k => k != skip);
+            var keys = a.Properties().Select(p => p.Name).Concat(b.Properties().Select(p => p.Name)).Distinct();
             foreach (var key in keys)
-                if (!JToken.DeepEquals(a[key], b[key]))
-                    problems.Add(new ValidationProblem(Path.Combine(other.Folder, file) + ": " + key, Show(b[key]),
-                        "differs from " + reference.Name + ", which has " + Show(a[key]) + ".",
-                        "Every shard must be captured with the same config; rerun this shard with it."));
+            {
+                if (JToken.DeepEquals(a[key], b[key])) continue;
+                if (lenient.Contains(key))
+                {
+                    if (warnings != null && key != "createdUtc" && key != "imagesRendered" && key != "statistics")
+                        warnings.Add(Path.Combine(other.Folder, file) + ": " + key + " is " + Show(b[key]) + " but " + Show(a[key]) + " in " + reference.Name + " (allowed: it describes the run, not the dataset).");
+                    continue;
+                }
+                problems.Add(new ValidationProblem(Path.Combine(other.Folder, file) + ": " + key, Show(b[key]),
+                    "differs from " + reference.Name + ", which has " + Show(a[key]) + ".",
+                    "Every shard must be captured with the same config; rerun this shard with it."));
+            }
         }
 
         static string Show(JToken token)
@@ -396,7 +413,7 @@ namespace NerfDatasetCreator
                     WriteJson(Path.Combine(staging, TransformsFileName(split)), merged);
                 }
                 var config = shards.FirstOrDefault(s => s.Config != null);
-                if (config != null) WriteJson(Path.Combine(staging, ConfigFileName), config.Config);
+                if (config != null) WriteJson(Path.Combine(staging, ConfigFileName), MergedConfig(config.Config, shards));
                 Directory.Move(staging, output);
                 return null;
             }
@@ -407,6 +424,21 @@ namespace NerfDatasetCreator
                     undone ? "Nothing was changed; fix the cause (disk space, permissions, a folder created meanwhile) and merge again."
                            : "Some moved files could not be put back; they are in " + staging + " under the same relative paths. Move them back before retrying.");
             }
+        }
+
+        /// <summary>
+        /// The first shard's config made to describe the whole dataset: <c>imagesRendered</c> summed over the shards,
+        /// and the per-shard <c>statistics</c> and <c>shard</c> entries dropped.
+        /// </summary>
+        static JToken MergedConfig(JToken first, List<Shard> shards)
+        {
+            if (!(first.DeepClone() is JObject merged)) return first.DeepClone();
+            merged.Remove("statistics");
+            merged.Remove("shard");
+            var counts = shards.Select(s => (s.Config as JObject)?["imagesRendered"]).ToList();
+            if (counts.All(c => c != null && c.Type == JTokenType.Integer))
+                merged["imagesRendered"] = counts.Sum(c => (long)c);
+            return merged;
         }
 
         static bool Undo(List<Transfer> moved, string staging)
@@ -430,6 +462,22 @@ namespace NerfDatasetCreator
                 catch (UnauthorizedAccessException) { }
             }
             return complete;
+        }
+
+        /// <summary>
+        /// Parses JSON keeping strings as written: Newtonsoft's default turns ISO dates into DateTime and writes
+        /// them back in another format, which would silently change a frame's or the config's text.
+        /// </summary>
+        internal static JToken ParseVerbatim(string json)
+        {
+            using (var reader = new JsonTextReader(new StringReader(json)) { DateParseHandling = DateParseHandling.None })
+            {
+                var token = JToken.ReadFrom(reader);
+                while (reader.Read())
+                    if (reader.TokenType != JsonToken.Comment)
+                        throw new JsonReaderException("Additional text after the JSON value at line " + reader.LineNumber + ".");
+                return token;
+            }
         }
 
         static void WriteJson(string path, JToken json) =>

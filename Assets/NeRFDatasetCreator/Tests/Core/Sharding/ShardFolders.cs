@@ -47,7 +47,17 @@ namespace NerfDatasetCreator.Tests
                     };
                     WriteJson(Path.Combine(folder, "transforms_" + split + ".json"), transforms);
                 }
-                WriteJson(Path.Combine(folder, "dataset_config.json"), new JObject { ["resolution"] = new JArray(8, 8), ["seed"] = 42 });
+                // Per-run keys (date, images rendered, timings) differ between shards, as a real capture writes them.
+                WriteJson(Path.Combine(folder, "dataset_config.json"), new JObject
+                {
+                    ["pluginVersion"] = "0.1.0",
+                    ["unityVersion"] = "2022.3.62f1",
+                    ["imagesRendered"] = ViewCounts.SplitNames.Sum(split => manifest.Views(split).Count),
+                    ["createdUtc"] = "2026-01-0" + (s % 9 + 1).ToString(CultureInfo.InvariantCulture) + "T10:00:00.000Z",
+                    ["statistics"] = new JObject { ["secondsPerView"] = 0.5 + s },
+                    ["seed"] = 42,
+                    ["settings"] = new JObject { ["width"] = 8, ["height"] = 8 },
+                });
             }
             return folders;
         }
@@ -71,7 +81,12 @@ namespace NerfDatasetCreator.Tests
         public static byte[] ImageBytes(string split, int i) =>
             new byte[] { 0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A }.Concat(Encoding.ASCII.GetBytes(split + "/" + i)).ToArray();
 
-        public static JObject ReadJson(string path) => JObject.Parse(File.ReadAllText(path));
+        /// <summary>Reads a JSON file keeping date-like strings as text (Newtonsoft would parse them as DateTime).</summary>
+        public static JObject ReadJson(string path)
+        {
+            using (var reader = new JsonTextReader(new StringReader(File.ReadAllText(path))) { DateParseHandling = DateParseHandling.None })
+                return JObject.Load(reader);
+        }
 
         public static void WriteJson(string path, JToken json) => File.WriteAllText(path, json.ToString(Formatting.Indented));
 

@@ -54,7 +54,12 @@ namespace NerfDatasetCreator.Tests
                 }
             }
             Assert.That(File.ReadAllBytes(Path.Combine(output, "test", "r_3_depth.png")), Is.EqualTo(ShardFolders.ImageBytes("test-depth", 3)));
-            Assert.That((int)ShardFolders.ReadJson(Path.Combine(output, "dataset_config.json"))["seed"], Is.EqualTo(42));
+            var config = ShardFolders.ReadJson(Path.Combine(output, "dataset_config.json"));
+            Assert.That((int)config["seed"], Is.EqualTo(42));
+            Assert.That((int)config["imagesRendered"], Is.EqualTo(5 + 3 + 4), "summed over the shards");
+            Assert.That(config["statistics"], Is.Null, "per-shard timings describe no single run of the whole dataset");
+            Assert.That(File.ReadAllText(Path.Combine(output, "dataset_config.json")), Does.Contain("\"createdUtc\": \"2026-01-01T10:00:00.000Z\""), "shard 0's date, verbatim");
+            Assert.That(result.Warnings, Is.Empty, "the dates and counts differ, which is normal");
             Assert.That(File.Exists(Path.Combine(output, "shard.json")), Is.False, "the merged dataset is whole");
             Assert.That(Directory.GetDirectories(root).Select(Path.GetFileName).OrderBy(n => n, StringComparer.Ordinal),
                 Is.EqualTo(new[] { "merged", "shard-0", "shard-1", "shard-2" }), "no staging folder left behind");
@@ -142,13 +147,32 @@ namespace NerfDatasetCreator.Tests
         public void ADifferentDatasetConfigIsAMismatch()
         {
             var shards = ShardFolders.Create(root, 2, Counts);
-            ShardFolders.WriteJson(Path.Combine(shards[1], "dataset_config.json"), new JObject { ["resolution"] = new JArray(8, 8), ["seed"] = 7 });
+            var path = Path.Combine(shards[1], "dataset_config.json");
+            var config = ShardFolders.ReadJson(path);
+            config["seed"] = 7;
+            ShardFolders.WriteJson(path, config);
 
             var result = ShardMerger.Merge(shards, output);
 
             Assert.That(result.Problems, Has.Count.EqualTo(1));
-            Assert.That(result.Problems[0].Field, Is.EqualTo(Path.Combine(shards[1], "dataset_config.json") + ": seed"));
+            Assert.That(result.Problems[0].Field, Is.EqualTo(path + ": seed"));
             Assert.That(result.Problems[0].Value, Is.EqualTo("7"));
+            Assert.That(result.Problems[0].Reason, Does.Contain("which has 42"));
+        }
+
+        [Test]
+        public void ADifferentUnityVersionIsOnlyAWarning()
+        {
+            var shards = ShardFolders.Create(root, 2, Counts);
+            var path = Path.Combine(shards[1], "dataset_config.json");
+            var config = ShardFolders.ReadJson(path);
+            config["unityVersion"] = "6000.0.40f1";
+            ShardFolders.WriteJson(path, config);
+
+            var result = ShardMerger.Merge(shards, output);
+
+            Assert.That(result.Succeeded, Is.True, Lines(result));
+            Assert.That(result.Warnings.Single(), Does.Contain("unityVersion is \"6000.0.40f1\" but \"2022.3.62f1\""));
         }
 
         [Test]
