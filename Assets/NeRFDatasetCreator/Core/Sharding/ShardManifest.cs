@@ -102,7 +102,7 @@ namespace NerfDatasetCreator
             JObject root;
             try
             {
-                root = ShardMerger.ParseVerbatim(json) as JObject;
+                root = VerbatimJson.Parse(json) as JObject;
                 if (root == null) throw new JsonReaderException("The top level is not a JSON object.");
             }
             catch (JsonException e)
