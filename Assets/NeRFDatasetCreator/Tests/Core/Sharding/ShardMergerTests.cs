@@ -205,6 +205,33 @@ namespace NerfDatasetCreator.Tests
             Assert.That(File.Exists(Path.Combine(shards[0], "train", "r_0.png")), Is.True);
         }
 
+        [TestCase(true)]
+        [TestCase(false)]
+        public void AWriteFailureHalfWayPutsEveryMovedFileBack(bool move)
+        {
+            // A failure only the file system can reveal: shard 0's frame r_0 names an extra file inside a folder called
+            // "train/r_1.png", and shard 1's image of r_1 is a file of that very name. The plan is consistent; writing
+            // fails when r_1.png meets the folder, after r_0's files were already moved into the staging folder.
+            var counts = new ViewCounts(3, 0, 0);
+            var shards = ShardFolders.Create(root, 2, counts);
+            var path = Path.Combine(shards[0], "transforms_train.json");
+            var json = ShardFolders.ReadJson(path);
+            json["frames"][0]["extra_path"] = "./train/r_1.png/extra.bin";
+            ShardFolders.WriteJson(path, json);
+            Directory.CreateDirectory(Path.Combine(shards[0], "train", "r_1.png"));
+            File.WriteAllText(Path.Combine(shards[0], "train", "r_1.png", "extra.bin"), "extra");
+            var before = ShardFolders.Snapshot(root);
+
+            var result = ShardMerger.Merge(shards, output, move);
+
+            Assert.That(result.Succeeded, Is.False);
+            Assert.That(result.Problems.Single().Reason, Does.StartWith("could not be written"));
+            Assert.That(result.Problems.Single().Fix, Does.StartWith("Nothing was changed"));
+            Assert.That(ShardFolders.Snapshot(root), Is.EqualTo(before), "every moved file is back where it was");
+            Assert.That(Directory.GetDirectories(root).Select(Path.GetFileName).OrderBy(n => n, StringComparer.Ordinal),
+                Is.EqualTo(new[] { "shard-0", "shard-1" }), "no output and no staging folder");
+        }
+
         [Test]
         public void ShardsOfDifferentJobsAreRefused()
         {
