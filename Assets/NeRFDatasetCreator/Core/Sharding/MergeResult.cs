@@ -1,0 +1,43 @@
+using System.Collections.Generic;
+using System.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>What <see cref="ShardMerger.Merge"/> did: either the merged folder, or every problem and nothing changed.</summary>
+    public sealed class MergeResult
+    {
+        public MergeResult(string outputFolder, IReadOnlyList<ValidationProblem> problems, IReadOnlyList<string> warnings,
+            IReadOnlyDictionary<string, int> framesPerSplit, int filesTransferred)
+        {
+            OutputFolder = outputFolder;
+            Problems = problems;
+            Warnings = warnings;
+            FramesPerSplit = framesPerSplit;
+            FilesTransferred = filesTransferred;
+        }
+
+        public bool Succeeded => Problems.Count == 0;
+
+        /// <summary>The merged dataset's folder; it exists only when <see cref="Succeeded"/>.</summary>
+        public string OutputFolder { get; }
+
+        /// <summary>Why the merge was refused or undone; empty on success. One line each, naming the split, view, file or shard.</summary>
+        public IReadOnlyList<ValidationProblem> Problems { get; }
+
+        /// <summary>Things left behind in the shard folders that do not stop the merge (stray files, per-shard extras).</summary>
+        public IReadOnlyList<string> Warnings { get; }
+
+        public IReadOnlyDictionary<string, int> FramesPerSplit { get; }
+        public int FilesTransferred { get; }
+
+        /// <summary>The report as lines for a console or a log: problems first, then warnings, then a summary.</summary>
+        public IEnumerable<string> Lines()
+        {
+            foreach (var p in Problems) yield return "error: " + p;
+            foreach (var w in Warnings) yield return "warning: " + w;
+            yield return Succeeded
+                ? "merged " + string.Join(", ", FramesPerSplit.Select(kv => kv.Value + " " + kv.Key)) + " frames (" + FilesTransferred + " files) into " + OutputFolder
+                : "merge refused: " + Problems.Count + " problem(s); no file was changed.";
+        }
+    }
+}

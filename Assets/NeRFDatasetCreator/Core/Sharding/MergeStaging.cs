@@ -1,0 +1,104 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text;
+using Newtonsoft.Json;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Writes a checked merge: into a hidden sibling of the output folder, renamed into place only when complete;
+    /// on failure moved files go back and the partial folder is removed.
+    /// </summary>
+    static class MergeStaging
+    {
+        /// <summary>Builds the dataset in a hidden sibling folder and renames it into place; returns the problem on failure, after undoing everything.</summary>
+        public static ValidationProblem Write(List<ShardFolder> shards, List<MergeFrame> frames, List<MergeTransfer> transfers, string output, bool move)
+        {
+            var parent = Path.GetDirectoryName(output);
+            var staging = Path.Combine(parent ?? ".", "." + Path.GetFileName(output) + ".merging-" + Guid.NewGuid().ToString("N").Substring(0, 8));
+            var moved = new List<MergeTransfer>();
+            try
+            {
+                Directory.CreateDirectory(staging);
+                foreach (var t in transfers)
+                {
+                    var destination = Path.Combine(staging, t.Relative.Replace('/', Path.DirectorySeparatorChar));
+                    Directory.CreateDirectory(Path.GetDirectoryName(destination));
+                    if (move)
+                    {
+                        File.Move(t.Source, destination);
+                        moved.Add(t);
+                    }
+                    else File.Copy(t.Source, destination, false);
+                }
+                foreach (var split in ViewCounts.SplitNames)
+                {
+                    var reference = shards.FirstOrDefault(s => s.Transforms.ContainsKey(split));
+                    if (reference == null) continue;
+                    var merged = new JObject();
+                    foreach (var property in reference.Transforms[split].Properties())
+                        merged[property.Name] = property.Name == "frames"
+                            ? new JArray(frames.Where(f => f.Split == split).Select(f => f.Json.DeepClone()))
+                            : property.Value.DeepClone();
+                    if (merged["frames"] == null) merged["frames"] = new JArray(frames.Where(f => f.Split == split).Select(f => f.Json.DeepClone()));
+                    WriteJson(Path.Combine(staging, ShardMerger.TransformsFileName(split)), merged);
+                }
+                var config = shards.FirstOrDefault(s => s.Config != null);
+                if (config != null) WriteJson(Path.Combine(staging, ShardMerger.ConfigFileName), MergedConfig(config.Config, shards));
+                Directory.Move(staging, output);
+                return null;
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                var undone = Undo(moved, staging);
+                return new ValidationProblem("output", output, "could not be written: " + e.Message,
+                    undone ? "Nothing was changed; fix the cause (disk space, permissions, a folder created meanwhile) and merge again."
+                           : "Some moved files could not be put back; they are in " + staging + " under the same relative paths. Move them back before retrying.");
+            }
+        }
+
+        /// <summary>
+        /// The first shard's config made to describe the whole dataset: <c>imagesRendered</c> summed over the shards,
+        /// and the per-shard <c>statistics</c> and <c>shard</c> entries dropped.
+        /// </summary>
+        static JToken MergedConfig(JToken first, List<ShardFolder> shards)
+        {
+            if (!(first.DeepClone() is JObject merged)) return first.DeepClone();
+            merged.Remove("statistics");
+            merged.Remove("shard");
+            var counts = shards.Select(s => (s.Config as JObject)?["imagesRendered"]).ToList();
+            if (counts.All(c => c != null && c.Type == JTokenType.Integer))
+                merged["imagesRendered"] = counts.Sum(c => (long)c);
+            return merged;
+        }
+
+        static bool Undo(List<MergeTransfer> moved, string staging)
+        {
+            var complete = true;
+            for (var i = moved.Count - 1; i >= 0; i--)
+            {
+                try
+                {
+                    File.Move(Path.Combine(staging, moved[i].Relative.Replace('/', Path.DirectorySeparatorChar)), moved[i].Source);
+                }
+                catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+                {
+                    complete = false;
+                }
+            }
+            if (complete && Directory.Exists(staging))
+            {
+                try { Directory.Delete(staging, true); }
+                catch (IOException) { }
+                catch (UnauthorizedAccessException) { }
+            }
+            return complete;
+        }
+
+        static void WriteJson(string path, JToken json) =>
+            File.WriteAllText(path, json.ToString(Formatting.Indented) + "\n", new UTF8Encoding(false));
+    }
+}

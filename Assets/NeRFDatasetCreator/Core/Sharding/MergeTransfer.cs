@@ -1,0 +1,104 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>One file merge copies or moves: from a shard folder to a path relative to the merged dataset.</summary>
+    sealed class MergeTransfer
+    {
+        public string Source;
+        public string Relative;
+
+        static readonly Regex ViewFilePattern = new Regex(@"^r_(\d+)(?:[^0-9].*)?$", RegexOptions.CultureInvariant);
+
+        /// <summary>
+        /// Every file the kept frames need: those their <c>file_path</c> and <c>*_path</c> keys name, and every file of
+        /// their split folder named after the view (r_12.png, r_12_depth.exr, r_12_normal_0000.png …). Missing files,
+        /// paths leaving the shard and collisions are problems; files of no frame are left behind with a warning.
+        /// </summary>
+        public static List<MergeTransfer> Plan(List<ShardFolder> shards, List<MergeFrame> frames, List<ValidationProblem> problems, List<string> warnings)
+        {
+            var transfers = new List<MergeTransfer>();
+            var destinations = new Dictionary<string, string>(StringComparer.OrdinalIgnoreCase);
+            var claimed = new HashSet<string>(StringComparer.Ordinal);
+
+            void Add(string source, string relative, string owner)
+            {
+                if (!claimed.Add(source)) return;
+                if (destinations.TryGetValue(relative, out var previous))
+                {
+                    problems.Add(new ValidationProblem(relative, source, "would overwrite " + previous + " in the merged dataset.", "Remove one of the two files (" + owner + ")."));
+                    return;
+                }
+                destinations[relative] = source;
+                transfers.Add(new MergeTransfer { Source = source, Relative = relative });
+            }
+
+            // Every file in a split folder that belongs to a kept frame (r_12.png, r_12_depth.exr, r_12_normal_0000.png …).
+            var byView = new Dictionary<string, List<string>>(StringComparer.Ordinal);
+            foreach (var shard in shards)
+                foreach (var split in ViewCounts.SplitNames)
+                {
+                    var dir = Path.Combine(shard.Folder, split);
+                    if (!Directory.Exists(dir)) continue;
+                    foreach (var path in Directory.GetFiles(dir).OrderBy(p => p, StringComparer.Ordinal))
+                    {
+                        var m = ViewFilePattern.Match(Path.GetFileName(path));
+                        var key = m.Success ? shard.Folder + "|" + split + "|" + m.Groups[1].Value.TrimStart('0').PadLeft(1, '0') : null;
+                        if (key == null) { warnings.Add(path + " is not a view's file and was left in place."); continue; }
+                        if (!byView.TryGetValue(key, out var list)) byView[key] = list = new List<string>();
+                        list.Add(path);
+                    }
+                }
+
+            foreach (var frame in frames)
+            {
+                var owner = frame.Shard.Name;
+                var key = frame.Shard.Folder + "|" + frame.Split + "|" + Str(frame.Index);
+                // Files the frame names: file_path (".png" appended when extensionless, as the loaders do) and any *_path key.
+                foreach (var property in frame.Json.Properties())
+                {
+                    if (property.Value.Type != JTokenType.String) continue;
+                    if (property.Name != "file_path" && !property.Name.EndsWith("_path", StringComparison.Ordinal)) continue;
+                    var relative = ((string)property.Value).Replace('\\', '/');
+                    if (relative.StartsWith("./", StringComparison.Ordinal)) relative = relative.Substring(2);
+                    if (property.Name == "file_path" && Path.GetExtension(relative).Length == 0) relative += ".png";
+                    var where = Path.Combine(frame.Shard.Folder, ShardMerger.TransformsFileName(frame.Split)) + ": " + frame.Split + " r_" + Str(frame.Index) + "." + property.Name;
+                    if (relative.Length == 0 || Path.IsPathRooted(relative) || relative.Split('/').Contains(".."))
+                    {
+                        problems.Add(new ValidationProblem(where, (string)property.Value, "points outside the shard folder.", "Paths in a dataset must be relative and stay inside it."));
+                        continue;
+                    }
+                    var source = Path.Combine(frame.Shard.Folder, relative.Replace('/', Path.DirectorySeparatorChar));
+                    if (!File.Exists(source))
+                    {
+                        problems.Add(new ValidationProblem(where, (string)property.Value, "names " + source + ", which does not exist.", "Rerun " + owner + "; its capture did not finish."));
+                        continue;
+                    }
+                    Add(source, relative, owner);
+                }
+                if (byView.TryGetValue(key, out var files))
+                {
+                    foreach (var path in files) Add(path, frame.Split + "/" + Path.GetFileName(path), owner);
+                    byView.Remove(key);
+                }
+            }
+            foreach (var leftover in byView.Values.SelectMany(v => v))
+                warnings.Add(leftover + " belongs to no frame of its shard's transforms and was left in place.");
+
+            var known = new HashSet<string>(ViewCounts.SplitNames.Concat(ViewCounts.SplitNames.Select(ShardMerger.TransformsFileName)).Concat(new[] { ShardManifest.FileName, ShardMerger.ConfigFileName }), StringComparer.Ordinal);
+            foreach (var shard in shards)
+                foreach (var entry in Directory.EnumerateFileSystemEntries(shard.Folder).OrderBy(p => p, StringComparer.Ordinal))
+                    if (!known.Contains(Path.GetFileName(entry)) && !claimed.Contains(entry))
+                        warnings.Add(entry + " is not part of the Blender-format splits and was not merged (per-shard extras such as a point cloud or a nerfstudio transforms.json must be made again from the merged dataset).");
+            return transfers;
+        }
+
+        static string Str(int value) => value.ToString(CultureInfo.InvariantCulture);
+    }
+}

@@ -1,0 +1,83 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using Newtonsoft.Json;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>One shard folder as merge reads it: its manifest, its transforms files and its config, as JSON.</summary>
+    sealed class ShardFolder
+    {
+        public string Folder;
+        public ShardManifest Manifest;
+        public readonly Dictionary<string, JObject> Transforms = new Dictionary<string, JObject>();
+        public JToken Config;
+        public string Name => "shard " + Manifest.Shard + " (" + Folder + ")";
+
+        /// <summary>Reads every folder, sorted by shard index; each unreadable one adds its problems instead.</summary>
+        public static List<ShardFolder> ReadAll(IReadOnlyList<string> folders, List<ValidationProblem> problems)
+        {
+            var shards = new List<ShardFolder>();
+            if (folders == null || folders.Count == 0)
+            {
+                problems.Add(new ValidationProblem("shards", "(none)", "no shard folder was given.", "Pass every folder written by the -nerfShard captures."));
+                return shards;
+            }
+            var seen = new HashSet<string>(StringComparer.Ordinal);
+            foreach (var given in folders)
+            {
+                if (string.IsNullOrWhiteSpace(given))
+                {
+                    problems.Add(new ValidationProblem("shards", "(empty)", "contains an empty folder name.", "Pass the path of each shard folder."));
+                    continue;
+                }
+                var folder = Path.GetFullPath(given).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
+                if (!seen.Add(folder))
+                {
+                    problems.Add(new ValidationProblem("shards", folder, "is given twice.", "Pass each shard folder once."));
+                    continue;
+                }
+                if (!Directory.Exists(folder))
+                {
+                    problems.Add(new ValidationProblem("shards", folder, "does not exist.", "Check the path; pass the folders the -nerfShard captures wrote."));
+                    continue;
+                }
+                var shard = new ShardFolder { Folder = folder };
+                try
+                {
+                    shard.Manifest = ShardManifest.Read(folder);
+                }
+                catch (InvalidParameterException e)
+                {
+                    problems.AddRange(e.Problems);
+                    continue;
+                }
+                foreach (var split in ViewCounts.SplitNames)
+                {
+                    var json = ReadJson(Path.Combine(folder, ShardMerger.TransformsFileName(split)), problems);
+                    if (json is JObject o) shard.Transforms[split] = o;
+                    else if (json != null) problems.Add(new ValidationProblem(Path.Combine(folder, ShardMerger.TransformsFileName(split)), json.Type.ToString(), "is not a JSON object.", "Recapture this shard."));
+                }
+                shard.Config = ReadJson(Path.Combine(folder, ShardMerger.ConfigFileName), problems);
+                shards.Add(shard);
+            }
+            shards.Sort((a, b) => a.Manifest.Shard.Index.CompareTo(b.Manifest.Shard.Index));
+            return shards;
+        }
+
+        static JToken ReadJson(string path, List<ValidationProblem> problems)
+        {
+            if (!File.Exists(path)) return null;
+            try
+            {
+                return VerbatimJson.Parse(File.ReadAllText(path));
+            }
+            catch (JsonException e)
+            {
+                problems.Add(new ValidationProblem(path, "(unreadable)", "is not valid JSON: " + e.Message, "Recapture this shard."));
+                return null;
+            }
+        }
+    }
+}

@@ -1,0 +1,46 @@
+using NUnit.Framework;
+
+namespace NerfDatasetCreator.Editor.Tests
+{
+    /// <summary>The preview's state without a Scene view: colours from Core, plan changes, visibility, selection.</summary>
+    [TestFixture]
+    public class RigPreviewTests
+    {
+        [Test]
+        public void TheLegendColoursAreCoresSplitColours()
+        {
+            Assert.That(RigPreview.TrainColor.r, Is.EqualTo(SplitColors.Train.R));
+            Assert.That(RigPreview.ValColor.g, Is.EqualTo(SplitColors.Val.G));
+            Assert.That(RigPreview.TestColor.b, Is.EqualTo(SplitColors.Test.B));
+            Assert.That(RigPreview.ColorOf(PreviewSplit.Val).r, Is.EqualTo(SplitColors.Val.R));
+        }
+
+        [Test]
+        public void HidingASplitIsRememberedAndNothingIsSelectedAfterANewPlan()
+        {
+            using (var preview = new RigPreview())
+            {
+                var train = CameraRig.Place(new HaloFormation(), 8, Vector3d.Zero, 4);
+                var test = CameraRig.Place(new OrbitFormation(), 20, Vector3d.Zero, 4);
+                preview.SetPlan(train, null, test, 40, 1, Vector3d.Zero, new Vector3d(1, 1, 1), 4);
+
+                Assert.That(preview.Selected, Is.Null);
+                Assert.That(preview.IsVisible(PreviewSplit.Test), Is.True);
+                preview.SetVisible(PreviewSplit.Test, false);
+                Assert.That(preview.IsVisible(PreviewSplit.Test), Is.False);
+                Assert.That(preview.IsVisible(PreviewSplit.Train), Is.True);
+            }
+        }
+
+        [Test]
+        public void AnInvalidFieldOfViewClearsThePreviewInsteadOfThrowing()
+        {
+            using (var preview = new RigPreview())
+            {
+                var train = CameraRig.Place(new HaloFormation(), 4, Vector3d.Zero, 4);
+                Assert.That(() => preview.SetPlan(train, null, null, 0, 1, Vector3d.Zero, Vector3d.Zero, 4), Throws.Nothing);
+                Assert.That(preview.Selected, Is.Null);
+            }
+        }
+    }
+}
