@@ -164,8 +164,10 @@ namespace NerfDatasetCreator
                 }
             }
 
-            foreach (var pair in frame.ExtraFiles)
+            foreach (var key in TransformsReader.ExtraFileKeys)
             {
+                if (!frame.ExtraFiles.TryGetValue(key, out var value)) continue;
+                var pair = new KeyValuePair<string, string>(key, value);
                 var expected = ExpectedFormat(pair.Key);
                 var path = Resolve(folder, pair.Value);
                 if (path == null)

@@ -21,6 +21,7 @@ namespace NerfDatasetCreator
         {
             if (double.IsNaN(value) || double.IsInfinity(value))
                 throw new ArgumentException("A dataset file cannot hold " + value.ToString(CultureInfo.InvariantCulture) + ": it is not valid JSON.", nameof(value));
+            if (value == 0) return "0.0"; // also −0, whose sign means nothing in a pose and only puzzles readers
             var text = value.ToString("R", CultureInfo.InvariantCulture);
             if (double.Parse(text, NumberStyles.Float, CultureInfo.InvariantCulture) != value)
                 text = value.ToString("G17", CultureInfo.InvariantCulture);

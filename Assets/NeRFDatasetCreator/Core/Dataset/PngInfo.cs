@@ -98,12 +98,12 @@ namespace NerfDatasetCreator
                 var type = "" + (char)chunk[4] + (char)chunk[5] + (char)chunk[6] + (char)chunk[7];
                 if (chunkLength > int.MaxValue) throw new InvalidDataException("has a corrupt chunk length in chunk '" + type + "'.");
                 if (type == "IDAT") sawData = true;
+                if (!Skip(stream, chunkLength + 4)) throw new InvalidDataException("is truncated: it ends inside the '" + type + "' chunk.");
                 if (type == "IEND")
                 {
                     if (!sawData) throw new InvalidDataException("has no image data (IDAT chunk).");
                     return info;
                 }
-                if (!Skip(stream, chunkLength + 4)) throw new InvalidDataException("is truncated: it ends inside the '" + type + "' chunk.");
             }
         }
 
