@@ -28,9 +28,11 @@ namespace NerfDatasetCreator
         {
             var sb = new StringBuilder();
             sb.Append(Folder).Append(": ");
-            sb.Append(string.Join(", ", new[] { "train", "val", "test" }.Where(FrameCounts.ContainsKey)
-                .Select(s => s + " " + FrameCounts[s].ToString(CultureInfo.InvariantCulture))));
-            sb.Append(" frames; ").Append(ImagesChecked.ToString(CultureInfo.InvariantCulture)).Append(" images");
+            if (FrameCounts.Count == 0) sb.Append("no transforms file read; ");
+            else
+                sb.Append(string.Join(", ", new[] { "train", "val", "test" }.Where(FrameCounts.ContainsKey)
+                    .Select(s => s + " " + FrameCounts[s].ToString(CultureInfo.InvariantCulture)))).Append(" frames; ");
+            sb.Append(ImagesChecked.ToString(CultureInfo.InvariantCulture)).Append(" images");
             if (ImageWidth.HasValue) sb.Append(" (").Append(ImageWidth.Value.ToString(CultureInfo.InvariantCulture)).Append('×').Append(ImageHeight.Value.ToString(CultureInfo.InvariantCulture)).Append(')');
             sb.Append(", ").Append(ExtraFilesChecked.ToString(CultureInfo.InvariantCulture)).Append(" extra files; ");
             sb.Append(Problems.Count.ToString(CultureInfo.InvariantCulture)).Append(Problems.Count == 1 ? " problem, " : " problems, ");
