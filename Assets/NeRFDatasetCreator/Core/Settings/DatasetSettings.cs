@@ -20,6 +20,9 @@ namespace NerfDatasetCreator
         public const int MaxSupersampling = 4;
         public const int MaxViews = 100000;
 
+        /// <summary>The largest side of the supersampled render (size × supersampling): desktop GPUs' usual texture limit.</summary>
+        public const int MaxRenderSize = 16384;
+
         /// <summary>The resolutions the window offers as presets; any size from 8 to 8192 is allowed.</summary>
         public static readonly int[] SizePresets = { 400, 800, 1600 };
 

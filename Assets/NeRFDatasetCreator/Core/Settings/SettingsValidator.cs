@@ -56,7 +56,13 @@ namespace NerfDatasetCreator
 
             Add(ValidationProblem.OutsideRange("width", settings.Width, DatasetSettings.MinSize, DatasetSettings.MaxSize));
             Add(ValidationProblem.OutsideRange("height", settings.Height, DatasetSettings.MinSize, DatasetSettings.MaxSize));
-            Add(ValidationProblem.OutsideRange("supersampling", settings.Supersampling, DatasetSettings.MinSupersampling, DatasetSettings.MaxSupersampling));
+            var supersampling = ValidationProblem.OutsideRange("supersampling", settings.Supersampling, DatasetSettings.MinSupersampling, DatasetSettings.MaxSupersampling);
+            Add(supersampling);
+            var rendered = Math.Max(settings.Width, settings.Height) * (long)settings.Supersampling;
+            if (supersampling == null && rendered > DatasetSettings.MaxRenderSize && settings.Width <= DatasetSettings.MaxSize && settings.Height <= DatasetSettings.MaxSize)
+                Add(new ValidationProblem("supersampling", settings.Supersampling.ToString(System.Globalization.CultureInfo.InvariantCulture),
+                    "renders " + rendered + " pixels across, beyond the " + DatasetSettings.MaxRenderSize + " a render texture can have on common GPUs.",
+                    "Lower the supersampling or the size so that size × supersampling ≤ " + DatasetSettings.MaxRenderSize + "."));
 
             var background = settings.Background ?? new BackgroundSettings();
             if (!background.Transparent)

@@ -51,6 +51,16 @@ namespace NerfDatasetCreator.Tests
             Assert.That(FieldsOf(new DatasetSettings { Supersampling = k }), Is.EqualTo(new[] { "supersampling" }));
         }
 
+        [TestCase(8192, 2, false)]
+        [TestCase(8192, 3, true)]
+        [TestCase(4096, 4, false)]
+        [TestCase(4097, 4, true)]
+        public void SupersampledRenderMustFitATexture(int size, int k, bool problem)
+        {
+            var fields = FieldsOf(new DatasetSettings { Width = size, Height = 8, Supersampling = k });
+            Assert.That(fields, problem ? Is.EqualTo(new[] { "supersampling" }) : Is.Empty);
+        }
+
         [Test]
         public void DistanceMustBeBeyondTheNearClip()
         {
