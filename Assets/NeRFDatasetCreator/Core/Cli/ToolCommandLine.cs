@@ -1,0 +1,88 @@
+using System;
+using System.Collections.Generic;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Parses <c>nerf-dataset</c>'s arguments. Options take their value as the next argument or after '='
+    /// (<c>--out=dir</c>); option names are case-sensitive like most .NET and POSIX tools.
+    /// </summary>
+    public static class ToolCommandLine
+    {
+        public static ToolInvocation Parse(IReadOnlyList<string> args)
+        {
+            var result = new ToolInvocation();
+            if (args == null || args.Count == 0)
+            {
+                result.Command = ToolInvocation.HelpCommand;
+                result.Errors.Add("no command given.");
+                return result;
+            }
+            var command = args[0];
+            if (command == "-h" || command == "--help" || command == "help")
+            {
+                result.Command = ToolInvocation.HelpCommand;
+                return result;
+            }
+            result.Command = command;
+            var positionals = new List<string>();
+            var options = new Dictionary<string, string>(StringComparer.Ordinal);
+            for (var i = 1; i < args.Count; i++)
+            {
+                var arg = args[i];
+                if (arg == "-h" || arg == "--help")
+                {
+                    result.Command = ToolInvocation.HelpCommand;
+                    return result;
+                }
+                if (arg.StartsWith("--", StringComparison.Ordinal))
+                {
+                    string name, value;
+                    var eq = arg.IndexOf('=');
+                    if (eq > 0)
+                    {
+                        name = arg.Substring(2, eq - 2);
+                        value = arg.Substring(eq + 1);
+                    }
+                    else
+                    {
+                        name = arg.Substring(2);
+                        if (i + 1 >= args.Count || args[i + 1].StartsWith("--", StringComparison.Ordinal))
+                        {
+                            result.Errors.Add("--" + name + " needs a value.");
+                            continue;
+                        }
+                        value = args[++i];
+                    }
+                    if (options.ContainsKey(name)) result.Errors.Add("--" + name + " is given twice.");
+                    options[name] = value;
+                }
+                else positionals.Add(arg);
+            }
+
+            switch (command)
+            {
+                case ToolInvocation.PlanCommand:
+                    foreach (var name in options.Keys)
+                        if (name != "config" && name != "out") result.Errors.Add("plan does not know the option --" + name + ".");
+                    if (positionals.Count > 0) result.Errors.Add("plan takes no positional argument ('" + positionals[0] + "').");
+                    options.TryGetValue("config", out var config);
+                    options.TryGetValue("out", out var output);
+                    if (string.IsNullOrWhiteSpace(config)) result.Errors.Add("plan needs --config <settings.json>.");
+                    if (string.IsNullOrWhiteSpace(output)) result.Errors.Add("plan needs --out <dataset-folder>.");
+                    result.ConfigPath = config;
+                    result.OutputFolder = output;
+                    break;
+                case ToolInvocation.ValidateCommand:
+                    foreach (var name in options.Keys) result.Errors.Add("validate does not know the option --" + name + ".");
+                    if (positionals.Count != 1) result.Errors.Add("validate needs exactly one dataset folder.");
+                    else result.DatasetFolder = positionals[0];
+                    break;
+                default:
+                    result.Errors.Add("unknown command '" + command + "'.");
+                    break;
+            }
+            return result;
+        }
+    }
+}

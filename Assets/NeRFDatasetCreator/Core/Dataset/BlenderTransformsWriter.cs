@@ -1,0 +1,107 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using Newtonsoft.Json;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Writes <c>transforms_&lt;split&gt;.json</c> in nerf_synthetic's shape and key order — <c>camera_angle_x</c>,
+    /// then the keys instant-ngp and nerfstudio read (which the original loaders ignore), then <c>frames</c> of
+    /// <c>file_path</c>, <c>rotation</c>, <c>transform_matrix</c> and the extra-file keys of files that are written.
+    /// 4-space indentation like nerf_synthetic's files; numbers at round-trip precision, invariant culture.
+    /// </summary>
+    public static class BlenderTransformsWriter
+    {
+        /// <summary>Output units per step of a 16-bit depth PNG: millimetres of a metre (one Unity unit).</summary>
+        public const double DepthUnitScale = 0.001;
+
+        /// <summary>instant-ngp's scene-box multiplier; 1 suits a single object at nerf_synthetic's scale.</summary>
+        public const int AabbScale = 1;
+
+        public static string Write(CapturePlan plan, DatasetSplit split) =>
+            Write(plan.Intrinsics, plan.RotationOf(split), plan.ViewsOf(split).ToList());
+
+        public static string Write(CameraIntrinsics intrinsics, double rotation, IReadOnlyList<PlannedView> views)
+        {
+            if (intrinsics == null) throw new ArgumentNullException(nameof(intrinsics));
+            var anyDepthPng = views.Any(v => v.Writes(DatasetFileKind.DepthPng));
+            using (var text = JsonNumbers.CreateText())
+            {
+                using (var w = JsonNumbers.CreateWriter(text, 4))
+                {
+                    w.WriteStartObject();
+                    Number(w, "camera_angle_x", intrinsics.CameraAngleX);
+                    Number(w, "camera_angle_y", intrinsics.CameraAngleY);
+                    Number(w, "fl_x", intrinsics.FlX);
+                    Number(w, "fl_y", intrinsics.FlY);
+                    Number(w, "cx", intrinsics.Cx);
+                    Number(w, "cy", intrinsics.Cy);
+                    w.WritePropertyName("w"); w.WriteValue(intrinsics.Width);
+                    w.WritePropertyName("h"); w.WriteValue(intrinsics.Height);
+                    w.WritePropertyName("aabb_scale"); w.WriteValue(AabbScale);
+                    if (anyDepthPng)
+                    {
+                        Number(w, "integer_depth_scale", DepthUnitScale);
+                        Number(w, "depth_unit_scale_factor", DepthUnitScale);
+                    }
+                    w.WritePropertyName("frames");
+                    w.WriteStartArray();
+                    foreach (var v in views) WriteFrame(w, v, rotation);
+                    w.WriteEndArray();
+                    w.WriteEndObject();
+                }
+                return text.ToString() + "\n";
+            }
+        }
+
+        static void WriteFrame(JsonWriter w, PlannedView v, double rotation)
+        {
+            if (!v.TransformMatrix.IsFinite)
+                throw new InvalidParameterException(new[]
+                {
+                    new ValidationProblem(DatasetSplits.Name(v.Split) + "[" + v.Index + "].transform_matrix", v.TransformMatrix.ToString(),
+                        "is not finite; JSON cannot hold it and every loader would fail.", "Check the settings that placed this camera."),
+                });
+            w.WriteStartObject();
+            w.WritePropertyName("file_path"); w.WriteValue(v.FramePath);
+            Number(w, "rotation", rotation);
+            w.WritePropertyName("transform_matrix");
+            WriteMatrix(w, v.TransformMatrix);
+            if (v.Writes(DatasetFileKind.DepthPng))
+            {
+                var depth = DatasetLayout.FrameKeyPath(v.Split, v.Index, DatasetFileKind.DepthPng);
+                w.WritePropertyName("depth_path"); w.WriteValue(depth);
+                w.WritePropertyName("depth_file_path"); w.WriteValue(depth);
+            }
+            if (v.Writes(DatasetFileKind.NormalPng))
+            {
+                w.WritePropertyName("normal_path"); w.WriteValue(DatasetLayout.FrameKeyPath(v.Split, v.Index, DatasetFileKind.NormalPng));
+            }
+            if (v.Writes(DatasetFileKind.MaskPng))
+            {
+                w.WritePropertyName("mask_path"); w.WriteValue(DatasetLayout.FrameKeyPath(v.Split, v.Index, DatasetFileKind.MaskPng));
+            }
+            w.WriteEndObject();
+        }
+
+        /// <summary>A 4×4 matrix as nested rows, <c>transform_matrix[row][column]</c>.</summary>
+        public static void WriteMatrix(JsonWriter w, Matrix4x4d m)
+        {
+            w.WriteStartArray();
+            for (var r = 0; r < 4; r++)
+            {
+                w.WriteStartArray();
+                for (var c = 0; c < 4; c++) JsonNumbers.Write(w, m[r, c]);
+                w.WriteEndArray();
+            }
+            w.WriteEndArray();
+        }
+
+        static void Number(JsonWriter w, string name, double value)
+        {
+            w.WritePropertyName(name);
+            JsonNumbers.Write(w, value);
+        }
+    }
+}

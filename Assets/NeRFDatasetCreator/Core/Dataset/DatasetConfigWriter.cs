@@ -1,0 +1,72 @@
+using System.Globalization;
+using Newtonsoft.Json;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// <c>dataset_config.json</c>: enough to regenerate the dataset — the full settings (the same object a config
+    /// file holds, so it can be used as one), the seed, the resolved distance, the target and how output poses
+    /// relate to the Unity world, the plugin and Unity versions and the UTC date.
+    /// </summary>
+    public static class DatasetConfigWriter
+    {
+        public static string Write(CapturePlan plan, Provenance provenance)
+        {
+            using (var text = JsonNumbers.CreateText())
+            {
+                using (var w = JsonNumbers.CreateWriter(text))
+                {
+                    w.WriteStartObject();
+                    w.WritePropertyName("generator"); w.WriteValue(PluginInfo.Name);
+                    w.WritePropertyName("pluginVersion"); w.WriteValue(PluginInfo.Version);
+                    w.WritePropertyName("unityVersion");
+                    if (string.IsNullOrEmpty(provenance.UnityVersion)) w.WriteNull();
+                    else w.WriteValue(provenance.UnityVersion);
+                    w.WritePropertyName("tool");
+                    if (string.IsNullOrEmpty(provenance.Tool)) w.WriteNull();
+                    else w.WriteValue(provenance.Tool);
+                    w.WritePropertyName("imagesRendered"); w.WriteValue(provenance.ImagesRendered);
+                    w.WritePropertyName("createdUtc");
+                    w.WriteValue(provenance.CreatedUtc.ToString("yyyy-MM-dd'T'HH:mm:ss'Z'", CultureInfo.InvariantCulture));
+                    w.WritePropertyName("seed"); w.WriteValue(plan.Settings.Seed);
+                    w.WritePropertyName("distance"); JsonNumbers.Write(w, plan.Distance);
+                    w.WritePropertyName("target");
+                    w.WriteStartObject();
+                    w.WritePropertyName("unityCentre");
+                    w.WriteStartArray();
+                    JsonNumbers.Write(w, plan.Target.Centre.X); JsonNumbers.Write(w, plan.Target.Centre.Y); JsonNumbers.Write(w, plan.Target.Centre.Z);
+                    w.WriteEndArray();
+                    w.WritePropertyName("boundingRadius");
+                    if (plan.Target.HasBounds) JsonNumbers.Write(w, plan.Target.BoundingRadius);
+                    else w.WriteNull();
+                    w.WriteEndObject();
+                    w.WritePropertyName("outputFrame");
+                    w.WriteValue("Blender world (right-handed, +Z up): output = (x, z, y) of (Unity position - target.unityCentre), scale 1; OpenGL camera axes");
+                    w.WritePropertyName("views");
+                    w.WriteStartObject();
+                    foreach (var split in DatasetSplits.All)
+                    {
+                        w.WritePropertyName(DatasetSplits.Name(split));
+                        w.WriteValue(plan.Settings.Split(split).Count);
+                    }
+                    w.WriteEndObject();
+                    if (provenance.Statistics.Count > 0)
+                    {
+                        w.WritePropertyName("statistics");
+                        w.WriteStartObject();
+                        foreach (var pair in provenance.Statistics)
+                        {
+                            w.WritePropertyName(pair.Key);
+                            JsonNumbers.Write(w, pair.Value);
+                        }
+                        w.WriteEndObject();
+                    }
+                    w.WritePropertyName("settings");
+                    DatasetSettingsJson.WriteObject(w, plan.Settings);
+                    w.WriteEndObject();
+                }
+                return text.ToString() + "\n";
+            }
+        }
+    }
+}

@@ -1,0 +1,19 @@
+namespace NerfDatasetCreator
+{
+    /// <summary>The files a view can produce; encodings are defined in Documentation~/output-format.md.</summary>
+    public enum DatasetFileKind
+    {
+        /// <summary>RGBA 8-bit sRGB PNG, straight alpha, transparent background: <c>r_7.png</c>.</summary>
+        Color,
+        /// <summary>16-bit grey PNG, z-depth in millimetres, 0 = no surface: <c>r_7_depth_0000.png</c>.</summary>
+        DepthPng,
+        /// <summary>Float32 single-channel EXR, z-depth in metres, 0 = no surface: <c>r_7_depth_0000.exr</c>.</summary>
+        DepthExr,
+        /// <summary>8-bit RGB PNG, n·0.5 + 0.5 in the output world frame, background 0: <c>r_7_normal_0000.png</c>.</summary>
+        NormalPng,
+        /// <summary>Float32 RGB EXR, unit normals in the output world frame, background 0: <c>r_7_normal_0000.exr</c>.</summary>
+        NormalExr,
+        /// <summary>8-bit grey PNG, 255 = target, 0 = background (coverage in between): <c>r_7_mask_0000.png</c>.</summary>
+        MaskPng,
+    }
+}

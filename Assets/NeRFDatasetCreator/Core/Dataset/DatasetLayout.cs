@@ -1,0 +1,63 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Names inside a dataset folder, exactly nerf_synthetic's: <c>transforms_&lt;split&gt;.json</c>,
+    /// <c>&lt;split&gt;/r_&lt;i&gt;.png</c> (no zero padding), extras <c>r_&lt;i&gt;_depth_0000.png</c> and
+    /// <c>r_&lt;i&gt;_normal_0000.png</c> (nerf_synthetic's suffix), plus <c>r_&lt;i&gt;_mask_0000.png</c> and
+    /// <c>.exr</c> variants. Relative paths use forward slashes on every OS.
+    /// </summary>
+    public static class DatasetLayout
+    {
+        public const string ConfigFileName = "dataset_config.json";
+        public const string RigPreviewFileName = "rig_preview.ply";
+
+        public static string TransformsFileName(DatasetSplit split) => "transforms_" + DatasetSplits.Name(split) + ".json";
+
+        /// <summary>The view's file stem, <c>r_7</c>.</summary>
+        public static string Stem(int index)
+        {
+            if (index < 0) throw new ArgumentOutOfRangeException(nameof(index), index, "a view index is never negative");
+            return "r_" + index.ToString(CultureInfo.InvariantCulture);
+        }
+
+        /// <summary>The <c>file_path</c> value: <c>./train/r_7</c>, without extension (loaders append ".png").</summary>
+        public static string FramePath(DatasetSplit split, int index) => "./" + DatasetSplits.Name(split) + "/" + Stem(index);
+
+        /// <summary>The file's path relative to the dataset folder, e.g. <c>test/r_7_depth_0000.png</c>.</summary>
+        public static string RelativePath(DatasetSplit split, int index, DatasetFileKind kind) =>
+            DatasetSplits.Name(split) + "/" + Stem(index) + Suffix(kind);
+
+        /// <summary>The file's path as a per-frame key holds it, relative to the transforms file: <c>./test/r_7_depth_0000.png</c>.</summary>
+        public static string FrameKeyPath(DatasetSplit split, int index, DatasetFileKind kind) => "./" + RelativePath(split, index, kind);
+
+        public static string Suffix(DatasetFileKind kind)
+        {
+            switch (kind)
+            {
+                case DatasetFileKind.Color: return ".png";
+                case DatasetFileKind.DepthPng: return "_depth_0000.png";
+                case DatasetFileKind.DepthExr: return "_depth_0000.exr";
+                case DatasetFileKind.NormalPng: return "_normal_0000.png";
+                case DatasetFileKind.NormalExr: return "_normal_0000.exr";
+                case DatasetFileKind.MaskPng: return "_mask_0000.png";
+                default: throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a dataset file kind");
+            }
+        }
+
+        /// <summary>The files every view of a split with these settings produces, colour first.</summary>
+        public static IReadOnlyList<DatasetFileKind> FileKinds(SplitSettings split)
+        {
+            var kinds = new List<DatasetFileKind> { DatasetFileKind.Color };
+            if (ExtraOutputs.HasPng(split.Depth)) kinds.Add(DatasetFileKind.DepthPng);
+            if (ExtraOutputs.HasExr(split.Depth)) kinds.Add(DatasetFileKind.DepthExr);
+            if (ExtraOutputs.HasPng(split.Normal)) kinds.Add(DatasetFileKind.NormalPng);
+            if (ExtraOutputs.HasExr(split.Normal)) kinds.Add(DatasetFileKind.NormalExr);
+            if (split.Mask) kinds.Add(DatasetFileKind.MaskPng);
+            return kinds;
+        }
+    }
+}

@@ -1,0 +1,16 @@
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// The JSON files of a dataset — the three transforms files (always all three, even for an empty split) and
+    /// dataset_config.json. A capture writes them after its images, so a dataset never names an image that is not there.
+    /// </summary>
+    public static class DatasetMetadataFiles
+    {
+        public static void Write(DatasetWriteSession session, CapturePlan plan, Provenance provenance)
+        {
+            foreach (var split in DatasetSplits.All)
+                session.WriteText(DatasetLayout.TransformsFileName(split), BlenderTransformsWriter.Write(plan, split));
+            session.WriteText(DatasetLayout.ConfigFileName, DatasetConfigWriter.Write(plan, provenance));
+        }
+    }
+}

@@ -1,0 +1,269 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Checks a Blender-format dataset folder (ours or nerf_synthetic's) against what the loaders need: the three
+    /// transforms files parse; <c>camera_angle_x</c> is in (0, π) and the same in every split; every referenced
+    /// image exists, is a complete PNG, and all share one size and channel layout (read from the PNG header);
+    /// every matrix is finite, has last row 0 0 0 1 and an orthonormal rotation with |det − 1| &lt; 1e-4; extra
+    /// files named by per-frame keys exist with the documented format. Every problem is listed, one per line.
+    /// </summary>
+    public static class DatasetValidator
+    {
+        public const double RotationTolerance = 1e-4;
+
+        public static DatasetValidationReport Validate(string folder)
+        {
+            var report = new DatasetValidationReport { Folder = folder };
+            if (!Directory.Exists(folder))
+            {
+                report.Problems.Add(new DatasetProblem(folder, -1, null, "the dataset folder does not exist."));
+                return report;
+            }
+            var state = new ImageState { SkipFiles = IsPlanOnly(folder) };
+            if (state.SkipFiles)
+                report.Warnings.Add(new DatasetProblem(DatasetLayout.ConfigFileName, -1, null,
+                    "says the images were not rendered (a plan from `nerf-dataset plan`): image and extra-file checks are skipped."));
+            double? firstAngle = null;
+            string firstAngleFile = null;
+            foreach (var split in DatasetSplits.All)
+            {
+                var file = DatasetLayout.TransformsFileName(split);
+                var path = Path.Combine(folder, file);
+                if (!File.Exists(path))
+                {
+                    report.Problems.Add(new DatasetProblem(file, -1, null,
+                        "is missing; bmild/nerf and nerf-pytorch open all three transforms files (write an empty \"frames\" list for an unused split)."));
+                    continue;
+                }
+                TransformsDocument doc;
+                try
+                {
+                    doc = TransformsReader.ReadFile(path);
+                }
+                catch (SettingsFormatException e)
+                {
+                    report.Problems.Add(new DatasetProblem(file, -1, null, "line " + e.Line + ", column " + e.Column + ": " + e.Detail));
+                    continue;
+                }
+                foreach (var p in doc.Problems) report.Problems.Add(new DatasetProblem(file, -1, null, p));
+                report.FrameCounts[DatasetSplits.Name(split)] = doc.Frames.Count;
+
+                if (doc.CameraAngleX.HasValue)
+                {
+                    var angle = doc.CameraAngleX.Value;
+                    if (!(angle > 0 && angle < Math.PI))
+                        report.Problems.Add(new DatasetProblem(file, -1, null,
+                            "camera_angle_x = " + ValidationProblem.Format(angle) + " is not in (0, π); it is the horizontal field of view in radians."));
+                    else if (firstAngle == null)
+                    {
+                        firstAngle = angle;
+                        firstAngleFile = file;
+                    }
+                    else if (Math.Abs(angle - firstAngle.Value) > 1e-9)
+                        report.Problems.Add(new DatasetProblem(file, -1, null,
+                            "camera_angle_x = " + ValidationProblem.Format(angle) + " differs from " + firstAngleFile + "'s " + ValidationProblem.Format(firstAngle.Value) +
+                            "; bmild/nerf uses the last file's value for every split."));
+                }
+                if (doc.Frames.Count == 0)
+                    report.Warnings.Add(new DatasetProblem(file, -1, null, "has no frames; " + LoadersNeeding(split) + " need frames in this split."));
+                var needsDepthScale = false;
+                foreach (var frame in doc.Frames)
+                {
+                    CheckFrame(folder, file, frame, state, report);
+                    if (frame.ExtraFiles.ContainsKey("depth_path")) needsDepthScale = true;
+                }
+                if (needsDepthScale && !(doc.IntegerDepthScale > 0))
+                    report.Problems.Add(new DatasetProblem(file, -1, null,
+                        "frames have depth_path but integer_depth_scale is " + (doc.IntegerDepthScale.HasValue ? ValidationProblem.Format(doc.IntegerDepthScale.Value) : "missing") +
+                        "; instant-ngp needs it above 0 (0.001 for millimetre PNGs)."));
+            }
+            return report;
+        }
+
+        static string LoadersNeeding(DatasetSplit split)
+        {
+            switch (split)
+            {
+                case DatasetSplit.Train: return "all loaders";
+                case DatasetSplit.Val: return "bmild/nerf, nerf-pytorch and nerfstudio (its default evaluation split)";
+                default: return "bmild/nerf and nerf-pytorch";
+            }
+        }
+
+        /// <summary>True when dataset_config.json marks the folder as a plan without images.</summary>
+        static bool IsPlanOnly(string folder)
+        {
+            var path = Path.Combine(folder, DatasetLayout.ConfigFileName);
+            if (!File.Exists(path)) return false;
+            try
+            {
+                var config = Newtonsoft.Json.Linq.JObject.Parse(File.ReadAllText(path));
+                var rendered = config["imagesRendered"];
+                return rendered != null && rendered.Type == Newtonsoft.Json.Linq.JTokenType.Boolean && !(bool)rendered;
+            }
+            catch (Newtonsoft.Json.JsonException)
+            {
+                return false;
+            }
+        }
+
+        sealed class ImageState
+        {
+            public bool SkipFiles;
+            public PngInfo First;
+            public string FirstPath;
+        }
+
+        static void CheckFrame(string folder, string file, TransformsFrame frame, ImageState state, DatasetValidationReport report)
+        {
+            void Problem(string message) => report.Problems.Add(new DatasetProblem(file, frame.Index, frame.FilePath, message));
+            foreach (var p in frame.Problems) Problem(p);
+
+            if (frame.TransformMatrix.HasValue) CheckMatrix(frame.TransformMatrix.Value, Problem);
+
+            if (frame.FilePath != null && frame.FilePath.EndsWith(".png", StringComparison.OrdinalIgnoreCase))
+                Problem("file_path ends in .png; bmild/nerf, nerf-pytorch, nerfstudio and 3DGS append \".png\" themselves (write it without extension).");
+            if (frame.FilePath != null && frame.FilePath.IndexOf('\\') >= 0)
+                Problem("file_path uses '\\'; use forward slashes, which every OS and loader accepts.");
+            if (state.SkipFiles) return;
+
+            if (frame.FilePath != null)
+            {
+                var relative = frame.FilePath.EndsWith(".png", StringComparison.OrdinalIgnoreCase) ? frame.FilePath : frame.FilePath + ".png";
+                var image = Resolve(folder, relative);
+                if (image == null) Problem("file_path leaves the dataset folder.");
+                else if (!File.Exists(image)) Problem("image " + relative + " is missing.");
+                else
+                {
+                    var info = ReadPng(image, relative, Problem);
+                    if (info != null)
+                    {
+                        report.ImagesChecked++;
+                        if (state.First == null)
+                        {
+                            state.First = info;
+                            state.FirstPath = relative;
+                            report.ImageWidth = info.Width;
+                            report.ImageHeight = info.Height;
+                        }
+                        else
+                        {
+                            if (info.Width != state.First.Width || info.Height != state.First.Height)
+                                Problem("image " + relative + " is " + info.Width + "×" + info.Height + " but " + state.FirstPath + " is " +
+                                        state.First.Width + "×" + state.First.Height + "; loaders stack all images and need one size.");
+                            if (info.ColorType != state.First.ColorType || info.BitDepth != state.First.BitDepth)
+                                Problem("image " + relative + " is " + info.Describe() + " but " + state.FirstPath + " is " + state.First.Describe() +
+                                        "; loaders need one channel layout.");
+                        }
+                    }
+                }
+            }
+
+            foreach (var key in TransformsReader.ExtraFileKeys)
+            {
+                if (!frame.ExtraFiles.TryGetValue(key, out var value)) continue;
+                var pair = new KeyValuePair<string, string>(key, value);
+                var expected = ExpectedFormat(pair.Key);
+                var path = Resolve(folder, pair.Value);
+                if (path == null)
+                {
+                    Problem(pair.Key + " " + pair.Value + " leaves the dataset folder.");
+                    continue;
+                }
+                if (!File.Exists(path))
+                {
+                    Problem(pair.Key + " " + pair.Value + " is missing.");
+                    continue;
+                }
+                if (!pair.Value.EndsWith(".png", StringComparison.OrdinalIgnoreCase))
+                {
+                    Problem(pair.Key + " " + pair.Value + " is not a .png; this plugin's " + pair.Key + " files are " + expected.Describe() + " PNGs.");
+                    continue;
+                }
+                var info = ReadPng(path, pair.Value, Problem);
+                if (info == null) continue;
+                report.ExtraFilesChecked++;
+                if (info.BitDepth != expected.BitDepth || info.ColorType != expected.ColorType)
+                    Problem(pair.Key + " " + pair.Value + " is " + info.Describe() + ", expected " + expected.Describe() + " (Documentation~/output-format.md).");
+                if (state.First != null && (info.Width != state.First.Width || info.Height != state.First.Height))
+                    Problem(pair.Key + " " + pair.Value + " is " + info.Width + "×" + info.Height + ", not the images' " + state.First.Width + "×" + state.First.Height + ".");
+            }
+        }
+
+        sealed class Format
+        {
+            public int BitDepth;
+            public int ColorType;
+            public string Describe() => BitDepth + "-bit " + PngInfo.ColorTypeName(ColorType);
+        }
+
+        static Format ExpectedFormat(string key)
+        {
+            switch (key)
+            {
+                case "depth_path":
+                case "depth_file_path": return new Format { BitDepth = 16, ColorType = PngInfo.ColorTypeGray };
+                case "normal_path": return new Format { BitDepth = 8, ColorType = PngInfo.ColorTypeRgb };
+                default: return new Format { BitDepth = 8, ColorType = PngInfo.ColorTypeGray };
+            }
+        }
+
+        static PngInfo ReadPng(string path, string shown, Action<string> problem)
+        {
+            try
+            {
+                return PngInfo.Read(path);
+            }
+            catch (InvalidDataException e)
+            {
+                problem(shown + " " + e.Message);
+            }
+            catch (IOException e)
+            {
+                problem(shown + " cannot be read: " + e.Message);
+            }
+            catch (UnauthorizedAccessException e)
+            {
+                problem(shown + " cannot be read: " + e.Message);
+            }
+            return null;
+        }
+
+        static void CheckMatrix(Matrix4x4d m, Action<string> problem)
+        {
+            if (!m.IsFinite)
+            {
+                problem("transform_matrix has a NaN or infinite entry.");
+                return;
+            }
+            if (m[3, 0] != 0 || m[3, 1] != 0 || m[3, 2] != 0 || m[3, 3] != 1)
+                problem("transform_matrix's last row is not [0, 0, 0, 1].");
+            var worst = 0.0;
+            for (var a = 0; a < 3; a++)
+                for (var b = 0; b < 3; b++)
+                {
+                    var dot = Vector3d.Dot(m.Column(a), m.Column(b));
+                    worst = Math.Max(worst, Math.Abs(dot - (a == b ? 1 : 0)));
+                }
+            var det = m.Determinant3x3;
+            if (worst >= RotationTolerance)
+                problem("transform_matrix's rotation is not orthonormal (largest error of RᵀR − I: " + ValidationProblem.Format(worst) +
+                        "); it is scaled or sheared, and loaders expect a rigid camera pose.");
+            else if (Math.Abs(det - 1) >= RotationTolerance)
+                problem("transform_matrix's rotation has determinant " + ValidationProblem.Format(det) + ", not +1: it is mirrored (a left-handed pose, e.g. Unity's matrix without the Y/Z swap).");
+        }
+
+        /// <summary>The absolute path of a dataset-relative path such as <c>./train/r_0.png</c>, or null when it leaves the folder.</summary>
+        static string Resolve(string folder, string relative)
+        {
+            var root = Path.GetFullPath(folder).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
+            var full = Path.GetFullPath(Path.Combine(root, relative.Replace('\\', '/').Replace('/', Path.DirectorySeparatorChar)));
+            return full.StartsWith(root + Path.DirectorySeparatorChar, StringComparison.Ordinal) ? full : null;
+        }
+    }
+}

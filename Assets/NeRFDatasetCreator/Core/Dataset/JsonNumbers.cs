@@ -1,0 +1,51 @@
+using System;
+using System.Globalization;
+using System.IO;
+using System.Text;
+using Newtonsoft.Json;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Numbers and JSON text exactly as every file of a dataset writes them: invariant culture, the shortest text
+    /// that reads back to the same double, never NaN or infinity, space indentation, "\n" line ends.
+    /// </summary>
+    public static class JsonNumbers
+    {
+        /// <summary>
+        /// The shortest round-trip text of <paramref name="value"/>, with ".0" on whole numbers and a lowercase
+        /// exponent as Python's json module (which wrote nerf_synthetic) writes them. "R" is checked by parsing back because older runtimes' "R" did not always round-trip;
+        /// "G17" always does.
+        /// </summary>
+        public static string Format(double value)
+        {
+            if (double.IsNaN(value) || double.IsInfinity(value))
+                throw new ArgumentException("A dataset file cannot hold " + value.ToString(CultureInfo.InvariantCulture) + ": it is not valid JSON.", nameof(value));
+            if (value == 0) return "0.0"; // also −0, whose sign means nothing in a pose and only puzzles readers
+            var text = value.ToString("R", CultureInfo.InvariantCulture);
+            if (double.Parse(text, NumberStyles.Float, CultureInfo.InvariantCulture) != value)
+                text = value.ToString("G17", CultureInfo.InvariantCulture);
+            text = text.Replace("E", "e");
+            if (text.IndexOf('.') < 0 && text.IndexOf('e') < 0) text += ".0";
+            return text;
+        }
+
+        public static void Write(JsonWriter writer, double value) => writer.WriteRawValue(Format(value));
+
+        /// <summary>A writer over <paramref name="text"/> with the dataset's formatting.</summary>
+        public static JsonTextWriter CreateWriter(StringWriter text, int indentation = 2)
+        {
+            text.NewLine = "\n";
+            return new JsonTextWriter(text)
+            {
+                Formatting = Formatting.Indented,
+                Indentation = indentation,
+                IndentChar = ' ',
+                Culture = CultureInfo.InvariantCulture,
+                FloatFormatHandling = FloatFormatHandling.String,
+            };
+        }
+
+        public static StringWriter CreateText() => new StringWriter(new StringBuilder(), CultureInfo.InvariantCulture) { NewLine = "\n" };
+    }
+}

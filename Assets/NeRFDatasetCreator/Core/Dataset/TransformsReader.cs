@@ -1,0 +1,154 @@
+using System;
+using System.Globalization;
+using System.IO;
+using Newtonsoft.Json;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Reads Blender-format transforms files — ours, nerf_synthetic's or any other tool's. Malformed JSON throws
+    /// <see cref="SettingsFormatException"/> with line and column; everything else that is odd is collected in the
+    /// document's and frames' <c>Problems</c> so that a validator can list it all.
+    /// </summary>
+    public static class TransformsReader
+    {
+        /// <summary>The per-frame file keys this plugin writes and checks (see Documentation~/output-format.md).</summary>
+        public static readonly string[] ExtraFileKeys = { "depth_path", "depth_file_path", "normal_path", "mask_path" };
+
+        public static TransformsDocument ReadFile(string path) => Read(File.ReadAllText(path), Path.GetFileName(path));
+
+        public static TransformsDocument Read(string text, string sourceName = "transforms")
+        {
+            JToken token;
+            try
+            {
+                // NaN and Infinity are not JSON, but Python's json module writes them; read them so they are reported as values.
+                using (var reader = new JsonTextReader(new StringReader(text ?? "")) { FloatParseHandling = FloatParseHandling.Double })
+                {
+                    token = JToken.ReadFrom(reader, new JsonLoadSettings { LineInfoHandling = LineInfoHandling.Load });
+                    while (reader.Read())
+                        if (reader.TokenType != JsonToken.Comment)
+                            throw new JsonReaderException("Additional text after the JSON object.", reader.Path, reader.LineNumber, reader.LinePosition, null);
+                }
+            }
+            catch (JsonReaderException e)
+            {
+                var cut = e.Message.IndexOf(" Path '", StringComparison.Ordinal);
+                throw new SettingsFormatException(sourceName, e.LineNumber, e.LinePosition, "", "not valid JSON: " + (cut > 0 ? e.Message.Substring(0, cut) : e.Message));
+            }
+
+            var doc = new TransformsDocument();
+            if (!(token is JObject root))
+            {
+                doc.Problems.Add("is not a JSON object { … }.");
+                return doc;
+            }
+            doc.CameraAngleX = Number(root, "camera_angle_x", doc.Problems, required: true);
+            doc.CameraAngleY = Number(root, "camera_angle_y", doc.Problems, required: false);
+            doc.W = Integer(root, "w", doc.Problems);
+            doc.H = Integer(root, "h", doc.Problems);
+            doc.IntegerDepthScale = Number(root, "integer_depth_scale", doc.Problems, required: false);
+            doc.DepthUnitScaleFactor = Number(root, "depth_unit_scale_factor", doc.Problems, required: false);
+
+            var frames = root["frames"];
+            if (frames == null) doc.Problems.Add("has no \"frames\" list.");
+            else if (!(frames is JArray list)) doc.Problems.Add("\"frames\" is not a list.");
+            else
+                for (var i = 0; i < list.Count; i++)
+                    doc.Frames.Add(ReadFrame(list[i], i));
+            return doc;
+        }
+
+        static TransformsFrame ReadFrame(JToken token, int index)
+        {
+            var frame = new TransformsFrame { Index = index };
+            if (!(token is JObject obj))
+            {
+                frame.Problems.Add("is not an object.");
+                return frame;
+            }
+            var path = obj["file_path"];
+            if (path == null) frame.Problems.Add("has no file_path.");
+            else if (path.Type != JTokenType.String) frame.Problems.Add("file_path is not a string.");
+            else frame.FilePath = (string)path;
+            frame.Rotation = Number(obj, "rotation", frame.Problems, required: false);
+            frame.TransformMatrix = Matrix(obj["transform_matrix"], frame.Problems);
+            foreach (var key in ExtraFileKeys)
+            {
+                var value = obj[key];
+                if (value == null) continue;
+                if (value.Type == JTokenType.String) frame.ExtraFiles[key] = (string)value;
+                else frame.Problems.Add(key + " is not a string.");
+            }
+            return frame;
+        }
+
+        static Matrix4x4d? Matrix(JToken token, System.Collections.Generic.List<string> problems)
+        {
+            if (token == null)
+            {
+                problems.Add("has no transform_matrix.");
+                return null;
+            }
+            if (!(token is JArray rows) || rows.Count != 4)
+            {
+                problems.Add("transform_matrix is not a list of 4 rows.");
+                return null;
+            }
+            var m = new double[16];
+            for (var r = 0; r < 4; r++)
+            {
+                if (!(rows[r] is JArray row) || row.Count != 4)
+                {
+                    problems.Add("transform_matrix row " + r + " is not a list of 4 numbers.");
+                    return null;
+                }
+                for (var c = 0; c < 4; c++)
+                {
+                    if (!TryNumber(row[c], out var v))
+                    {
+                        problems.Add("transform_matrix[" + r + "][" + c + "] is not a number (" + row[c].ToString(Formatting.None) + ").");
+                        return null;
+                    }
+                    m[r * 4 + c] = v;
+                }
+            }
+            return Matrix4x4d.FromRowMajor(m);
+        }
+
+        static double? Number(JObject obj, string key, System.Collections.Generic.List<string> problems, bool required)
+        {
+            var token = obj[key];
+            if (token == null)
+            {
+                if (required) problems.Add(key + " is missing.");
+                return null;
+            }
+            if (TryNumber(token, out var value)) return value;
+            problems.Add(key + " is not a number (" + token.ToString(Formatting.None) + ").");
+            return null;
+        }
+
+        static int? Integer(JObject obj, string key, System.Collections.Generic.List<string> problems)
+        {
+            var token = obj[key];
+            if (token == null) return null;
+            if (TryNumber(token, out var value) && value == Math.Floor(value) && value >= int.MinValue && value <= int.MaxValue) return (int)value;
+            problems.Add(key + " is not a whole number (" + token.ToString(Formatting.None) + ").");
+            return null;
+        }
+
+        /// <summary>A JSON number, or the NaN/Infinity tokens Python writes (reported later as not finite).</summary>
+        static bool TryNumber(JToken token, out double value)
+        {
+            value = 0;
+            if (token.Type == JTokenType.Integer || token.Type == JTokenType.Float)
+            {
+                value = Convert.ToDouble(((JValue)token).Value, CultureInfo.InvariantCulture);
+                return true;
+            }
+            return false;
+        }
+    }
+}

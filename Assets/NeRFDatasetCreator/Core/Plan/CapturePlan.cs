@@ -1,0 +1,120 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// The ordered list of views a run captures — train, then val, then test, each by index — built from settings
+    /// alone, so the same settings and seed give the same plan, byte for byte (<see cref="CapturePlanJson"/>).
+    /// Cameras are placed by <see cref="CameraRig.Place"/> around the target's centre; random formations draw from
+    /// <c>SeededRandom.Derive(seed, splitName)</c>. Output poses are recentred on the target at unit scale: the
+    /// target's centre is the output origin and one output unit is one Unity unit.
+    /// </summary>
+    public sealed class CapturePlan
+    {
+        CapturePlan(DatasetSettings settings, PlanTarget target, double distance, CameraIntrinsics intrinsics, IReadOnlyList<PlannedView> views)
+        {
+            Settings = settings;
+            Target = target;
+            Distance = distance;
+            Intrinsics = intrinsics;
+            Views = views;
+        }
+
+        /// <summary>A private copy of the settings the plan was built from.</summary>
+        public DatasetSettings Settings { get; }
+
+        public PlanTarget Target { get; }
+
+        /// <summary>The camera distance actually used (the automatic one when settings ask for it).</summary>
+        public double Distance { get; }
+
+        public CameraIntrinsics Intrinsics { get; }
+
+        public IReadOnlyList<PlannedView> Views { get; }
+
+        public IEnumerable<PlannedView> ViewsOf(DatasetSplit split) => Views.Where(v => v.Split == split);
+
+        /// <summary>nerf_synthetic's <c>rotation</c> key for a split (ignored by every loader): the formation's azimuth step.</summary>
+        public double RotationOf(DatasetSplit split)
+        {
+            var s = Settings.Split(split);
+            return s.Formation.AzimuthStepRadians(s.Count);
+        }
+
+        /// <summary>
+        /// Every problem that stops these settings from being planned for this target: the settings' own problems
+        /// plus, when the target's bounds are known, cameras inside its bounding sphere or clip planes cutting it.
+        /// </summary>
+        public static IReadOnlyList<ValidationProblem> Check(DatasetSettings settings, PlanTarget target)
+        {
+            var problems = new List<ValidationProblem>(SettingsValidator.Validate(settings));
+            if (!target.Centre.IsFinite)
+                problems.Add(new ValidationProblem("target", target.Centre.ToString(), "has a position that is not finite.", "Move the target to a finite position."));
+            if (double.IsNaN(target.BoundingRadius) || double.IsInfinity(target.BoundingRadius) || target.BoundingRadius < 0)
+                problems.Add(new ValidationProblem("target", ValidationProblem.Format(target.BoundingRadius), "has bounds that are not a finite size.", "Check the target's renderers."));
+            if (problems.Count > 0) return problems;
+
+            if (settings.AutoDistance && !target.HasBounds)
+            {
+                problems.Add(new ValidationProblem("distance", "\"auto\"", "needs the target's bounds, which are unknown here.",
+                    "Pick a target with renderers, or give the distance as a number."));
+                return problems;
+            }
+            if (!target.HasBounds) return problems;
+            var distance = ResolveDistance(settings, target);
+            var b = target.BoundingRadius;
+            var near = settings.Camera.NearClip;
+            var far = settings.Camera.FarClip;
+            var shown = ValidationProblem.Format(distance);
+            if (distance <= b)
+                problems.Add(new ValidationProblem("distance", shown,
+                    "puts the cameras inside the target's bounding sphere (radius " + ValidationProblem.Format(b) + ").",
+                    "Use a distance above " + ValidationProblem.Format(b) + ", or \"auto\"."));
+            else if (distance - b <= near)
+                problems.Add(new ValidationProblem("camera.nearClip", ValidationProblem.Format(near),
+                    "would cut the target: its nearest side is " + ValidationProblem.Format(distance - b) + " from the cameras.",
+                    "Lower the near clip below " + ValidationProblem.Format(distance - b) + " or increase the distance."));
+            if (distance + b >= far)
+                problems.Add(new ValidationProblem("camera.farClip", ValidationProblem.Format(far),
+                    "would cut the target: its far side is " + ValidationProblem.Format(distance + b) + " from the cameras.",
+                    "Raise the far clip above " + ValidationProblem.Format(distance + b) + " or decrease the distance."));
+            return problems;
+        }
+
+        /// <summary>The distance the plan uses: the fixed one, or <see cref="AutoDistanceRule"/> on the target's bounds.</summary>
+        public static double ResolveDistance(DatasetSettings settings, PlanTarget target) =>
+            settings.AutoDistance
+                ? AutoDistanceRule.Distance(target.BoundingRadius, settings.Camera.VerticalFovDegrees, settings.Width, settings.Height, settings.AutoDistanceMargin)
+                : settings.Distance;
+
+        /// <summary>Builds the plan, or throws <see cref="InvalidParameterException"/> with every problem of <see cref="Check"/>.</summary>
+        public static CapturePlan Build(DatasetSettings settings, PlanTarget target)
+        {
+            if (settings == null) throw new ArgumentNullException(nameof(settings));
+            var problems = Check(settings, target);
+            if (problems.Count > 0) throw new InvalidParameterException(problems);
+
+            var copy = settings.Clone();
+            var distance = ResolveDistance(copy, target);
+            var views = new List<PlannedView>();
+            foreach (var split in DatasetSplits.All)
+            {
+                var s = copy.Split(split);
+                var splitName = DatasetSplits.Name(split);
+                var formation = s.Formation.ToFormation(copy.Seed, splitName);
+                var poses = CameraRig.Place(formation, s.Count, target.Centre, distance);
+                var kinds = DatasetLayout.FileKinds(s);
+                for (var i = 0; i < poses.Count; i++)
+                {
+                    var pose = poses[i];
+                    var recentred = new UnityPose(pose.Position - target.Centre, pose.Rotation);
+                    var files = kinds.Select(k => new PlannedFile(k, DatasetLayout.RelativePath(split, i, k))).ToList();
+                    views.Add(new PlannedView(split, i, pose, BlenderConvention.CameraToWorld(recentred), files));
+                }
+            }
+            return new CapturePlan(copy, target, distance, copy.Intrinsics(), views);
+        }
+    }
+}

@@ -1,0 +1,98 @@
+using System;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Everything a dataset run needs, shared by the editor window, presets and batch mode, and stored in config
+    /// files by <see cref="DatasetSettingsJson"/>. The defaults mirror nerf_synthetic: 800×800, its field of view,
+    /// distance 4, train 100 on the upper hemisphere (golden-ratio semi-sphere), val 100 seeded-random on the upper
+    /// hemisphere, test 200 on a two-turn orbit.
+    /// </summary>
+    [Serializable]
+    public sealed class DatasetSettings
+    {
+        /// <summary>The config-file schema this code writes; files with other versions are read with a warning.</summary>
+        public const int CurrentSchemaVersion = 1;
+
+        public const int MinSize = 8;
+        public const int MaxSize = 8192;
+        public const int MinSupersampling = 1;
+        public const int MaxSupersampling = 4;
+        public const int MaxViews = 100000;
+
+        /// <summary>The largest side of the supersampled render (size × supersampling): desktop GPUs' usual texture limit.</summary>
+        public const int MaxRenderSize = 16384;
+
+        /// <summary>The resolutions the window offers as presets; any size from 8 to 8192 is allowed.</summary>
+        public static readonly int[] SizePresets = { 400, 800, 1600 };
+
+        /// <summary>The dataset's folder name, also the default output folder's last component.</summary>
+        public string Name = "nerf_dataset";
+
+        /// <summary>Where the dataset folder goes; empty for the default <c>&lt;project&gt;/NeRFDatasets/&lt;Name&gt;</c>.</summary>
+        public string OutputFolder = "";
+
+        /// <summary>The scene (path, e.g. <c>Assets/Scenes/Lego.unity</c>) batch mode opens; empty for the open scene.</summary>
+        public string Scene = "";
+
+        /// <summary>The target's hierarchy path or name in the scene (batch mode); the window uses the object it is given.</summary>
+        public string Target = "";
+
+        public CameraSettings Camera = new CameraSettings();
+
+        /// <summary>Distance from the target's centre to every camera, in Unity units (used unless <see cref="AutoDistance"/>).</summary>
+        public double Distance = 4;
+
+        /// <summary>Pick the distance from the target's bounding sphere and the field of view (see <see cref="AutoDistanceRule"/>).</summary>
+        public bool AutoDistance;
+
+        /// <summary>How much room the bounding sphere gets in the view with an automatic distance (≥ 1).</summary>
+        public double AutoDistanceMargin = AutoDistanceRule.DefaultMargin;
+
+        public SplitSettings Train = new SplitSettings { Count = 100, Formation = new FormationSettings { Kind = FormationKind.SemiSphere } };
+        public SplitSettings Val = new SplitSettings { Count = 100, Formation = new FormationSettings { Kind = FormationKind.Random } };
+        public SplitSettings Test = new SplitSettings { Count = 200, Formation = new FormationSettings { Kind = FormationKind.Orbit } };
+
+        public int Width = 800;
+        public int Height = 800;
+
+        /// <summary>Each output pixel is the mean of k×k rendered pixels (anti-aliasing), k from 1 to 4.</summary>
+        public int Supersampling = 1;
+
+        public BackgroundSettings Background = new BackgroundSettings();
+
+        /// <summary>Seeds every random choice (random formations); the same seed gives the same dataset.</summary>
+        public long Seed;
+
+        public OverwritePolicy Overwrite = OverwritePolicy.Never;
+
+        /// <summary>The loaders the dataset must work in; validation checks the splits each needs.</summary>
+        public TargetLoaders Loaders = TargetLoaders.All;
+
+        public SplitSettings Split(DatasetSplit split)
+        {
+            switch (split)
+            {
+                case DatasetSplit.Train: return Train;
+                case DatasetSplit.Val: return Val;
+                case DatasetSplit.Test: return Test;
+                default: throw new ArgumentOutOfRangeException(nameof(split));
+            }
+        }
+
+        /// <summary>A deep copy, so an edited copy never changes a preset or a running capture's settings.</summary>
+        public DatasetSettings Clone()
+        {
+            var copy = (DatasetSettings)MemberwiseClone();
+            copy.Camera = Camera?.Clone();
+            copy.Train = Train?.Clone();
+            copy.Val = Val?.Clone();
+            copy.Test = Test?.Clone();
+            copy.Background = Background?.Clone();
+            return copy;
+        }
+
+        /// <summary>The pinhole intrinsics of the output images.</summary>
+        public CameraIntrinsics Intrinsics() => CameraIntrinsics.FromVerticalFov(Camera.VerticalFovDegrees, Width, Height);
+    }
+}

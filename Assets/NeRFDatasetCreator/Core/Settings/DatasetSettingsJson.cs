@@ -1,0 +1,367 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using Newtonsoft.Json;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// The config-file form of <see cref="DatasetSettings"/> (see Documentation~/settings.md). Writing is
+    /// deterministic; reading accepts missing keys (defaults), warns about unknown keys and other schema versions,
+    /// and reports malformed JSON or a wrongly typed value with its line and column.
+    /// </summary>
+    public static class DatasetSettingsJson
+    {
+        public static string Write(DatasetSettings settings)
+        {
+            if (settings == null) throw new ArgumentNullException(nameof(settings));
+            using (var text = JsonNumbers.CreateText())
+            {
+                using (var w = JsonNumbers.CreateWriter(text))
+                    WriteObject(w, settings);
+                return text.ToString() + "\n";
+            }
+        }
+
+        /// <summary>Writes the settings as one JSON object into an open writer (also used inside dataset_config.json).</summary>
+        public static void WriteObject(JsonWriter w, DatasetSettings s)
+        {
+            w.WriteStartObject();
+            w.WritePropertyName("schemaVersion"); w.WriteValue(DatasetSettings.CurrentSchemaVersion);
+            w.WritePropertyName("name"); w.WriteValue(s.Name ?? "");
+            w.WritePropertyName("outputFolder"); w.WriteValue(s.OutputFolder ?? "");
+            w.WritePropertyName("scene"); w.WriteValue(s.Scene ?? "");
+            w.WritePropertyName("target"); w.WriteValue(s.Target ?? "");
+            w.WritePropertyName("camera");
+            w.WriteStartObject();
+            Number(w, "verticalFovDegrees", s.Camera.VerticalFovDegrees);
+            Number(w, "nearClip", s.Camera.NearClip);
+            Number(w, "farClip", s.Camera.FarClip);
+            w.WritePropertyName("copyFromCamera"); w.WriteValue(s.Camera.CopyFromCamera ?? "");
+            w.WriteEndObject();
+            if (s.AutoDistance)
+            {
+                w.WritePropertyName("distance");
+                w.WriteValue("auto");
+            }
+            else Number(w, "distance", s.Distance);
+            Number(w, "autoDistanceMargin", s.AutoDistanceMargin);
+            w.WritePropertyName("width"); w.WriteValue(s.Width);
+            w.WritePropertyName("height"); w.WriteValue(s.Height);
+            w.WritePropertyName("supersampling"); w.WriteValue(s.Supersampling);
+            w.WritePropertyName("background"); w.WriteValue(s.Background.ToConfigString());
+            w.WritePropertyName("seed"); w.WriteValue(s.Seed);
+            w.WritePropertyName("overwrite"); w.WriteValue(OverwriteName(s.Overwrite));
+            w.WritePropertyName("loaders");
+            w.WriteStartArray();
+            foreach (var name in TargetLoaderNames.NamesOf(s.Loaders)) w.WriteValue(name);
+            w.WriteEndArray();
+            w.WritePropertyName("splits");
+            w.WriteStartObject();
+            foreach (var split in DatasetSplits.All)
+            {
+                w.WritePropertyName(DatasetSplits.Name(split));
+                WriteSplit(w, s.Split(split));
+            }
+            w.WriteEndObject();
+            w.WriteEndObject();
+        }
+
+        static void WriteSplit(JsonWriter w, SplitSettings split)
+        {
+            w.WriteStartObject();
+            w.WritePropertyName("count"); w.WriteValue(split.Count);
+            w.WritePropertyName("formation");
+            w.WriteStartObject();
+            var f = split.Formation;
+            w.WritePropertyName("kind"); w.WriteValue(FormationKinds.Name(f.Kind));
+            foreach (var name in FormationSettings.ParameterNames(f.Kind))
+            {
+                if (name == "upperHemisphereOnly")
+                {
+                    w.WritePropertyName(name);
+                    w.WriteValue(f.UpperHemisphereOnly);
+                }
+                else Number(w, name, FormationParameter(f, name));
+            }
+            w.WriteEndObject();
+            w.WritePropertyName("depth"); w.WriteValue(ExtraOutputs.Name(split.Depth));
+            w.WritePropertyName("normal"); w.WriteValue(ExtraOutputs.Name(split.Normal));
+            w.WritePropertyName("mask"); w.WriteValue(split.Mask);
+            w.WriteEndObject();
+        }
+
+        static void Number(JsonWriter w, string name, double value)
+        {
+            w.WritePropertyName(name);
+            // A config may hold NaN while being edited; it is written as a string so the file stays JSON and
+            // validation (not the writer) reports it.
+            if (double.IsNaN(value) || double.IsInfinity(value)) w.WriteValue(value.ToString(System.Globalization.CultureInfo.InvariantCulture));
+            else JsonNumbers.Write(w, value);
+        }
+
+        static string OverwriteName(OverwritePolicy policy) => policy == OverwritePolicy.Replace ? "replace" : "never";
+
+        static double FormationParameter(FormationSettings f, string name)
+        {
+            switch (name)
+            {
+                case "elevationDegrees": return f.ElevationDegrees;
+                case "startAzimuthDegrees": return f.StartAzimuthDegrees;
+                case "topElevationDegrees": return f.TopElevationDegrees;
+                case "bottomElevationDegrees": return f.BottomElevationDegrees;
+                case "spiralRatio": return f.SpiralRatio;
+                case "turns": return f.Turns;
+                case "lowElevationDegrees": return f.LowElevationDegrees;
+                case "highElevationDegrees": return f.HighElevationDegrees;
+                default: throw new ArgumentOutOfRangeException(nameof(name), name, "not a numeric formation parameter");
+            }
+        }
+
+        static void SetFormationParameter(FormationSettings f, string name, double value)
+        {
+            switch (name)
+            {
+                case "elevationDegrees": f.ElevationDegrees = value; break;
+                case "startAzimuthDegrees": f.StartAzimuthDegrees = value; break;
+                case "topElevationDegrees": f.TopElevationDegrees = value; break;
+                case "bottomElevationDegrees": f.BottomElevationDegrees = value; break;
+                case "spiralRatio": f.SpiralRatio = value; break;
+                case "turns": f.Turns = value; break;
+                case "lowElevationDegrees": f.LowElevationDegrees = value; break;
+                case "highElevationDegrees": f.HighElevationDegrees = value; break;
+                default: throw new ArgumentOutOfRangeException(nameof(name), name, "not a numeric formation parameter");
+            }
+        }
+
+        public static SettingsReadResult ReadFile(string path) => Read(File.ReadAllText(path), path);
+
+        /// <summary>
+        /// Reads a config. Throws <see cref="SettingsFormatException"/> (with line and column) when the text is not
+        /// JSON or a value has the wrong type; range checks are <see cref="SettingsValidator"/>'s job.
+        /// </summary>
+        public static SettingsReadResult Read(string text, string sourceName = "config")
+        {
+            JObject root;
+            try
+            {
+                var token = JToken.Parse(text ?? "", new JsonLoadSettings
+                {
+                    LineInfoHandling = LineInfoHandling.Load,
+                    DuplicatePropertyNameHandling = DuplicatePropertyNameHandling.Error,
+                    CommentHandling = CommentHandling.Ignore,
+                });
+                root = token as JObject;
+                if (root == null)
+                    throw new SettingsFormatException(sourceName, Line(token), Column(token), "", "the config must be a JSON object { … }, not " + Describe(token) + ".");
+            }
+            catch (JsonReaderException e)
+            {
+                throw new SettingsFormatException(sourceName, e.LineNumber, e.LinePosition, "", "not valid JSON: " + FirstSentence(e.Message));
+            }
+
+            var reader = new Reader(sourceName);
+            var s = new DatasetSettings();
+            reader.Object(root, "", new Dictionary<string, Action<JToken, string>>
+            {
+                ["schemaVersion"] = (t, p) => reader.SchemaVersion(t, p),
+                ["name"] = (t, p) => s.Name = reader.String(t, p),
+                ["outputFolder"] = (t, p) => s.OutputFolder = reader.String(t, p),
+                ["scene"] = (t, p) => s.Scene = reader.String(t, p),
+                ["target"] = (t, p) => s.Target = reader.String(t, p),
+                ["camera"] = (t, p) => reader.Object(t, p, new Dictionary<string, Action<JToken, string>>
+                {
+                    ["verticalFovDegrees"] = (t2, p2) => s.Camera.VerticalFovDegrees = reader.Double(t2, p2),
+                    ["nearClip"] = (t2, p2) => s.Camera.NearClip = reader.Double(t2, p2),
+                    ["farClip"] = (t2, p2) => s.Camera.FarClip = reader.Double(t2, p2),
+                    ["copyFromCamera"] = (t2, p2) => s.Camera.CopyFromCamera = reader.String(t2, p2),
+                }),
+                ["distance"] = (t, p) =>
+                {
+                    if (t.Type == JTokenType.String && string.Equals((string)t, "auto", StringComparison.OrdinalIgnoreCase))
+                        s.AutoDistance = true;
+                    else
+                    {
+                        s.AutoDistance = false;
+                        s.Distance = reader.Double(t, p, "a number of Unity units or \"auto\"");
+                    }
+                },
+                ["autoDistanceMargin"] = (t, p) => s.AutoDistanceMargin = reader.Double(t, p),
+                ["width"] = (t, p) => s.Width = reader.Int(t, p),
+                ["height"] = (t, p) => s.Height = reader.Int(t, p),
+                ["supersampling"] = (t, p) => s.Supersampling = reader.Int(t, p),
+                ["background"] = (t, p) =>
+                {
+                    var background = BackgroundSettings.Parse(reader.String(t, p));
+                    if (background == null) throw reader.Error(t, p, "must be \"transparent\" or a colour \"#rrggbb\", not " + Describe(t) + ".");
+                    s.Background = background;
+                },
+                ["seed"] = (t, p) => s.Seed = reader.Long(t, p),
+                ["overwrite"] = (t, p) =>
+                {
+                    var name = reader.String(t, p);
+                    if (string.Equals(name, "never", StringComparison.OrdinalIgnoreCase)) s.Overwrite = OverwritePolicy.Never;
+                    else if (string.Equals(name, "replace", StringComparison.OrdinalIgnoreCase)) s.Overwrite = OverwritePolicy.Replace;
+                    else throw reader.Error(t, p, "must be \"never\" or \"replace\", not " + Describe(t) + ".");
+                },
+                ["loaders"] = (t, p) =>
+                {
+                    if (t.Type != JTokenType.Array) throw reader.Error(t, p, "must be a list such as [\"nerf\", \"instant-ngp\"], not " + Describe(t) + ".");
+                    var loaders = TargetLoaders.None;
+                    var index = 0;
+                    foreach (var item in (JArray)t)
+                    {
+                        var itemPath = p + "[" + index++ + "]";
+                        if (!TargetLoaderNames.TryParse(reader.String(item, itemPath), out var loader))
+                            throw reader.Error(item, itemPath, "is not a known loader; use one of " + TargetLoaderNames.NameList() + ".");
+                        loaders |= loader;
+                    }
+                    s.Loaders = loaders;
+                },
+                ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
+                    split => DatasetSplits.Name(split),
+                    split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),
+            });
+            return new SettingsReadResult(s, reader.Warnings);
+        }
+
+        static void ReadSplit(Reader reader, JToken token, string path, SplitSettings split)
+        {
+            reader.Object(token, path, new Dictionary<string, Action<JToken, string>>
+            {
+                ["count"] = (t, p) => split.Count = reader.Int(t, p),
+                ["formation"] = (t, p) => ReadFormation(reader, t, p, split.Formation),
+                ["depth"] = (t, p) => split.Depth = reader.Extra(t, p),
+                ["normal"] = (t, p) => split.Normal = reader.Extra(t, p),
+                ["mask"] = (t, p) => split.Mask = reader.Bool(t, p),
+            });
+        }
+
+        static void ReadFormation(Reader reader, JToken token, string path, FormationSettings f)
+        {
+            if (token.Type != JTokenType.Object) throw reader.Error(token, path, "must be an object { \"kind\": … }, not " + Describe(token) + ".");
+            var obj = (JObject)token;
+            var kindToken = obj["kind"];
+            if (kindToken == null) throw reader.Error(token, path + ".kind", "is missing; use one of " + FormationKinds.NameList() + ".");
+            if (!FormationKinds.TryParse(reader.String(kindToken, path + ".kind"), out var kind))
+                throw reader.Error(kindToken, path + ".kind", "is not a known formation; use one of " + FormationKinds.NameList() + ".");
+            f.Kind = kind;
+            var handlers = new Dictionary<string, Action<JToken, string>> { ["kind"] = (t, p) => { } };
+            foreach (var name in FormationSettings.ParameterNames(kind))
+            {
+                var parameter = name;
+                if (parameter == "upperHemisphereOnly") handlers[parameter] = (t, p) => f.UpperHemisphereOnly = reader.Bool(t, p);
+                else handlers[parameter] = (t, p) => SetFormationParameter(f, parameter, reader.Double(t, p));
+            }
+            reader.Object(token, path, handlers, " (the formation \"" + FormationKinds.Name(kind) + "\" does not use it)");
+        }
+
+        static int Line(JToken t) => t is IJsonLineInfo info && info.HasLineInfo() ? info.LineNumber : 0;
+        static int Column(JToken t) => t is IJsonLineInfo info && info.HasLineInfo() ? info.LinePosition : 0;
+
+        static string Describe(JToken t)
+        {
+            switch (t.Type)
+            {
+                case JTokenType.String: return "\"" + (string)t + "\"";
+                case JTokenType.Object: return "an object";
+                case JTokenType.Array: return "a list";
+                case JTokenType.Null: return "null";
+                case JTokenType.Undefined: return "nothing (the value is missing)";
+                default: return t.ToString(Formatting.None);
+            }
+        }
+
+        static string FirstSentence(string message)
+        {
+            // Newtonsoft appends " Path '…', line L, position P."; the caller reports the place itself.
+            var cut = message.IndexOf(" Path '", StringComparison.Ordinal);
+            if (cut < 0) cut = message.IndexOf(", line ", StringComparison.Ordinal);
+            return cut > 0 ? message.Substring(0, cut) : message;
+        }
+
+        /// <summary>Walks a config, typing values and collecting warnings with the place they come from.</summary>
+        sealed class Reader
+        {
+            readonly string _source;
+            public readonly List<ValidationProblem> Warnings = new List<ValidationProblem>();
+
+            public Reader(string source) => _source = source;
+
+            public SettingsFormatException Error(JToken t, string path, string detail) =>
+                new SettingsFormatException(_source, Line(t), Column(t), path, detail);
+
+            string Where(JToken t) => Line(t) > 0 ? " (line " + Line(t) + ", column " + Column(t) + ")" : "";
+
+            public void Object(JToken token, string path, Dictionary<string, Action<JToken, string>> handlers, string unknownNote = "")
+            {
+                if (token.Type != JTokenType.Object) throw Error(token, path, "must be an object { … }, not " + Describe(token) + ".");
+                foreach (var property in ((JObject)token).Properties())
+                {
+                    var childPath = path.Length == 0 ? property.Name : path + "." + property.Name;
+                    if (handlers.TryGetValue(property.Name, out var handler)) handler(property.Value, childPath);
+                    else
+                        Warnings.Add(new ValidationProblem(childPath, Describe(property.Value),
+                            "is not a known setting" + unknownNote + Where(property) + " and is ignored.",
+                            "Remove it or correct its spelling; the known keys here are: " + string.Join(", ", handlers.Keys) + "."));
+                }
+            }
+
+            public void SchemaVersion(JToken t, string path)
+            {
+                var version = Int(t, path);
+                if (version != DatasetSettings.CurrentSchemaVersion)
+                    Warnings.Add(new ValidationProblem(path, version.ToString(System.Globalization.CultureInfo.InvariantCulture),
+                        "differs from the version this plugin writes (" + DatasetSettings.CurrentSchemaVersion + ")" + Where(t) + "; settings it does not know are ignored.",
+                        "Check the values after loading, then save the config again to update it."));
+            }
+
+            public string String(JToken t, string path)
+            {
+                if (t.Type != JTokenType.String) throw Error(t, path, "must be a string in quotes, not " + Describe(t) + ".");
+                return (string)t;
+            }
+
+            public double Double(JToken t, string path, string expected = "a number")
+            {
+                if (t.Type == JTokenType.Float || t.Type == JTokenType.Integer) return (double)t;
+                // Validation, not the reader, reports NaN and infinity, so a file written while a field held one reads back.
+                if (t.Type == JTokenType.String && double.TryParse((string)t, System.Globalization.NumberStyles.Float,
+                        System.Globalization.CultureInfo.InvariantCulture, out var special) && (double.IsNaN(special) || double.IsInfinity(special)))
+                    return special;
+                throw Error(t, path, "must be " + expected + ", not " + Describe(t) + ".");
+            }
+
+            public long Long(JToken t, string path)
+            {
+                if (t.Type != JTokenType.Integer) throw Error(t, path, "must be a whole number, not " + Describe(t) + ".");
+                try { return (long)t; }
+                catch (OverflowException) { throw Error(t, path, "is too large; use a whole number from " + long.MinValue + " to " + long.MaxValue + "."); }
+            }
+
+            public int Int(JToken t, string path)
+            {
+                if (t.Type != JTokenType.Integer) throw Error(t, path, "must be a whole number, not " + Describe(t) + ".");
+                // Newtonsoft holds integers as long, or as BigInteger beyond long's range.
+                var raw = ((JValue)t).Value;
+                if (!(raw is long value) || value > int.MaxValue || value < int.MinValue) throw Error(t, path, "is far too large for this setting.");
+                return (int)value;
+            }
+
+            public bool Bool(JToken t, string path)
+            {
+                if (t.Type != JTokenType.Boolean) throw Error(t, path, "must be true or false, not " + Describe(t) + ".");
+                return (bool)t;
+            }
+
+            public ExtraOutput Extra(JToken t, string path)
+            {
+                if (!ExtraOutputs.TryParse(String(t, path), out var output))
+                    throw Error(t, path, "must be \"none\", \"png\", \"exr\" or \"png+exr\", not " + Describe(t) + ".");
+                return output;
+            }
+        }
+    }
+}

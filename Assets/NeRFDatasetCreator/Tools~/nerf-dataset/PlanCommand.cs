@@ -1,0 +1,71 @@
+using System;
+using System.IO;
+
+namespace NerfDatasetCreator.Tool
+{
+    /// <summary>
+    /// <c>nerf-dataset plan --config f --out d</c>: plans the views of a settings file (target at the origin,
+    /// unknown bounds) and writes the dataset's JSON files and a rig preview PLY, but no images.
+    /// </summary>
+    public static class PlanCommand
+    {
+        public static int Run(string configPath, string outputFolder, TextWriter stdout, TextWriter stderr)
+        {
+            SettingsReadResult read;
+            try
+            {
+                read = DatasetSettingsJson.ReadFile(configPath);
+            }
+            catch (SettingsFormatException e)
+            {
+                stderr.WriteLine("error: " + e.Message);
+                return Program.UsageError;
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                stderr.WriteLine("error: cannot read the config " + configPath + ": " + e.Message);
+                return Program.UsageError;
+            }
+            foreach (var warning in read.Warnings) stderr.WriteLine("warning: " + warning);
+
+            var settings = read.Settings;
+            var problems = CapturePlan.Check(settings, PlanTarget.AtOrigin);
+            if (problems.Count > 0)
+            {
+                foreach (var problem in problems) stderr.WriteLine("error: " + problem);
+                return Program.UsageError;
+            }
+            var plan = CapturePlan.Build(settings, PlanTarget.AtOrigin);
+
+            DatasetWriteSession session;
+            try
+            {
+                session = DatasetWriteSession.Begin(outputFolder, settings.Overwrite);
+            }
+            catch (InvalidParameterException e)
+            {
+                foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
+                return Program.UsageError;
+            }
+
+            try
+            {
+                DatasetMetadataFiles.Write(session, plan, new Provenance(DateTime.UtcNow, null, "nerf-dataset plan", imagesRendered: false));
+                session.WriteText(DatasetLayout.RigPreviewFileName, RigPreviewPly.Write(plan));
+                session.Commit();
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                stderr.WriteLine("error: " + e.Message);
+                stderr.WriteLine(session.DescribeAbandoned());
+                return Program.Failure;
+            }
+
+            stdout.WriteLine("planned " + plan.Settings.Train.Count + " train, " + plan.Settings.Val.Count + " val, " + plan.Settings.Test.Count +
+                             " test views at distance " + ValidationProblem.Format(plan.Distance) + " into " + session.FinalFolder);
+            stdout.WriteLine("wrote transforms_train.json, transforms_val.json, transforms_test.json, " + DatasetLayout.ConfigFileName + ", " +
+                             DatasetLayout.RigPreviewFileName + " (no images: render them with the Unity plugin)");
+            return Program.Success;
+        }
+    }
+}
