@@ -43,6 +43,16 @@ namespace NerfDatasetCreator.Repository.Tests
         }
 
         [Test]
+        public void PluginVersionInCoreMatchesPackageJson()
+        {
+            // dataset_config.json records PluginInfo.Version; it must be the version users install.
+            var source = File.ReadAllText(Path.Combine(RepositoryPaths.PluginFolder, "Core", "Dataset", "PluginInfo.cs"));
+            var match = Regex.Match(source, "Version = \"([^\"]+)\"");
+            Assert.That(match.Success, Is.True, "PluginInfo.Version not found");
+            Assert.That(match.Groups[1].Value, Is.EqualTo((string)Json("package.json")["version"]));
+        }
+
+        [Test]
         public void ProjectOpensInUnity2022_3()
         {
             var version = File.ReadAllText(RepositoryPaths.Combine("ProjectSettings", "ProjectVersion.txt"));

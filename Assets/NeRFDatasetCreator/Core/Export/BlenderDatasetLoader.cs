@@ -13,7 +13,7 @@ namespace NerfDatasetCreator
     /// converters: <c>transforms_{train,val,test}.json</c> (train required), <c>file_path</c> resolved like the
     /// loaders do (<c>+ ".png"</c> when extensionless), W×H from each PNG's IHDR, <c>camera_angle_x</c> → a square-pixel
     /// pinhole, optional <c>cx</c>/<c>cy</c>. Picks up this plugin's extras when present for EVERY frame:
-    /// <c>&lt;image&gt;_depth.png</c> (16-bit grey), <c>&lt;image&gt;_mask.png</c> (8-bit grey), <c>points3d.ply</c>,
+    /// <c>&lt;image&gt;_depth_0000.png</c> (16-bit grey), <c>&lt;image&gt;_mask_0000.png</c> (8-bit grey), <c>points3d.ply</c>,
     /// <c>scene_normalisation</c>. (May later merge with the dataset module's transforms reader.)
     /// </summary>
     public static class BlenderDatasetLoader
@@ -35,7 +35,7 @@ namespace NerfDatasetCreator
             double? angleX = null;
             double? cx = null, cy = null;
             SceneNormalisation normalisation = null;
-            PngHeader size = null;
+            PngInfo size = null;
             string sizeSource = null;
             foreach (var split in Splits)
             {
@@ -73,11 +73,13 @@ namespace NerfDatasetCreator
                     if (image == null) { problems.Add(new ValidationProblem(field + ".file_path", filePath, "names no image (looked for the path and the path + \".png\").", "Copy the images next to the split files.")); continue; }
                     if (!TryMatrix(frame["transform_matrix"], out var c2w, out var reason)) { problems.Add(new ValidationProblem(field + ".transform_matrix", frame["transform_matrix"]?.ToString(Formatting.None) ?? "missing", reason, "Write a 4×4 rigid camera-to-world matrix.")); continue; }
 
-                    var header = PngHeader.Read(Path.Combine(root, image));
+                    var header = ReadPng(root, image);
                     if (size == null) { size = header; sizeSource = image; }
                     else if (header.Width != size.Width || header.Height != size.Height)
                         problems.Add(new ValidationProblem(field + ".file_path", image, $"is {header.Width}×{header.Height} but {sizeSource} is {size.Width}×{size.Height}.", "Every loader needs one image size for the whole dataset."));
-                    frames.Add(new ExportFrame(split, image, c2w, Extra(root, image, "_depth.png", 16, size), Extra(root, image, "_mask.png", 8, size)));
+                    frames.Add(new ExportFrame(split, image, c2w,
+                        Extra(root, image, DatasetLayout.Suffix(DatasetFileKind.DepthPng), 16, size),
+                        Extra(root, image, DatasetLayout.Suffix(DatasetFileKind.MaskPng), 8, size)));
                 }
             }
             InvalidParameterException.ThrowIfAny(problems.ToArray());
@@ -102,13 +104,27 @@ namespace NerfDatasetCreator
             return File.Exists(Path.Combine(root, relative + ".png")) ? relative + ".png" : null;
         }
 
+        /// <summary>The PNG header of a dataset image; a file that is not a whole PNG is a problem naming it.</summary>
+        static PngInfo ReadPng(string root, string relativePath)
+        {
+            try
+            {
+                return PngInfo.Read(Path.Combine(root, relativePath));
+            }
+            catch (InvalidDataException e)
+            {
+                Throw(new ValidationProblem("file_path", relativePath, e.Message, "Regenerate or replace the image."));
+                return null;
+            }
+        }
+
         /// <summary>A companion image (depth, mask) of the plugin's layout if it exists with the expected format.</summary>
-        static string Extra(string root, string image, string suffix, int bitDepth, PngHeader size)
+        static string Extra(string root, string image, string suffix, int bitDepth, PngInfo size)
         {
             var stem = image.Substring(0, image.Length - Path.GetExtension(image).Length);
             var candidate = stem + suffix;
             if (!File.Exists(Path.Combine(root, candidate))) return null;
-            var h = PngHeader.Read(Path.Combine(root, candidate));
+            var h = ReadPng(root, candidate);
             return h.ColorType == 0 && h.BitDepth == bitDepth && h.Width == size.Width && h.Height == size.Height ? candidate : null;
         }
 

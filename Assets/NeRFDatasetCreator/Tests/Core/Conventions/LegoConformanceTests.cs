@@ -13,7 +13,7 @@ namespace NerfDatasetCreator.Tests
     [TestFixture]
     public class LegoConformanceTests
     {
-        static JObject Lego => JObject.Parse(File.ReadAllText(Fixtures.LegoTrainTransforms));
+        static JObject Lego => JObject.Parse(File.ReadAllText(Fixtures.LegoTrainPath));
 
         static IEnumerable<TestCaseData> Frames()
         {

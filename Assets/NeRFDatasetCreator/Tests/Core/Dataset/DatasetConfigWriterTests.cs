@@ -60,12 +60,5 @@ namespace NerfDatasetCreator.Tests
             var expected = local.ToUniversalTime().ToString("yyyy-MM-dd'T'HH:mm:ss'Z'", System.Globalization.CultureInfo.InvariantCulture);
             Assert.That(config["createdUtc"].ToString(Formatting.None), Is.EqualTo("\"" + expected + "\""));
         }
-
-        [Test]
-        public void PluginVersionMatchesPackageJson()
-        {
-            var package = JObject.Parse(File.ReadAllText(Fixtures.PackageJsonPath));
-            Assert.That(PluginInfo.Version, Is.EqualTo((string)package["version"]));
-        }
     }
 }

@@ -234,19 +234,19 @@ namespace NerfDatasetCreator.Tests
         public void Load_PicksUpDepthOnlyWhenEveryFrameHasA16BitGreyPng()
         {
             foreach (var image in _lego.Poses.Keys)
-                TestPng.Write(Path.Combine(_lego.Root, image.Replace(".png", "_depth.png")), 800, 800, 16, TestPng.ColorTypeGrey);
+                TestPng.Write(Path.Combine(_lego.Root, image.Replace(".png", "_depth_0000.png")), 800, 800, 16, PngInfo.ColorTypeGray);
 
             var scene = BlenderDatasetLoader.Load(_lego.Root);
             Assert.That(scene.HasDepth, Is.True);
 
             var ns = NerfstudioWriter.Build(scene, _lego.Root);
             Assert.That((double)ns["depth_unit_scale_factor"], Is.EqualTo(0.001));
-            Assert.That((string)ns["frames"][0]["depth_file_path"], Is.EqualTo(((string)ns["frames"][0]["file_path"]).Replace(".png", "_depth.png")));
+            Assert.That((string)ns["frames"][0]["depth_file_path"], Is.EqualTo(((string)ns["frames"][0]["file_path"]).Replace(".png", "_depth_0000.png")));
             var ngp = NgpWriter.Build(scene, Path.Combine(_lego.Root, "ngp"));
             Assert.That((double)ngp["integer_depth_scale"], Is.EqualTo(0.001));
-            Assert.That((string)ngp["frames"][0]["depth_path"], Does.StartWith("../train/").And.EndWith("_depth.png"));
+            Assert.That((string)ngp["frames"][0]["depth_path"], Does.StartWith("../train/").And.EndWith("_depth_0000.png"));
 
-            File.Delete(Path.Combine(_lego.Root, "test", "r_0_depth.png"));
+            File.Delete(Path.Combine(_lego.Root, "test", "r_0_depth_0000.png"));
             var warnings = new List<ValidationProblem>();
             Assert.That(BlenderDatasetLoader.Load(_lego.Root, warnings).HasDepth, Is.False);
             Assert.That(warnings.Select(w => w.Field), Does.Contain("depth"));

@@ -20,14 +20,14 @@ namespace NerfDatasetCreator.Tests
         {
             Root = Path.Combine(Path.GetTempPath(), "nerf-export-tests-" + Guid.NewGuid().ToString("N"));
             Directory.CreateDirectory(Root);
-            var train = JObject.Parse(File.ReadAllText(Fixtures.LegoTrainTransforms));
+            var train = JObject.Parse(File.ReadAllText(Fixtures.LegoTrainPath));
             CameraAngleX = (double)train["camera_angle_x"];
             var trainFrames = (JArray)train["frames"];
             File.WriteAllText(Path.Combine(Root, "transforms_train.json"), train.ToString());
             WriteSplit("val", trainFrames, 0, ValCount);
             WriteSplit("test", trainFrames, ValCount, TestCount);
 
-            var png = TestPng.Bytes(Size, Size, 8, TestPng.ColorTypeRgba);
+            var png = TestPng.Encode(Size, Size, 8, PngInfo.ColorTypeRgba);
             Poses = new Dictionary<string, double[][]>();
             foreach (var split in new[] { "train", "val", "test" })
             {

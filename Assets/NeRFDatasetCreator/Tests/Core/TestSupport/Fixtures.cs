@@ -4,24 +4,21 @@ using System.Runtime.CompilerServices;
 namespace NerfDatasetCreator.Tests
 {
     /// <summary>
-    /// Finds fixture files next to the test sources. [CallerFilePath] is the path the compiler was given for this
-    /// file — relative to the project folder (Unity's working directory) in Unity, absolute under dotnet — so this
+    /// Files in Tests/Core/Fixtures, found from this source file's path. [CallerFilePath] is the path the compiler was
+    /// given — relative to the project folder (Unity's working directory) in Unity, absolute under dotnet — so this
     /// works in both without TestContext.CurrentContext.TestDirectory.
     /// </summary>
     static class Fixtures
     {
-        public static string Path(string relativePath)
-        {
-            var testSupport = System.IO.Path.GetDirectoryName(ThisFile());
-            var testsCore = Directory.GetParent(testSupport).FullName;
-            var path = System.IO.Path.Combine(testsCore, "Fixtures", relativePath);
-            if (!File.Exists(path))
-                throw new FileNotFoundException("Test fixture not found (looked next to the test sources): " + path, path);
-            return path;
-        }
+        static string TestSupportFolder([CallerFilePath] string path = "") => Path.GetDirectoryName(path);
 
-        public static string LegoTrainTransforms => Path(System.IO.Path.Combine("nerf_synthetic_lego", "transforms_train.json"));
+        public static string Folder => Path.Combine(Path.GetDirectoryName(TestSupportFolder()), "Fixtures");
 
-        static string ThisFile([CallerFilePath] string path = "") => path;
+        public static string PathOf(params string[] parts) => Path.Combine(Folder, Path.Combine(parts));
+
+        public static string Text(params string[] parts) => File.ReadAllText(PathOf(parts));
+
+        /// <summary>nerf_synthetic's lego transforms_train.json (the NeRF authors' data, CC BY 3.0).</summary>
+        public static string LegoTrainPath => PathOf("nerf_synthetic_lego", "transforms_train.json");
     }
 }
