@@ -1,0 +1,38 @@
+using System;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// The rule for depth and normals, which must never be averaged across an edge: each output pixel takes ONE
+    /// rendered sample of its k×k block — the one nearest the block's centre that hit a surface; if none did, the
+    /// pixel is background. For odd k that is the centre sample whenever it hit; for even k the four central
+    /// samples tie and are tried in the order lower-left, lower-right, upper-left, upper-right.
+    /// </summary>
+    internal static class PointSampling
+    {
+        /// <summary>Fills <paramref name="offsets"/> (length k²) with pixel offsets from a block's lower-left sample, in trial order.</summary>
+        internal static void Order(int k, int rowPixels, Span<int> offsets)
+        {
+            Span<int> distance = stackalloc int[k * k];
+            double centre = (k - 1) / 2.0;
+            int n = 0;
+            for (int dy = 0; dy < k; dy++)
+            for (int dx = 0; dx < k; dx++)
+            {
+                // Squared distance doubled twice stays an integer for half-integer centres.
+                int d = (int)Math.Round(4 * ((dx - centre) * (dx - centre) + (dy - centre) * (dy - centre)));
+                int offset = dy * rowPixels + dx;
+                int i = n++;
+                // Insertion sort keeps row-major order among equal distances (stable).
+                while (i > 0 && distance[i - 1] > d)
+                {
+                    distance[i] = distance[i - 1];
+                    offsets[i] = offsets[i - 1];
+                    i--;
+                }
+                distance[i] = d;
+                offsets[i] = offset;
+            }
+        }
+    }
+}
