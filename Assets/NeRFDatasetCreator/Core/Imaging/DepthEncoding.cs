@@ -78,7 +78,10 @@ namespace NerfDatasetCreator
 
         static float Sample(float[] depth, int first, Span<int> order)
         {
-            for (int i = 0; i < order.Length; i++)
+            // The first candidate is a hit for every pixel inside the silhouette: test it before entering the loop.
+            float centre = depth[first + order[0]];
+            if (centre > 0) return centre;
+            for (int i = 1; i < order.Length; i++)
             {
                 float z = depth[first + order[i]];
                 if (z > 0) return z;

@@ -21,6 +21,7 @@ namespace NerfDatasetCreator
             float[] normals = frame.Normals;
             Span<int> order = stackalloc int[k * k];
             PointSampling.Order(k, width, order);
+            int samples = k * k;
 
             for (int oy = 0; oy < oh; oy++)
             {
@@ -30,7 +31,7 @@ namespace NerfDatasetCreator
                 {
                     int first = blockRow * width + ox * k;
                     int hit = -1;
-                    for (int i = 0; i < order.Length; i++)
+                    for (int i = 0; i < samples; i++)
                     {
                         int n = (first + order[i]) * stride;
                         float x = normals[n], y = normals[n + 1], z = normals[n + 2];

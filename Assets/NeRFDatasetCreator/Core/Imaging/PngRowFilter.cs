@@ -42,15 +42,21 @@ namespace NerfDatasetCreator
         internal static int ChooseMinimumSum(byte[] src, int s, byte[] prev, int p, int n, int bpp)
         {
             long none = 0, sub = 0, up = 0, avg = 0, paeth = 0;
-            for (int i = 0; i < n; i++)
+            int head = bpp < n ? bpp : n;
+            for (int i = 0; i < head; i++)
             {
+                // No left neighbour: Sub = None, and Paeth predicts b (= Up).
                 int x = src[s + i], b = prev[p + i];
-                int a = 0, c = 0;
-                if (i >= bpp)
-                {
-                    a = src[s + i - bpp];
-                    c = prev[p + i - bpp];
-                }
+                int rawMagnitude = Magnitude(x), upMagnitude = Magnitude(x - b);
+                none += rawMagnitude;
+                sub += rawMagnitude;
+                up += upMagnitude;
+                avg += Magnitude(x - (b >> 1));
+                paeth += upMagnitude;
+            }
+            for (int i = head; i < n; i++)
+            {
+                int x = src[s + i], a = src[s + i - bpp], b = prev[p + i], c = prev[p + i - bpp];
                 none += Magnitude(x);
                 sub += Magnitude(x - a);
                 up += Magnitude(x - b);
@@ -66,21 +72,30 @@ namespace NerfDatasetCreator
             return best;
         }
 
-        // |residual| with the residual read as a signed byte: 0…128.
+        // |residual| with the residual read as a signed byte (0…128), without a branch: residuals are noise, so a
+        // branch on their sign would be mispredicted half the time.
         static int Magnitude(int residual)
         {
-            int r = residual & 0xFF;
-            return r < 128 ? r : 256 - r;
+            int r = (sbyte)residual;
+            int sign = r >> 31;
+            return (r ^ sign) - sign;
         }
 
+        /// <summary>PNG spec §9.4 with p = a + b − c expanded: |p − a| = |b − c|, |p − b| = |a − c|, |p − c| = |(b − c) + (a − c)|.</summary>
         internal static int Paeth(int a, int b, int c)
         {
             int pa = b - c, pb = a - c, pc = pa + pb;
-            if (pa < 0) pa = -pa;
-            if (pb < 0) pb = -pb;
-            if (pc < 0) pc = -pc;
-            if (pa <= pb && pa <= pc) return a;
-            return pb <= pc ? b : c;
+            pa = Abs(pa);
+            pb = Abs(pb);
+            pc = Abs(pc);
+            int bOrC = pb <= pc ? b : c;
+            return pa <= pb && pa <= pc ? a : bOrC;
+        }
+
+        static int Abs(int v)
+        {
+            int sign = v >> 31;
+            return (v ^ sign) - sign;
         }
     }
 }

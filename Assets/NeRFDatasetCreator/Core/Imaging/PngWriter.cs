@@ -15,11 +15,18 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class PngWriter
     {
-        /// <summary>The compression used when none is given; chosen by measurement (see Documentation~/pixels.md).</summary>
+        /// <summary>
+        /// The compression used when none is given. Optimal (zlib level 6) halves the files of Fastest on render-like
+        /// images; it is also the only level Mono's DeflateStream implements (it ignores CompressionLevel).
+        /// </summary>
         public const PngCompression DefaultCompression = PngCompression.Optimal;
 
-        /// <summary>The row filter used when none is given; chosen by measurement (see Documentation~/pixels.md).</summary>
-        public const PngFilter DefaultFilter = PngFilter.Adaptive;
+        /// <summary>
+        /// The row filter used when none is given. Measured on render-like RGBA and 16-bit depth images (see
+        /// Documentation~/pixels.md): Sub gave the smallest or within 2 % of the smallest file of all six choices,
+        /// and it is the cheapest filter after None — Adaptive cost 1.5× the time for no smaller files.
+        /// </summary>
+        public const PngFilter DefaultFilter = PngFilter.Sub;
 
         static readonly byte[] Signature = { 137, 80, 78, 71, 13, 10, 26, 10 };
 

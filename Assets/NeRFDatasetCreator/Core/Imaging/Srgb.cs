@@ -14,7 +14,8 @@ namespace NerfDatasetCreator
 
         // Immutable after the static constructor, so every thread may read them.
         static readonly float[] DecodeTable = new float[256];
-        static readonly byte[] EncodeTable = new byte[EncodeBuckets];
+        // One entry more than buckets so that exactly 1.0 indexes it (255) without a test.
+        static readonly byte[] EncodeTable = new byte[EncodeBuckets + 1];
 
         // Threshold[b] is the smallest linear value that encodes to at least b; Threshold[256] = +infinity so that
         // the correction step needs no bounds test.
@@ -26,7 +27,7 @@ namespace NerfDatasetCreator
             Threshold[0] = float.NegativeInfinity;
             for (int b = 1; b < 256; b++) Threshold[b] = (float)DecodeExact((b - 0.5) / 255.0);
             Threshold[256] = float.PositiveInfinity;
-            for (int i = 0; i < EncodeBuckets; i++) EncodeTable[i] = EncodeByteExact(i / (double)EncodeBuckets);
+            for (int i = 0; i <= EncodeBuckets; i++) EncodeTable[i] = EncodeByteExact(i / (double)EncodeBuckets);
         }
 
         /// <summary>The standard decode: c/12.92 for c ≤ 0.04045, else ((c + 0.055)/1.055)^2.4.</summary>
@@ -57,6 +58,13 @@ namespace NerfDatasetCreator
         {
             if (!(linear > 0)) return 0;
             if (linear >= 1) return 255;
+            int b = EncodeTable[(int)(linear * EncodeBuckets)];
+            return linear >= Threshold[b + 1] ? (byte)(b + 1) : (byte)b;
+        }
+
+        /// <summary>Like <see cref="Encode"/> for a value already known to be in [0, 1] (no range tests).</summary>
+        internal static byte EncodeUnit(float linear)
+        {
             int b = EncodeTable[(int)(linear * EncodeBuckets)];
             return linear >= Threshold[b + 1] ? (byte)(b + 1) : (byte)b;
         }

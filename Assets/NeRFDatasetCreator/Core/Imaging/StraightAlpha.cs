@@ -11,25 +11,27 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class StraightAlpha
     {
-        /// <summary>Writes OutputWidth×OutputHeight×4 bytes (R G B A) on a transparent background.</summary>
-        public static void Resolve(RawFrame frame, byte[] rgba) => Resolve(frame, rgba, Background.Transparent);
-
         /// <summary>
-        /// Writes OutputWidth×OutputHeight×4 bytes (R G B A). With a solid <paramref name="background"/> each pixel is
-        /// surface·a + background·(1 − a) in linear light and alpha is 255; otherwise alpha = round(255·a) and a pixel
-        /// with alpha 0 is (0,0,0,0).
+        /// Writes OutputWidth×OutputHeight×4 bytes (R G B A) into <paramref name="rgba"/>. Transparent background
+        /// (the default): alpha = round(255·coverage), and a pixel with alpha 0 is (0,0,0,0). Solid background: each
+        /// pixel is surface·coverage + background·(1 − coverage) in linear light and alpha is 255. When
+        /// <paramref name="mask"/> is given, the mask image (<see cref="MaskEncoding"/>) is written in the same pass,
+        /// which is cheaper than a second pass over the mask readback.
         /// </summary>
-        public static void Resolve(RawFrame frame, byte[] rgba, Background background)
+        public static void Resolve(RawFrame frame, byte[] rgba, Background background = default, byte[] mask = null)
         {
             frame.Require(color: true, mask: true, depth: false, normals: false);
             int ow = frame.OutputWidth, oh = frame.OutputHeight;
             RawFrame.RequireOutput("rgba", rgba, (long)ow * oh * 4, "bytes (4 per output pixel)");
+            if (mask != null) RawFrame.RequireOutput("mask", mask, (long)ow * oh, "bytes (1 per output pixel)");
 
             int k = frame.Supersampling, kk = k * k, width = frame.Width, stride = frame.MaskBytesPerPixel;
-            byte[] mask = frame.Mask;
+            byte[] coverageBytes = frame.Mask;
             byte[] colorBytes = frame.ColorSrgb;
             float[] colorFloats = frame.ColorLinear;
             float[] decode = Srgb.DecodeLookup;
+            int fullCoverage = 255 * kk;
+            float inverseSamples = 1f / kk;
 
             for (int oy = 0; oy < oh; oy++)
             {
@@ -38,12 +40,22 @@ namespace NerfDatasetCreator
                 for (int ox = 0; ox < ow; ox++, o += 4)
                 {
                     int first = blockRow * width + ox * k;
-                    int coverage = 0;
-                    for (int dy = 0; dy < k; dy++)
+                    int coverage;
+                    if (k == 2)
                     {
-                        int p = (first + dy * width) * stride;
-                        for (int dx = 0; dx < k; dx++, p += stride) coverage += mask[p];
+                        int m = first * stride, up = width * stride;
+                        coverage = coverageBytes[m] + coverageBytes[m + stride] + coverageBytes[m + up] + coverageBytes[m + up + stride];
                     }
+                    else
+                    {
+                        coverage = 0;
+                        for (int dy = 0; dy < k; dy++)
+                        {
+                            int m = (first + dy * width) * stride;
+                            for (int dx = 0; dx < k; dx++, m += stride) coverage += coverageBytes[m];
+                        }
+                    }
+                    if (mask != null) mask[o >> 2] = MaskEncoding.AlphaOf(coverage, kk);
 
                     if (coverage == 0)
                     {
@@ -51,22 +63,36 @@ namespace NerfDatasetCreator
                         continue;
                     }
 
-                    // Sum of linear colour over the block (premultiplied by coverage, since uncovered samples are black).
+                    // Sum of linear colour over the block: coverage × surface colour, since uncovered samples are black.
                     float r = 0, g = 0, b = 0;
-                    for (int dy = 0; dy < k; dy++)
+                    if (colorBytes != null)
                     {
-                        int c = (first + dy * width) * 4;
-                        if (colorBytes != null)
+                        if (k == 2)
                         {
-                            for (int dx = 0; dx < k; dx++, c += 4)
-                            {
-                                r += decode[colorBytes[c]];
-                                g += decode[colorBytes[c + 1]];
-                                b += decode[colorBytes[c + 2]];
-                            }
+                            int c = first * 4, up = width * 4;
+                            r = decode[colorBytes[c]] + decode[colorBytes[c + 4]] + decode[colorBytes[c + up]] + decode[colorBytes[c + up + 4]];
+                            g = decode[colorBytes[c + 1]] + decode[colorBytes[c + 5]] + decode[colorBytes[c + up + 1]] + decode[colorBytes[c + up + 5]];
+                            b = decode[colorBytes[c + 2]] + decode[colorBytes[c + 6]] + decode[colorBytes[c + up + 2]] + decode[colorBytes[c + up + 6]];
                         }
                         else
                         {
+                            for (int dy = 0; dy < k; dy++)
+                            {
+                                int c = (first + dy * width) * 4;
+                                for (int dx = 0; dx < k; dx++, c += 4)
+                                {
+                                    r += decode[colorBytes[c]];
+                                    g += decode[colorBytes[c + 1]];
+                                    b += decode[colorBytes[c + 2]];
+                                }
+                            }
+                        }
+                    }
+                    else
+                    {
+                        for (int dy = 0; dy < k; dy++)
+                        {
+                            int c = (first + dy * width) * 4;
                             for (int dx = 0; dx < k; dx++, c += 4)
                             {
                                 r += colorFloats[c];
@@ -77,17 +103,17 @@ namespace NerfDatasetCreator
                     }
 
                     // mean colour / mean coverage = (sum / k²) / (coverage / (255·k²)) = sum · 255 / coverage.
-                    float unpremultiply = 255f / coverage;
+                    float unpremultiply = coverage == fullCoverage ? inverseSamples : 255f / coverage;
                     r = Clamp01(r * unpremultiply);
                     g = Clamp01(g * unpremultiply);
                     b = Clamp01(b * unpremultiply);
 
                     if (background.IsSolid)
                     {
-                        float a = coverage / (255f * kk);
-                        rgba[o] = Srgb.Encode(r * a + background.LinearR * (1 - a));
-                        rgba[o + 1] = Srgb.Encode(g * a + background.LinearG * (1 - a));
-                        rgba[o + 2] = Srgb.Encode(b * a + background.LinearB * (1 - a));
+                        float a = coverage / (float)fullCoverage;
+                        rgba[o] = Srgb.EncodeUnit(r * a + background.LinearR * (1 - a));
+                        rgba[o + 1] = Srgb.EncodeUnit(g * a + background.LinearG * (1 - a));
+                        rgba[o + 2] = Srgb.EncodeUnit(b * a + background.LinearB * (1 - a));
                         rgba[o + 3] = 255;
                         continue;
                     }
@@ -98,9 +124,9 @@ namespace NerfDatasetCreator
                         WriteBackground(rgba, o, background);
                         continue;
                     }
-                    rgba[o] = Srgb.Encode(r);
-                    rgba[o + 1] = Srgb.Encode(g);
-                    rgba[o + 2] = Srgb.Encode(b);
+                    rgba[o] = Srgb.EncodeUnit(r);
+                    rgba[o + 1] = Srgb.EncodeUnit(g);
+                    rgba[o + 2] = Srgb.EncodeUnit(b);
                     rgba[o + 3] = alpha;
                 }
             }
