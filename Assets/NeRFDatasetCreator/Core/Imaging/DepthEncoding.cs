@@ -50,10 +50,12 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>
-        /// Depth in metres as floats, one per output pixel, top row first, 0 where there is no surface: the array the
-        /// Editor hands to ImageConversion.EncodeArrayToEXR (GraphicsFormat.R32_SFloat). Nothing is clamped.
+        /// Depth in metres as floats, one per output pixel, 0 where there is no surface, nothing clamped: the array
+        /// for Unity's ImageConversion.EncodeArrayToEXR (GraphicsFormat.R32_SFloat), which takes texture order —
+        /// pass <see cref="RowDirection.BottomRowFirst"/> for it. <see cref="RowDirection.TopRowFirst"/> gives file
+        /// order, for writers that store rows as given.
         /// </summary>
-        public static void ToMetres(RawFrame frame, float[] metres)
+        public static void ToMetres(RawFrame frame, float[] metres, RowDirection rows)
         {
             frame.Require(color: false, mask: false, depth: true, normals: false);
             int ow = frame.OutputWidth, oh = frame.OutputHeight;
@@ -67,7 +69,7 @@ namespace NerfDatasetCreator
             for (int oy = 0; oy < oh; oy++)
             {
                 int blockRow = RowOrder.SourceBlockRow(oy, oh, k);
-                int o = oy * ow;
+                int o = (rows == RowDirection.TopRowFirst ? oy : oh - 1 - oy) * ow;
                 for (int ox = 0; ox < ow; ox++)
                 {
                     float z = Sample(depth, blockRow * width + ox * k, order);

@@ -23,8 +23,8 @@ namespace NerfDatasetCreator
 
         /// <summary>
         /// The row filter used when none is given. Measured on render-like RGBA and 16-bit depth images (see
-        /// Documentation~/pixels.md): Sub gave the smallest or within 2 % of the smallest file of all six choices,
-        /// and it is the cheapest filter after None — Adaptive cost 1.5× the time for no smaller files.
+        /// Documentation~/pixels.md): Sub gave the smallest file, or 2.1 % more than the smallest, of all six
+        /// choices, and it is the cheapest filter after None — Adaptive took 1.5–2× the time for no smaller files.
         /// </summary>
         public const PngFilter DefaultFilter = PngFilter.Sub;
 

@@ -69,13 +69,21 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
-        public void FloatDepthIsFlippedPointSampledAndUnclamped()
+        public void FloatDepthIsPointSampledUnclampedInEitherRowOrder()
         {
-            // Bottom-up rows: bottom (100 m, 0), top (1.5 m, NaN).
-            var frame = new RawFrame(2, 2, 1) { Depth = new[] { 100f, 0f, 1.5f, float.NaN } };
-            var metres = new float[4];
-            DepthEncoding.ToMetres(frame, metres);
-            Assert.That(metres, Is.EqualTo(new[] { 1.5f, 0f, 100f, 0f }));
+            // k = 2, output 2×2. Readback rows are bottom-up; each block's lower-left sample is its first candidate.
+            // Bottom blocks: (100 m, background); top blocks: (1.5 m, NaN → background).
+            var frame = FrameBuilder.Frame(2, 2, 2);
+            frame.Depth = new float[16];
+            frame.Depth[FrameBuilder.Index(frame, 0, 3)] = 100f;
+            frame.Depth[FrameBuilder.Index(frame, 1, 0)] = 1.5f;
+            frame.Depth[FrameBuilder.Index(frame, 2, 1)] = float.NaN;
+            var topFirst = new float[4];
+            var bottomFirst = new float[4];
+            DepthEncoding.ToMetres(frame, topFirst, RowDirection.TopRowFirst);
+            DepthEncoding.ToMetres(frame, bottomFirst, RowDirection.BottomRowFirst);
+            Assert.That(topFirst, Is.EqualTo(new[] { 1.5f, 0f, 100f, 0f }));
+            Assert.That(bottomFirst, Is.EqualTo(new[] { 100f, 0f, 1.5f, 0f }));
         }
     }
 }
