@@ -1,5 +1,3 @@
-using System;
-
 namespace NerfDatasetCreator
 {
     /// <summary>
@@ -24,8 +22,7 @@ namespace NerfDatasetCreator
 
             int k = frame.Supersampling, width = frame.Width, clamped = 0;
             float[] depth = frame.Depth;
-            Span<int> order = stackalloc int[k * k];
-            PointSampling.Order(k, width, order);
+            int[] order = PointSampling.Order(k, width);
 
             for (int oy = 0; oy < oh; oy++)
             {
@@ -63,8 +60,7 @@ namespace NerfDatasetCreator
 
             int k = frame.Supersampling, width = frame.Width;
             float[] depth = frame.Depth;
-            Span<int> order = stackalloc int[k * k];
-            PointSampling.Order(k, width, order);
+            int[] order = PointSampling.Order(k, width);
 
             for (int oy = 0; oy < oh; oy++)
             {
@@ -78,7 +74,7 @@ namespace NerfDatasetCreator
             }
         }
 
-        static float Sample(float[] depth, int first, Span<int> order)
+        static float Sample(float[] depth, int first, int[] order)
         {
             // The first candidate is a hit for every pixel inside the silhouette: test it before entering the loop.
             float centre = depth[first + order[0]];

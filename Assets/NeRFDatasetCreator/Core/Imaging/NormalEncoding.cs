@@ -1,5 +1,3 @@
-using System;
-
 namespace NerfDatasetCreator
 {
     /// <summary>
@@ -19,8 +17,7 @@ namespace NerfDatasetCreator
 
             int k = frame.Supersampling, width = frame.Width, stride = frame.NormalFloatsPerPixel;
             float[] normals = frame.Normals;
-            Span<int> order = stackalloc int[k * k];
-            PointSampling.Order(k, width, order);
+            int[] order = PointSampling.Order(k, width);
             int samples = k * k;
 
             for (int oy = 0; oy < oh; oy++)

@@ -10,10 +10,14 @@ namespace NerfDatasetCreator
     /// </summary>
     internal static class PointSampling
     {
-        /// <summary>Fills <paramref name="offsets"/> (length k²) with pixel offsets from a block's lower-left sample, in trial order.</summary>
-        internal static void Order(int k, int rowPixels, Span<int> offsets)
+        /// <summary>
+        /// Pixel offsets from a block's lower-left sample, in trial order (k² entries). Plain arrays, not
+        /// stackalloc spans: one tiny allocation per frame, and no reliance on Span in Unity's .NET Framework profile.
+        /// </summary>
+        internal static int[] Order(int k, int rowPixels)
         {
-            Span<int> distance = stackalloc int[k * k];
+            var offsets = new int[k * k];
+            var distance = new int[k * k];
             double centre = (k - 1) / 2.0;
             int n = 0;
             for (int dy = 0; dy < k; dy++)
@@ -33,6 +37,7 @@ namespace NerfDatasetCreator
                 distance[i] = d;
                 offsets[i] = offset;
             }
+            return offsets;
         }
     }
 }
