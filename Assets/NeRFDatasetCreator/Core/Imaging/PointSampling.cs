@@ -23,7 +23,7 @@ namespace NerfDatasetCreator
             for (int dy = 0; dy < k; dy++)
             for (int dx = 0; dx < k; dx++)
             {
-                // Squared distance doubled twice stays an integer for half-integer centres.
+                // Four times the squared distance is an integer even for the half-integer centre of an even k.
                 int d = (int)Math.Round(4 * ((dx - centre) * (dx - centre) + (dy - centre) * (dy - centre)));
                 int offset = dy * rowPixels + dx;
                 int i = n++;
