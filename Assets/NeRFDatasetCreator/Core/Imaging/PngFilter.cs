@@ -1,0 +1,19 @@
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Which PNG row filter (PNG spec §9) precedes DEFLATE. The five fixed types use one filter for every row;
+    /// <see cref="Adaptive"/> picks per row the filter whose output has the smallest sum of absolute values (the
+    /// heuristic the PNG specification recommends and libpng uses).
+    /// </summary>
+    public enum PngFilter
+    {
+        None = 0,
+        Sub = 1,
+        Up = 2,
+        Average = 3,
+        Paeth = 4,
+
+        /// <summary>Per row, the one of the five with the minimum sum of absolute differences.</summary>
+        Adaptive = 5,
+    }
+}

@@ -1,0 +1,141 @@
+using System.Collections.Generic;
+using System.Globalization;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// One view as the Unity capture layer reads it back, before any pixel processing: every array holds Width×Height
+    /// pixels of the supersampled render textures, rows bottom-up (row 0 is the bottom of the image, as
+    /// ReadPixels / AsyncGPUReadback deliver them), pixels left to right, channels interleaved. Set only the
+    /// passes that were rendered. The exact meaning of every array is in Documentation~/pixels.md.
+    /// </summary>
+    public sealed class RawFrame
+    {
+        public RawFrame(int width, int height, int supersampling)
+        {
+            Width = width;
+            Height = height;
+            Supersampling = supersampling;
+        }
+
+        public const int MaxSupersampling = 4;
+
+        /// <summary>Width of the render textures (output width × <see cref="Supersampling"/>).</summary>
+        public int Width { get; }
+
+        /// <summary>Height of the render textures (output height × <see cref="Supersampling"/>).</summary>
+        public int Height { get; }
+
+        /// <summary>k: each output pixel is a k×k block of rendered samples, k = 1…4.</summary>
+        public int Supersampling { get; }
+
+        public int OutputWidth => Width / Supersampling;
+        public int OutputHeight => Height / Supersampling;
+
+        /// <summary>
+        /// Colour as read back from an <c>R8G8B8A8_SRGB</c> render texture (Linear colour-space project) or an
+        /// <c>R8G8B8A8_UNorm</c> one (Gamma project): 4 bytes per pixel, R G B A, sRGB-encoded, rendered over a
+        /// (0,0,0,0) clear. The A byte is ignored. Set this or <see cref="ColorLinear"/>.
+        /// </summary>
+        public byte[] ColorSrgb { get; set; }
+
+        /// <summary>
+        /// Colour as linear floats, 4 per pixel (R G B A), from an <c>R32G32B32A32_SFloat</c> render texture or an
+        /// <c>R16G16B16A16_SFloat</c> one read back into floats; rendered over a (0,0,0,0) clear. A is ignored;
+        /// values above 1 are clamped after un-premultiplying.
+        /// </summary>
+        public float[] ColorLinear { get; set; }
+
+        /// <summary>
+        /// Coverage from the mask pass: 255 where the target covers the sample, 0 elsewhere (intermediate values are
+        /// fractional coverage). <see cref="MaskBytesPerPixel"/> bytes per pixel with coverage in the first byte.
+        /// </summary>
+        public byte[] Mask { get; set; }
+
+        /// <summary>4 for an <c>R8G8B8A8_UNorm</c> mask texture (coverage in R), 1 for <c>R8_UNorm</c>.</summary>
+        public int MaskBytesPerPixel { get; set; } = 4;
+
+        /// <summary>
+        /// Eye z-depth in metres, one float per pixel (<c>R32_SFloat</c>): the distance along the camera's forward
+        /// axis, positive in front of the camera; 0 (the clear value) where no surface was hit.
+        /// </summary>
+        public float[] Depth { get; set; }
+
+        /// <summary>
+        /// Unit normals, <see cref="NormalFloatsPerPixel"/> floats per pixel (x y z [w]), already in the frame the
+        /// dataset uses (see pixels.md); (0,0,0) (the clear value) where no surface was hit.
+        /// </summary>
+        public float[] Normals { get; set; }
+
+        /// <summary>4 for an <c>R16G16B16A16_SFloat</c>/<c>R32G32B32A32_SFloat</c> normal texture (w ignored), 3 for packed xyz.</summary>
+        public int NormalFloatsPerPixel { get; set; } = 4;
+
+        /// <summary>Every problem with the sizes and arrays at once; empty when the frame is usable.</summary>
+        public List<ValidationProblem> Validate()
+        {
+            var problems = new List<ValidationProblem>();
+            void Add(ValidationProblem p) { if (p != null) problems.Add(p); }
+
+            Add(ValidationProblem.OutsideRange("frame.Supersampling", Supersampling, 1, MaxSupersampling));
+            Add(ValidationProblem.OutsideRange("frame.Width", Width, 1, CameraIntrinsics.MaxSize * MaxSupersampling));
+            Add(ValidationProblem.OutsideRange("frame.Height", Height, 1, CameraIntrinsics.MaxSize * MaxSupersampling));
+            if (problems.Count > 0) return problems;
+
+            int k = Supersampling;
+            if (Width % k != 0)
+                problems.Add(new ValidationProblem("frame.Width", Text(Width), $"is not a multiple of the supersampling factor {Text(k)}.",
+                    $"Render at {Text(k)}× the output width, e.g. {Text(Width / k * k)}."));
+            if (Height % k != 0)
+                problems.Add(new ValidationProblem("frame.Height", Text(Height), $"is not a multiple of the supersampling factor {Text(k)}.",
+                    $"Render at {Text(k)}× the output height, e.g. {Text(Height / k * k)}."));
+            if (MaskBytesPerPixel != 1 && MaskBytesPerPixel != 4)
+                problems.Add(new ValidationProblem("frame.MaskBytesPerPixel", Text(MaskBytesPerPixel), "must be 1 (R8_UNorm) or 4 (R8G8B8A8_UNorm).", "Use 4 for an RGBA8 mask texture."));
+            if (NormalFloatsPerPixel != 3 && NormalFloatsPerPixel != 4)
+                problems.Add(new ValidationProblem("frame.NormalFloatsPerPixel", Text(NormalFloatsPerPixel), "must be 3 (xyz) or 4 (xyzw).", "Use 4 for an RGBA float normal texture."));
+            if (ColorSrgb != null && ColorLinear != null)
+                problems.Add(new ValidationProblem("frame.ColorSrgb", "set", "and frame.ColorLinear are both set; the colour pass has one format.", "Set only the array matching the render texture format."));
+
+            long pixels = (long)Width * Height;
+            CheckLength(problems, "frame.ColorSrgb", ColorSrgb?.Length, pixels * 4, "4 bytes (RGBA) per pixel");
+            CheckLength(problems, "frame.ColorLinear", ColorLinear?.Length, pixels * 4, "4 floats (RGBA) per pixel");
+            CheckLength(problems, "frame.Mask", Mask?.Length, pixels * MaskBytesPerPixel, $"{Text(MaskBytesPerPixel)} byte(s) per pixel");
+            CheckLength(problems, "frame.Depth", Depth?.Length, pixels, "1 float per pixel");
+            CheckLength(problems, "frame.Normals", Normals?.Length, pixels * NormalFloatsPerPixel, $"{Text(NormalFloatsPerPixel)} floats per pixel");
+            return problems;
+        }
+
+        /// <summary>Throws <see cref="InvalidParameterException"/> unless the frame is valid and has every named pass.</summary>
+        internal void Require(bool color, bool mask, bool depth, bool normals)
+        {
+            var problems = Validate();
+            if (color && ColorSrgb == null && ColorLinear == null) problems.Add(Missing("frame.ColorSrgb", "the colour pass (or frame.ColorLinear)"));
+            if (mask && Mask == null) problems.Add(Missing("frame.Mask", "the mask pass"));
+            if (depth && Depth == null) problems.Add(Missing("frame.Depth", "the depth pass"));
+            if (normals && Normals == null) problems.Add(Missing("frame.Normals", "the normal pass"));
+            if (problems.Count > 0) throw new InvalidParameterException(problems);
+        }
+
+        internal static void RequireOutput(string field, System.Array output, long expected, string unit)
+        {
+            if (output == null || output.Length < expected)
+                throw new InvalidParameterException(new[]
+                {
+                    new ValidationProblem(field, output == null ? "null" : $"length {Text(output.Length)}", $"is too small: the output needs {expected.ToString(CultureInfo.InvariantCulture)} {unit}.",
+                        "Allocate (or rent) an array of at least that length.")
+                });
+        }
+
+        static ValidationProblem Missing(string field, string what) =>
+            new ValidationProblem(field, "null", $"is required: this step reads {what}.", "Read the pass back into this array first.");
+
+        static void CheckLength(List<ValidationProblem> problems, string field, int? actual, long expected, string layout)
+        {
+            if (actual == null || actual.Value == expected) return;
+            problems.Add(new ValidationProblem(field, $"length {Text(actual.Value)}",
+                $"does not match {layout} at the frame size (expected {expected.ToString(CultureInfo.InvariantCulture)}).",
+                "Pass the readback of a render texture of frame.Width × frame.Height in the documented format."));
+        }
+
+        static string Text(int value) => value.ToString(CultureInfo.InvariantCulture);
+    }
+}
