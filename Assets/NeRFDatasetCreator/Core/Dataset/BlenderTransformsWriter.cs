@@ -19,13 +19,18 @@ namespace NerfDatasetCreator
         /// <summary>instant-ngp's scene-box multiplier; 1 suits a single object at nerf_synthetic's scale.</summary>
         public const int AabbScale = 1;
 
+        /// <summary>
+        /// The split's file. The depth scale keys follow the split's settings, not its frames: a shard that drew no
+        /// view of a split still declares them, so all shards' files agree and merge.
+        /// </summary>
         public static string Write(CapturePlan plan, DatasetSplit split) =>
-            Write(plan.Intrinsics, plan.RotationOf(split), plan.ViewsOf(split).ToList());
+            Write(plan.Intrinsics, plan.RotationOf(split), plan.ViewsOf(split).ToList(),
+                ExtraOutputs.HasPng(plan.Settings.Split(split).Depth));
 
-        public static string Write(CameraIntrinsics intrinsics, double rotation, IReadOnlyList<PlannedView> views)
+        public static string Write(CameraIntrinsics intrinsics, double rotation, IReadOnlyList<PlannedView> views, bool declareDepthScale)
         {
             if (intrinsics == null) throw new ArgumentNullException(nameof(intrinsics));
-            var anyDepthPng = views.Any(v => v.Writes(DatasetFileKind.DepthPng));
+            var anyDepthPng = declareDepthScale || views.Any(v => v.Writes(DatasetFileKind.DepthPng));
             using (var text = JsonNumbers.CreateText())
             {
                 using (var w = JsonNumbers.CreateWriter(text, 4))

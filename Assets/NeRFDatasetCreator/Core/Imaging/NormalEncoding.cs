@@ -15,26 +15,16 @@ namespace NerfDatasetCreator
             int ow = frame.OutputWidth, oh = frame.OutputHeight;
             RawFrame.RequireOutput("rgb", rgb, (long)ow * oh * 3, "bytes (3 per output pixel)");
 
-            int k = frame.Supersampling, width = frame.Width, stride = frame.NormalFloatsPerPixel;
+            int stride = frame.NormalFloatsPerPixel;
             float[] normals = frame.Normals;
-            int[] order = PointSampling.Order(k, width);
-            int samples = k * k;
+            int[] order = PointSampling.Order(frame.Supersampling, frame.Width);
 
             for (int oy = 0; oy < oh; oy++)
             {
-                int blockRow = RowOrder.SourceBlockRow(oy, oh, k);
                 int o = oy * ow * 3;
                 for (int ox = 0; ox < ow; ox++, o += 3)
                 {
-                    int first = blockRow * width + ox * k;
-                    int hit = -1;
-                    for (int i = 0; i < samples; i++)
-                    {
-                        int n = (first + order[i]) * stride;
-                        float x = normals[n], y = normals[n + 1], z = normals[n + 2];
-                        // The clear is (0,0,0); a real normal has length ≈ 1. NaN fails the test and counts as background.
-                        if (x * x + y * y + z * z > 0.25f) { hit = n; break; }
-                    }
+                    int hit = Hit(frame, order, ox, oy);
                     if (hit < 0)
                     {
                         rgb[o] = 0;
@@ -47,6 +37,52 @@ namespace NerfDatasetCreator
                     rgb[o + 2] = Component(normals[hit + 2]);
                 }
             }
+        }
+
+        /// <summary>
+        /// The float image for an EXR: 4 floats per output pixel (x, y, z, 1) of the point-sampled unit normal, or
+        /// (0, 0, 0, 0) where there is no surface, in <paramref name="rows"/> order — Unity's
+        /// ImageConversion.EncodeArrayToEXR takes texture order, <see cref="RowDirection.BottomRowFirst"/>.
+        /// </summary>
+        public static void ToFloats(RawFrame frame, float[] rgba, RowDirection rows)
+        {
+            frame.Require(color: false, mask: false, depth: false, normals: true);
+            int ow = frame.OutputWidth, oh = frame.OutputHeight;
+            RawFrame.RequireOutput("rgba", rgba, (long)ow * oh * 4, "floats (4 per output pixel)");
+
+            float[] normals = frame.Normals;
+            int[] order = PointSampling.Order(frame.Supersampling, frame.Width);
+            for (int oy = 0; oy < oh; oy++)
+            {
+                int o = (rows == RowDirection.TopRowFirst ? oy : oh - 1 - oy) * ow * 4;
+                for (int ox = 0; ox < ow; ox++, o += 4)
+                {
+                    int hit = Hit(frame, order, ox, oy);
+                    rgba[o] = hit < 0 ? 0 : normals[hit];
+                    rgba[o + 1] = hit < 0 ? 0 : normals[hit + 1];
+                    rgba[o + 2] = hit < 0 ? 0 : normals[hit + 2];
+                    rgba[o + 3] = hit < 0 ? 0 : 1;
+                }
+            }
+        }
+
+        /// <summary>
+        /// Offset in <see cref="RawFrame.Normals"/> of the sample output pixel (ox, oy) — counted from the top row —
+        /// takes: the first of its block's samples in <see cref="PointSampling"/> order that hit a surface; −1 for none.
+        /// </summary>
+        static int Hit(RawFrame frame, int[] order, int ox, int oy)
+        {
+            int k = frame.Supersampling, stride = frame.NormalFloatsPerPixel;
+            float[] normals = frame.Normals;
+            int first = RowOrder.SourceBlockRow(oy, frame.OutputHeight, k) * frame.Width + ox * k;
+            for (int i = 0; i < order.Length; i++)
+            {
+                int n = (first + order[i]) * stride;
+                float x = normals[n], y = normals[n + 1], z = normals[n + 2];
+                // The clear is (0,0,0); a real normal has length ≈ 1. NaN fails the test and counts as background.
+                if (x * x + y * y + z * z > 0.25f) return n;
+            }
+            return -1;
         }
 
         /// <summary>round((v·0.5 + 0.5)·255) with halves up, v clamped to [−1, 1]: floor(v·127.5 + 128).</summary>

@@ -36,6 +36,13 @@ namespace NerfDatasetCreator
 
         public IEnumerable<PlannedView> ViewsOf(DatasetSplit split) => Views.Where(v => v.Split == split);
 
+        /// <summary>
+        /// The same plan holding only the views <paramref name="keep"/> accepts, in the same order — a shard's share.
+        /// Its transforms files list just those frames; settings, distance and intrinsics are the whole plan's.
+        /// </summary>
+        public CapturePlan Only(Func<PlannedView, bool> keep) =>
+            new CapturePlan(Settings, Target, Distance, Intrinsics, Views.Where(keep).ToList());
+
         /// <summary>nerf_synthetic's <c>rotation</c> key for a split (ignored by every loader): the formation's azimuth step.</summary>
         public double RotationOf(DatasetSplit split)
         {

@@ -1,7 +1,6 @@
-using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
 
-namespace NerfDatasetCreator.Editor.Tests.Capture
+namespace NerfDatasetCreator.Tests
 {
     [TestFixture]
     public class NormalFramesTests

@@ -1,4 +1,4 @@
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator
 {
     /// <summary>Frames for the normal pass. The shader writes Unity world normals; datasets use the output world frame.</summary>
     public static class NormalFrames

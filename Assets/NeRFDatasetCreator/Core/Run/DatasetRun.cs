@@ -1,0 +1,86 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// The engine-free half of a capture run. <see cref="Prepare"/> checks everything that can be checked before
+    /// rendering and fixes what will be rendered (a shard's share of the plan) and where it goes;
+    /// <see cref="Begin"/> opens the write session; after the images, <see cref="Finish"/> writes the JSON files
+    /// (last, so they never name a missing image), the shard manifest, and moves the dataset into place.
+    /// </summary>
+    public sealed class DatasetRun
+    {
+        DatasetRun(CapturePlan fullPlan, CapturePlan plan, ShardSpec shard, string datasetFolder, string projectRoot,
+            IReadOnlyList<ValidationProblem> problems)
+        {
+            FullPlan = fullPlan;
+            Plan = plan;
+            Shard = shard;
+            DatasetFolder = datasetFolder;
+            ProjectRoot = projectRoot;
+            Problems = problems;
+        }
+
+        /// <summary>Every reason the run cannot start; empty when it can.</summary>
+        public IReadOnlyList<ValidationProblem> Problems { get; }
+
+        public bool IsValid => Problems.Count == 0;
+
+        /// <summary>The views this run renders and writes: the whole plan, or a shard's share of it. Null when invalid.</summary>
+        public CapturePlan Plan { get; }
+
+        /// <summary>The plan of the whole dataset (all shards).</summary>
+        public CapturePlan FullPlan { get; }
+
+        public ShardSpec Shard { get; }
+
+        /// <summary>The absolute folder the finished dataset is moved to.</summary>
+        public string DatasetFolder { get; }
+
+        public string ProjectRoot { get; }
+
+        /// <param name="datasetFolder">The dataset folder itself (batch mode's -nerfOut); null for the settings' output folder and name.</param>
+        public static DatasetRun Prepare(DatasetSettings settings, PlanTarget target, string projectRoot,
+            ShardSpec shard = default, string datasetFolder = null)
+        {
+            if (settings == null) throw new ArgumentNullException(nameof(settings));
+            var whole = shard.Count == 0 ? ShardSpec.Whole : shard;
+            var folder = string.IsNullOrWhiteSpace(datasetFolder)
+                ? SafeOutput.ResolveOutputFolder(settings, projectRoot)
+                : System.IO.Path.GetFullPath(System.IO.Path.Combine(projectRoot ?? "", datasetFolder));
+
+            var problems = new List<ValidationProblem>(CapturePlan.Check(settings, target));
+            problems.AddRange(SafeOutput.CheckOutputFolder(folder, projectRoot, settings.Overwrite));
+            problems = problems.GroupBy(p => p.ToString()).Select(g => g.First()).ToList();
+            if (problems.Count > 0) return new DatasetRun(null, null, whole, folder, projectRoot, problems);
+
+            var full = CapturePlan.Build(settings, target);
+            var counts = CountsOf(full);
+            var plan = whole.Count == 1
+                ? full
+                : full.Only(v => ShardAssignment.Contains(whole, counts, DatasetSplits.Name(v.Split), v.Index));
+            return new DatasetRun(full, plan, whole, folder, projectRoot, problems);
+        }
+
+        /// <summary>Checks the output folder again (it may have changed since <see cref="Prepare"/>) and creates the working folder.</summary>
+        public DatasetWriteSession Begin()
+        {
+            if (!IsValid) throw new InvalidParameterException(Problems);
+            return DatasetWriteSession.Begin(DatasetFolder, FullPlan.Settings.Overwrite, ProjectRoot);
+        }
+
+        /// <summary>Writes the transforms files, dataset_config.json and, for a shard, shard.json; then commits.</summary>
+        public void Finish(DatasetWriteSession session, Provenance provenance)
+        {
+            DatasetMetadataFiles.Write(session, Plan, provenance);
+            if (Shard.Count > 1)
+                ShardManifest.ForShard(Shard, CountsOf(FullPlan)).Write(session.WorkingFolder);
+            session.Commit();
+        }
+
+        static ViewCounts CountsOf(CapturePlan plan) => new ViewCounts(
+            plan.Settings.Train.Count, plan.Settings.Val.Count, plan.Settings.Test.Count);
+    }
+}
