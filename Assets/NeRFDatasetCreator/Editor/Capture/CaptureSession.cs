@@ -118,7 +118,7 @@ namespace NerfDatasetCreator.Editor.Capture
             return null;
         }
 
-        static void CheckTarget(GameObject target, CaptureIsolation isolation)
+        internal static void CheckTarget(GameObject target, CaptureIsolation isolation)
         {
             if (isolation == CaptureIsolation.WholeScene) return;
             if (target == null)

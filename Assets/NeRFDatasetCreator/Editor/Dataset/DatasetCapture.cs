@@ -1,0 +1,221 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using NerfDatasetCreator.Editor.Capture;
+using UnityEngine;
+
+namespace NerfDatasetCreator.Editor
+{
+    /// <summary>
+    /// Settings and a target GameObject in, a dataset on disk out — the one path the window, batch mode and tests
+    /// use. Main thread only. Everything decided here lives in Core (<see cref="DatasetRun"/>,
+    /// <see cref="ViewFileWriter"/>); this class only moves data between Unity objects and Core.
+    /// </summary>
+    public static class DatasetCapture
+    {
+        /// <summary>
+        /// Centre and bounding-sphere radius of the target's enabled renderers in world space (the sphere around
+        /// their combined axis-aligned bounds). Radius 0 when there are none.
+        /// </summary>
+        public static PlanTarget MeasureTarget(GameObject target)
+        {
+            if (target == null) return PlanTarget.AtOrigin;
+            Bounds? all = null;
+            foreach (var renderer in target.GetComponentsInChildren<Renderer>())
+            {
+                if (!renderer.enabled) continue;
+                if (all.HasValue)
+                {
+                    var grown = all.Value;
+                    grown.Encapsulate(renderer.bounds);
+                    all = grown;
+                }
+                else all = renderer.bounds;
+            }
+            if (!all.HasValue) return new PlanTarget(ToCore(target.transform.position), 0);
+            return new PlanTarget(ToCore(all.Value.center), all.Value.extents.magnitude);
+        }
+
+        /// <summary>
+        /// Checks the settings, the target and this editor, and plans the views. Never throws for user errors: read
+        /// <see cref="PreparedCapture.Problems"/>. <paramref name="datasetFolder"/> overrides the settings' output
+        /// folder and name (batch mode's -nerfOut).
+        /// </summary>
+        public static PreparedCapture Prepare(DatasetSettings settings, GameObject target, string projectRoot,
+            ShardSpec shard = default, string datasetFolder = null)
+        {
+            if (settings == null) throw new ArgumentNullException(nameof(settings));
+            settings = settings.Clone();
+            var problems = new List<ValidationProblem>();
+            var template = FindTemplateCamera(settings.Camera.CopyFromCamera, problems);
+            if (template != null)
+            {
+                // The written intrinsics must be those of the camera that renders.
+                settings.Camera.VerticalFovDegrees = template.fieldOfView;
+                settings.Camera.NearClip = template.nearClipPlane;
+                settings.Camera.FarClip = template.farClipPlane;
+            }
+            var options = OptionsFor(settings, template);
+            try
+            {
+                CaptureSession.CheckTarget(target, options.Isolation);
+                CaptureEnvironment.ThrowIfCannotRender(options.EffectivePasses);
+            }
+            catch (CaptureException e)
+            {
+                problems.Add(new ValidationProblem(target == null ? "target" : "capture", target == null ? "none" : target.name, e.Message, ""));
+            }
+
+            var run = DatasetRun.Prepare(settings, MeasureTarget(target), projectRoot, shard, datasetFolder);
+            problems.AddRange(run.Problems);
+            return new PreparedCapture(run, target, options, problems, Array.Empty<ValidationProblem>());
+        }
+
+        /// <summary>Captures and writes the whole dataset (or shard) before returning. Never throws for user or I/O errors.</summary>
+        public static DatasetCaptureResult RunBlocking(PreparedCapture prepared, ICaptureProgress progress = null, string tool = "unity-editor")
+        {
+            if (!prepared.IsValid) return Refused(prepared);
+            DatasetWriteSession session;
+            try
+            {
+                session = prepared.Run.Begin();
+            }
+            catch (Exception e) when (e is InvalidParameterException || e is IOException || e is UnauthorizedAccessException)
+            {
+                return Failed(prepared, null, e, 0);
+            }
+            var files = new ViewFileWriter(prepared.Run.Plan.Settings, session, UnityExr.Encode);
+            using (var consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files)))
+            {
+                try
+                {
+                    var summary = CaptureRunner.RunBlocking(prepared.Target, Poses(prepared), prepared.Options, consumer, progress);
+                    return Finish(prepared, session, files, summary, tool);
+                }
+                catch (Exception e)
+                {
+                    return Failed(prepared, session, e, consumer.Written);
+                }
+            }
+        }
+
+        /// <summary>
+        /// Starts the capture on editor updates (the editor stays usable; progress and Cancel in Background Tasks).
+        /// <paramref name="done"/> runs on the main thread with the result. Returns the session (its Cancel() stops the
+        /// run), or null when the capture could not start — <paramref name="done"/> has then already been called.
+        /// </summary>
+        public static CaptureSession StartInBackground(PreparedCapture prepared, Action<DatasetCaptureResult> done, string tool = "unity-editor")
+        {
+            if (!prepared.IsValid)
+            {
+                done?.Invoke(Refused(prepared));
+                return null;
+            }
+            DatasetWriteSession session = null;
+            ParallelViewConsumer consumer = null;
+            try
+            {
+                session = prepared.Run.Begin();
+                var files = new ViewFileWriter(prepared.Run.Plan.Settings, session, UnityExr.Encode);
+                consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files));
+                var written = consumer;
+                return CaptureRunner.RunInBackground(prepared.Target, Poses(prepared), prepared.Options, consumer, (summary, error) =>
+                {
+                    var result = error == null
+                        ? Finish(prepared, session, files, summary, tool)
+                        : Failed(prepared, session, error, written.Written);
+                    written.Dispose();
+                    done?.Invoke(result);
+                });
+            }
+            catch (Exception e)
+            {
+                var written = consumer?.Written ?? 0;
+                consumer?.Dispose();
+                done?.Invoke(Failed(prepared, session, e, written));
+                return null;
+            }
+        }
+
+        static DatasetCaptureResult Finish(PreparedCapture prepared, DatasetWriteSession session, ViewFileWriter files,
+            CaptureSummary summary, string tool)
+        {
+            var provenance = new Provenance(DateTime.UtcNow, Application.unityVersion, tool);
+            provenance.Statistics["views"] = summary.Views;
+            provenance.Statistics["seconds"] = summary.Seconds;
+            provenance.Statistics["viewsPerSecond"] = summary.ViewsPerSecond;
+            provenance.Statistics["clampedDepthPixels"] = files.ClampedDepthPixels;
+            try
+            {
+                prepared.Run.Finish(session, provenance);
+            }
+            catch (Exception e)
+            {
+                return Failed(prepared, session, e, summary.Views);
+            }
+            var message = string.Format(CultureInfo.InvariantCulture,
+                "NeRF Dataset Creator: wrote {0} views to {1} in {2:0.0} s ({3:0.00} views/s).",
+                summary.Views, session.FinalFolder, summary.Seconds, summary.ViewsPerSecond);
+            if (files.ClampedDepthPixels > 0)
+                message += string.Format(CultureInfo.InvariantCulture,
+                    " {0} depth pixels lay beyond 65.535 m and were clamped in the 16-bit depth PNGs (the EXR files keep them).",
+                    files.ClampedDepthPixels);
+            return new DatasetCaptureResult(true, false, session.FinalFolder, null, message, summary.Views, summary.ViewsPerSecond);
+        }
+
+        static DatasetCaptureResult Failed(PreparedCapture prepared, DatasetWriteSession session, Exception error, int written)
+        {
+            var cancelled = error is OperationCanceledException;
+            var what = cancelled ? "The capture was cancelled after " + written + " written views." : "The capture failed: " + Describe(error);
+            var where = session == null ? "" : " " + session.DescribeAbandoned();
+            return new DatasetCaptureResult(false, cancelled, null, session?.PartialFolder, "NeRF Dataset Creator: " + what + where, written, 0);
+        }
+
+        static DatasetCaptureResult Refused(PreparedCapture prepared) => new DatasetCaptureResult(false, false, null, null,
+            "NeRF Dataset Creator: nothing was captured —\n" + string.Join("\n", prepared.Problems.Select(p => "  " + p)), 0, 0);
+
+        static string Describe(Exception e)
+        {
+            var capture = e as CaptureException ?? ParallelViewConsumer.Explain(e);
+            return capture?.Message ?? e.Message;
+        }
+
+        static IReadOnlyList<UnityPose> Poses(PreparedCapture prepared) => prepared.Run.Plan.Views.Select(v => v.Pose).ToList();
+
+        static CaptureOptions OptionsFor(DatasetSettings settings, Camera template)
+        {
+            var splits = DatasetSplits.All.Select(settings.Split).ToList();
+            var passes = CapturePasses.Color | CapturePasses.Mask;
+            if (splits.Any(s => s.Count > 0 && s.Depth != ExtraOutput.None)) passes |= CapturePasses.Depth;
+            if (splits.Any(s => s.Count > 0 && s.Normal != ExtraOutput.None)) passes |= CapturePasses.Normal;
+            return new CaptureOptions
+            {
+                Width = settings.Width,
+                Height = settings.Height,
+                Supersampling = settings.Supersampling,
+                Passes = passes,
+                VerticalFieldOfViewDegrees = settings.Camera.VerticalFovDegrees,
+                NearClip = settings.Camera.NearClip,
+                FarClip = settings.Camera.FarClip,
+                TemplateCamera = template,
+            };
+        }
+
+        /// <summary>The scene camera named by the settings (hierarchy path or name), or null for the built-in defaults.</summary>
+        static Camera FindTemplateCamera(string pathOrName, List<ValidationProblem> problems)
+        {
+            if (string.IsNullOrWhiteSpace(pathOrName)) return null;
+            var found = SceneObjects.Find(pathOrName);
+            var camera = found == null ? null : found.GetComponent<Camera>();
+            if (camera == null)
+                problems.Add(new ValidationProblem("camera.copyFromCamera", pathOrName,
+                    found == null ? "names no object in the open scenes." : "names an object without a Camera.",
+                    "Give the hierarchy path or name of a scene camera, or leave it empty for the built-in camera."));
+            return camera;
+        }
+
+        static Vector3d ToCore(Vector3 v) => new Vector3d(v.x, v.y, v.z);
+    }
+}

@@ -1,0 +1,39 @@
+using System.Collections.Generic;
+using NerfDatasetCreator.Editor.Capture;
+
+namespace NerfDatasetCreator.Editor
+{
+    /// <summary>
+    /// The capture's worker-thread writer for datasets: wraps a view's readback arrays as Core's raw frames (no copy),
+    /// relabels its normals into the output world frame, and hands it to Core's <see cref="ViewFileWriter"/>.
+    /// The consumer releases the view afterwards.
+    /// </summary>
+    sealed class DatasetViewWriter : IViewWriter
+    {
+        readonly IReadOnlyList<PlannedView> _views;
+        readonly ViewFileWriter _files;
+
+        /// <param name="views">The planned views in the order their poses were given to the capture.</param>
+        public DatasetViewWriter(IReadOnlyList<PlannedView> views, ViewFileWriter files)
+        {
+            _views = views;
+            _files = files;
+        }
+
+        public void Write(CapturedView view)
+        {
+            var colour = new RawFrame(view.Width, view.Height, view.Supersampling)
+            {
+                ColorSrgb = view.Color,
+                Mask = view.Mask,
+                MaskBytesPerPixel = 1,
+            };
+            if (view.Normal != null) NormalFrames.ToOutputWorld(view.Normal);
+            var atOutputSize = view.DataWidth != view.Width || view.DataHeight != view.Height;
+            var data = atOutputSize ? new RawFrame(view.DataWidth, view.DataHeight, 1) : colour;
+            data.Depth = view.Depth;
+            data.Normals = view.Normal;
+            _files.Write(_views[view.ViewIndex], colour, data);
+        }
+    }
+}

@@ -1,0 +1,39 @@
+using System.Collections.Generic;
+using NerfDatasetCreator.Editor.Capture;
+using UnityEngine;
+
+namespace NerfDatasetCreator.Editor
+{
+    /// <summary>A checked capture, ready to run: <see cref="DatasetCapture.Prepare"/> makes it; read <see cref="Problems"/> first.</summary>
+    public sealed class PreparedCapture
+    {
+        internal PreparedCapture(DatasetRun run, GameObject target, CaptureOptions options,
+            IReadOnlyList<ValidationProblem> problems, IReadOnlyList<ValidationProblem> warnings)
+        {
+            Run = run;
+            Target = target;
+            Options = options;
+            Problems = problems;
+            Warnings = warnings;
+        }
+
+        internal DatasetRun Run { get; }
+        internal GameObject Target { get; }
+        internal CaptureOptions Options { get; }
+
+        /// <summary>Every reason the capture cannot start; empty when <see cref="IsValid"/>.</summary>
+        public IReadOnlyList<ValidationProblem> Problems { get; }
+
+        public IReadOnlyList<ValidationProblem> Warnings { get; }
+
+        public bool IsValid => Problems.Count == 0;
+
+        /// <summary>The views this capture renders (a shard's share of the dataset); null when not valid.</summary>
+        public CapturePlan Plan => IsValid ? Run.Plan : null;
+
+        /// <summary>The absolute folder the finished dataset is moved to.</summary>
+        public string DatasetFolder => Run?.DatasetFolder;
+
+        public int ViewCount => IsValid ? Run.Plan.Views.Count : 0;
+    }
+}
