@@ -56,7 +56,7 @@ namespace NerfDatasetCreator
                     w.WriteEndArray();
                     w.WriteEndObject();
                 }
-                return text.ToString() + "\n";
+                return text.ToString() + "\n"; // the writer's text, formatted by CreateText's invariant culture
             }
         }
 
@@ -65,7 +65,7 @@ namespace NerfDatasetCreator
             if (!v.TransformMatrix.IsFinite)
                 throw new InvalidParameterException(new[]
                 {
-                    new ValidationProblem(DatasetSplits.Name(v.Split) + "[" + v.Index + "].transform_matrix", v.TransformMatrix.ToString(),
+                    new ValidationProblem(DatasetSplits.Name(v.Split) + "[" + v.Index + "].transform_matrix", v.TransformMatrix.ToString(), // Matrix4x4d formats with the invariant culture
                         "is not finite; JSON cannot hold it and every loader would fail.", "Check the settings that placed this camera."),
                 });
             w.WriteStartObject();

@@ -65,7 +65,7 @@ namespace NerfDatasetCreator
                     DatasetSettingsJson.WriteObject(w, plan.Settings);
                     w.WriteEndObject();
                 }
-                return text.ToString() + "\n";
+                return text.ToString() + "\n"; // the writer's text, formatted by CreateText's invariant culture
             }
         }
     }
