@@ -33,6 +33,7 @@ namespace NerfDatasetCreator.Benchmarks
             StraightAlpha.Resolve(SyntheticFrame.Sphere(OutputSize, Supersampling, noise: 0), clean);
             Png("RGBA 800×800 textured sphere without grain", clean, depth: null);
             Png("Gray16 800×800 depth (mm)", null, depth);
+            TransformsBenchmark.Run();
 
             int dump = Array.IndexOf(args, "--dump");
             if (dump >= 0 && dump + 1 < args.Length)

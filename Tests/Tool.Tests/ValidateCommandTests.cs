@@ -15,18 +15,7 @@ namespace NerfDatasetCreator.Tool.Tests
         public void SetUp()
         {
             _scratch = new Scratch();
-            _dataset = _scratch.PathOf("ds");
-            // A small rendered-looking dataset: the tool's plan, then an image for every frame, and the
-            // plan-only marker removed by rewriting dataset_config.json without it.
-            var config = _scratch.WriteText("c.json", "{ \"width\": 32, \"height\": 24, \"splits\": { \"train\": { \"count\": 3 }, \"val\": { \"count\": 2 }, \"test\": { \"count\": 2 } } }");
-            Assert.That(ToolRun.Of("plan", "--config", config, "--out", _dataset).ExitCode, Is.EqualTo(0));
-            File.Delete(Path.Combine(_dataset, "dataset_config.json"));
-            var png = TestPng.Encode(32, 24, 8, 6);
-            foreach (var (split, count) in new[] { ("train", 3), ("val", 2), ("test", 2) })
-            {
-                Directory.CreateDirectory(Path.Combine(_dataset, split));
-                for (var i = 0; i < count; i++) File.WriteAllBytes(Path.Combine(_dataset, split, "r_" + i + ".png"), png);
-            }
+            _dataset = RenderedDataset.Create(_scratch, "ds");
         }
 
         [TearDown]
@@ -80,7 +69,15 @@ namespace NerfDatasetCreator.Tool.Tests
         {
             var run = ToolRun.Of("--help");
             Assert.That(run.ExitCode, Is.EqualTo(0));
-            Assert.That(run.Out, Does.Contain("nerf-dataset plan --config"));
+            var lines = run.Out.TrimEnd('\n').Split('\n');
+            Assert.That(lines[0], Is.EqualTo("usage: nerf-dataset <command> [arguments]"));
+            Assert.That(lines.Skip(1).Take(4).Select(l => l.Trim().Split(' ')[0]), Is.EqualTo(new[] { "plan", "validate", "merge", "convert" }), "one line per command");
+            Assert.That(lines[1], Does.StartWith("  plan --config <settings.json> --out <dir>"));
+            Assert.That(lines[3], Does.StartWith("  merge --out <dir> [--files copy|move] <shard-dir>..."));
+            Assert.That(lines[4], Does.StartWith("  convert <dir> --to nerfstudio|colmap|ngp [--out <dir>]"));
+            Assert.That(lines[5], Does.StartWith("exit codes:"));
+            Assert.That(lines, Has.Length.EqualTo(6));
+            Assert.That(ToolRun.Of("merge", "--help").Out, Is.EqualTo(run.Out), "--help after a command");
         }
     }
 }

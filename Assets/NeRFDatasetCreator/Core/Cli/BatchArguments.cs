@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Globalization;
 
 namespace NerfDatasetCreator
 {
@@ -8,20 +7,28 @@ namespace NerfDatasetCreator
     /// The plugin's own arguments on a Unity batch-mode command line:
     /// <c>-nerfConfig &lt;file&gt; [-nerfScene &lt;scene&gt;] [-nerfOut &lt;dir&gt;] [-nerfShard i/N]</c>.
     /// <c>Environment.GetCommandLineArgs()</c> also holds Unity's own arguments (-batchmode, -projectPath …), so
-    /// unknown arguments are ignored; names are case-insensitive. The shard index is 0-based (0 ≤ i &lt; N), like
-    /// a Kubernetes Indexed Job's completion index.
+    /// unknown arguments are ignored; names are case-insensitive. The shard is read by <see cref="ShardSpec.TryParse"/>,
+    /// the one parser of "i/N" (0-based, 0 ≤ i &lt; N ≤ 10000, like a Kubernetes Indexed Job's completion index).
     /// </summary>
     public sealed class BatchArguments
     {
+        /// <summary>The field a shard problem names: the argument as documented, whatever case it was typed in.</summary>
+        public const string ShardField = "-nerfShard";
+
         public string ConfigPath { get; private set; }
         public string Scene { get; private set; }
 
         /// <summary>The dataset folder, overriding the config's outputFolder and name.</summary>
         public string OutputFolder { get; private set; }
 
-        /// <summary>Which shard this process renders; null for the whole dataset.</summary>
-        public int? ShardIndex { get; private set; }
-        public int? ShardCount { get; private set; }
+        /// <summary>Which shard this process renders; null for the whole dataset (no <c>-nerfShard</c>).</summary>
+        public ShardSpec? Shard { get; private set; }
+
+        /// <summary><see cref="Shard"/>'s index, for callers that only need the number.</summary>
+        public int? ShardIndex => Shard?.Index;
+
+        /// <summary><see cref="Shard"/>'s count, for callers that only need the number.</summary>
+        public int? ShardCount => Shard?.Count;
 
         /// <summary>Mistakes in the plugin's arguments; the run must stop when there is any.</summary>
         public List<ValidationProblem> Problems { get; } = new List<ValidationProblem>();
@@ -47,26 +54,17 @@ namespace NerfDatasetCreator
                 if (IsOption(arg, "-nerfConfig")) result.ConfigPath = value;
                 else if (IsOption(arg, "-nerfScene")) result.Scene = value;
                 else if (IsOption(arg, "-nerfOut")) result.OutputFolder = value;
-                else result.ParseShard(arg, value);
+                else result.ParseShard(value);
             }
             if (string.IsNullOrWhiteSpace(result.ConfigPath) && result.Problems.TrueForAll(p => !string.Equals(p.Field, "-nerfConfig", StringComparison.OrdinalIgnoreCase)))
                 result.Problems.Add(new ValidationProblem("-nerfConfig", "", "is missing.", "Pass the settings file: -nerfConfig path/to/settings.json."));
             return result;
         }
 
-        void ParseShard(string arg, string value)
+        void ParseShard(string value)
         {
-            var parts = value.Split('/');
-            if (parts.Length == 2 &&
-                int.TryParse(parts[0], NumberStyles.None, CultureInfo.InvariantCulture, out var index) &&
-                int.TryParse(parts[1], NumberStyles.None, CultureInfo.InvariantCulture, out var count) &&
-                count >= 1 && index < count)
-            {
-                ShardIndex = index;
-                ShardCount = count;
-                return;
-            }
-            Problems.Add(new ValidationProblem(arg, value, "is not a shard i/N with 0 ≤ i < N.", "Write e.g. -nerfShard 0/4 for the first of four shards."));
+            if (ShardSpec.TryParse(value, out var shard, out var problems, ShardField)) Shard = shard;
+            else Problems.AddRange(problems);
         }
 
         static bool IsOption(string arg, string name) => string.Equals(arg, name, StringComparison.OrdinalIgnoreCase);

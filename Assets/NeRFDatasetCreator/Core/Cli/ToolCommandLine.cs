@@ -62,27 +62,74 @@ namespace NerfDatasetCreator
 
             switch (command)
             {
-                case ToolInvocation.PlanCommand:
-                    foreach (var name in options.Keys)
-                        if (name != "config" && name != "out") result.Errors.Add("plan does not know the option --" + name + ".");
-                    if (positionals.Count > 0) result.Errors.Add("plan takes no positional argument ('" + positionals[0] + "').");
-                    options.TryGetValue("config", out var config);
-                    options.TryGetValue("out", out var output);
-                    if (string.IsNullOrWhiteSpace(config)) result.Errors.Add("plan needs --config <settings.json>.");
-                    if (string.IsNullOrWhiteSpace(output)) result.Errors.Add("plan needs --out <dataset-folder>.");
-                    result.ConfigPath = config;
-                    result.OutputFolder = output;
-                    break;
-                case ToolInvocation.ValidateCommand:
-                    foreach (var name in options.Keys) result.Errors.Add("validate does not know the option --" + name + ".");
-                    if (positionals.Count != 1) result.Errors.Add("validate needs exactly one dataset folder.");
-                    else result.DatasetFolder = positionals[0];
-                    break;
+                case ToolInvocation.PlanCommand: Plan(result, options, positionals); break;
+                case ToolInvocation.ValidateCommand: Validate(result, options, positionals); break;
+                case ToolInvocation.MergeCommand: Merge(result, options, positionals); break;
+                case ToolInvocation.ConvertCommand: Convert(result, options, positionals); break;
                 default:
                     result.Errors.Add("unknown command '" + command + "'.");
                     break;
             }
             return result;
+        }
+
+        static void Plan(ToolInvocation result, Dictionary<string, string> options, List<string> positionals)
+        {
+            RefuseUnknownOptions(result, options, "config", "out");
+            if (positionals.Count > 0) result.Errors.Add("plan takes no positional argument ('" + positionals[0] + "').");
+            options.TryGetValue("config", out var config);
+            options.TryGetValue("out", out var output);
+            if (string.IsNullOrWhiteSpace(config)) result.Errors.Add("plan needs --config <settings.json>.");
+            if (string.IsNullOrWhiteSpace(output)) result.Errors.Add("plan needs --out <dataset-folder>.");
+            result.ConfigPath = config;
+            result.OutputFolder = output;
+        }
+
+        static void Validate(ToolInvocation result, Dictionary<string, string> options, List<string> positionals)
+        {
+            RefuseUnknownOptions(result, options);
+            if (positionals.Count != 1) result.Errors.Add("validate needs exactly one dataset folder.");
+            else result.DatasetFolder = positionals[0];
+        }
+
+        static void Merge(ToolInvocation result, Dictionary<string, string> options, List<string> positionals)
+        {
+            RefuseUnknownOptions(result, options, "out", "files");
+            options.TryGetValue("out", out var output);
+            if (string.IsNullOrWhiteSpace(output)) result.Errors.Add("merge needs --out <dataset-folder>, a folder that does not exist yet.");
+            result.OutputFolder = output;
+            if (options.TryGetValue("files", out var files))
+            {
+                if (files == "move") result.MoveFiles = true;
+                else if (files != "copy") result.Errors.Add("--files = " + files + ": is not copy or move. Write --files copy (the default, keeps the shards) or --files move (no extra disk space).");
+            }
+            if (positionals.Count == 0) result.Errors.Add("merge needs the shard folders after the options, e.g. merge --out lego lego-shards/shard-*.");
+            result.ShardFolders.AddRange(positionals);
+        }
+
+        static void Convert(ToolInvocation result, Dictionary<string, string> options, List<string> positionals)
+        {
+            RefuseUnknownOptions(result, options, "to", "out");
+            if (positionals.Count != 1) result.Errors.Add("convert needs exactly one dataset folder.");
+            else result.DatasetFolder = positionals[0];
+            if (!options.TryGetValue("to", out var to)) result.Errors.Add("convert needs --to " + string.Join("|", ExportTargets.Names) + ".");
+            else
+            {
+                result.Target = ExportTargets.Parse(to, out var problem);
+                if (problem != null) result.Errors.Add(problem.ToString());
+            }
+            if (options.TryGetValue("out", out var output))
+            {
+                if (string.IsNullOrWhiteSpace(output)) result.Errors.Add("--out is empty; leave it out to write into the dataset folder.");
+                else result.OutputFolder = output;
+            }
+        }
+
+        static void RefuseUnknownOptions(ToolInvocation result, Dictionary<string, string> options, params string[] known)
+        {
+            foreach (var name in options.Keys)
+                if (Array.IndexOf(known, name) < 0)
+                    result.Errors.Add(result.Command + " does not know the option --" + name + ".");
         }
     }
 }

@@ -7,29 +7,44 @@ namespace NerfDatasetCreator
     {
         public const string PlanCommand = "plan";
         public const string ValidateCommand = "validate";
+        public const string MergeCommand = "merge";
+        public const string ConvertCommand = "convert";
         public const string HelpCommand = "help";
 
-        /// <summary>"plan", "validate" or "help".</summary>
+        /// <summary>"plan", "validate", "merge", "convert" or "help".</summary>
         public string Command { get; internal set; }
 
         /// <summary><c>plan --config &lt;file&gt;</c>.</summary>
         public string ConfigPath { get; internal set; }
 
-        /// <summary><c>plan --out &lt;dir&gt;</c>: the dataset folder itself.</summary>
+        /// <summary>
+        /// <c>--out &lt;dir&gt;</c>: the dataset folder <c>plan</c> and <c>merge</c> create; for <c>convert</c> the folder
+        /// the export goes to, null for the format's default place inside the dataset.
+        /// </summary>
         public string OutputFolder { get; internal set; }
 
-        /// <summary><c>validate &lt;dir&gt;</c>.</summary>
+        /// <summary><c>validate &lt;dir&gt;</c> and <c>convert &lt;dir&gt;</c>: the Blender-format dataset to read.</summary>
         public string DatasetFolder { get; internal set; }
+
+        /// <summary><c>merge … &lt;shard-dir&gt;…</c>: the shard folders, in the order given.</summary>
+        public List<string> ShardFolders { get; } = new List<string>();
+
+        /// <summary><c>merge --files move</c>: move the images out of the shard folders instead of copying them.</summary>
+        public bool MoveFiles { get; internal set; }
+
+        /// <summary><c>convert --to nerfstudio|colmap|ngp</c>.</summary>
+        public ExportTarget? Target { get; internal set; }
 
         /// <summary>Usage mistakes; the command runs only when this is empty.</summary>
         public List<string> Errors { get; } = new List<string>();
 
+        /// <summary>What <c>--help</c> prints: one line per command, then the exit codes.</summary>
         public const string Usage =
-            "usage:\n" +
-            "  nerf-dataset plan --config <settings.json> --out <dataset-folder>\n" +
-            "      writes transforms_{train,val,test}.json, dataset_config.json and rig_preview.ply (no images)\n" +
-            "  nerf-dataset validate <dataset-folder>\n" +
-            "      checks a Blender-format dataset; prints a summary and one line per problem; exit 1 on any problem\n" +
-            "exit codes: 0 success, 1 problems found or the run failed, 2 usage or settings error";
+            "usage: nerf-dataset <command> [arguments]\n" +
+            "  plan --config <settings.json> --out <dir>               the JSON files and a rig preview, no images\n" +
+            "  validate <dir>                                          check a Blender-format dataset\n" +
+            "  merge --out <dir> [--files copy|move] <shard-dir>...    join the folders of a sharded capture\n" +
+            "  convert <dir> --to nerfstudio|colmap|ngp [--out <dir>]  write a dataset in another trainer's format\n" +
+            "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
     }
 }

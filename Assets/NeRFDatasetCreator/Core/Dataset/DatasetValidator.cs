@@ -96,7 +96,7 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>True when dataset_config.json marks the folder as a plan without images.</summary>
-        static bool IsPlanOnly(string folder)
+        public static bool IsPlanOnly(string folder)
         {
             var path = Path.Combine(folder, DatasetLayout.ConfigFileName);
             if (!File.Exists(path)) return false;

@@ -1,0 +1,77 @@
+using System;
+using System.IO;
+using System.Linq;
+
+namespace NerfDatasetCreator.Tool
+{
+    /// <summary>
+    /// <c>nerf-dataset convert d --to nerfstudio|colmap|ngp [--out o]</c>: <see cref="DatasetConverter.Convert"/>, then
+    /// where the files went, the warnings, and the command that trains on the result. Exit 1 when the dataset cannot
+    /// be converted or a destination file exists (nothing is overwritten).
+    /// </summary>
+    public static class ConvertCommand
+    {
+        /// <summary>A folder with more written files than this is summarised as a count (COLMAP's image copies).</summary>
+        const int FilesListedPerFolder = 5;
+
+        public static int Run(string datasetFolder, ExportTarget target, string outputFolder, TextWriter stdout, TextWriter stderr)
+        {
+            ConversionResult result;
+            try
+            {
+                result = DatasetConverter.Convert(datasetFolder, target, outputFolder);
+            }
+            catch (InvalidParameterException e)
+            {
+                if (Directory.Exists(datasetFolder) && DatasetValidator.IsPlanOnly(datasetFolder))
+                {
+                    // One line instead of one "names no image" per planned frame.
+                    stderr.WriteLine("error: " + new ValidationProblem(DatasetLayout.ConfigFileName + ": imagesRendered", "false",
+                        "this dataset was planned by nerf-dataset plan and has no images, but convert needs them (their size sets the intrinsics; colmap copies them).",
+                        "Render the dataset with the Unity plugin (window or batch mode) and convert that folder."));
+                    stderr.WriteLine("convert refused: " + Count(e.Problems.Count, "problem") + ", the first: " + e.Problems[0] + " Nothing was written.");
+                    return Program.Failure;
+                }
+                foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
+                stderr.WriteLine("convert refused: " + Count(e.Problems.Count, "problem") + "; nothing was written.");
+                return Program.Failure;
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                stderr.WriteLine("error: " + e.Message);
+                stderr.WriteLine("convert failed while writing; files it wrote before the failure stay where they are and convert never " +
+                                 "overwrites, so delete them (or pass another --out) before running it again.");
+                return Program.Failure;
+            }
+
+            foreach (var warning in result.Warnings) stderr.WriteLine("warning: " + warning);
+            stdout.WriteLine("converted " + Path.GetFullPath(datasetFolder) + " to " + ExportTargets.Name(target) + ":");
+            foreach (var folder in result.WrittenFiles.GroupBy(Path.GetDirectoryName))
+            {
+                var files = folder.ToList();
+                if (files.Count > FilesListedPerFolder) stdout.WriteLine("  wrote " + files.Count + " files into " + folder.Key + Path.DirectorySeparatorChar);
+                else foreach (var file in files) stdout.WriteLine("  wrote " + file);
+            }
+            stdout.WriteLine("train with: " + NextStep(target, result.MainFile));
+            return Program.Success;
+        }
+
+        /// <summary>The training command of Documentation~/exports.md for the export just written.</summary>
+        static string NextStep(ExportTarget target, string main)
+        {
+            switch (target)
+            {
+                case ExportTarget.Nerfstudio:
+                    return "ns-train splatfacto nerfstudio-data --data " + Quote(main) + " --orientation-method none --center-method none --auto-scale-poses False";
+                case ExportTarget.Ngp:
+                    return "./instant-ngp " + Quote(main) + "   (from the instant-ngp folder)";
+                default:
+                    return "python train.py -s " + Quote(main) + " --eval   (3D Gaussian Splatting)";
+            }
+        }
+
+        static string Quote(string path) => path.IndexOf(' ') >= 0 ? "\"" + path + "\"" : path;
+
+        static string Count(int n, string noun) => n + " " + noun + (n == 1 ? "" : "s");
+    }
+}
