@@ -24,12 +24,6 @@ namespace NerfDatasetCreator
         /// <summary>Which shard this process renders; null for the whole dataset (no <c>-nerfShard</c>).</summary>
         public ShardSpec? Shard { get; private set; }
 
-        /// <summary><see cref="Shard"/>'s index, for callers that only need the number.</summary>
-        public int? ShardIndex => Shard?.Index;
-
-        /// <summary><see cref="Shard"/>'s count, for callers that only need the number.</summary>
-        public int? ShardCount => Shard?.Count;
-
         /// <summary>Mistakes in the plugin's arguments; the run must stop when there is any.</summary>
         public List<ValidationProblem> Problems { get; } = new List<ValidationProblem>();
 

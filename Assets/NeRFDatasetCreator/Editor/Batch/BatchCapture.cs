@@ -78,7 +78,7 @@ namespace NerfDatasetCreator.Editor
             if (target == null)
                 return Refuse("the target is missing", new[] { new ValidationProblem("target", settings.Target ?? "", "names no object in the open scene.", "Set \"target\" in the config to the object's hierarchy path or name.") });
 
-            var shard = args.ShardCount.HasValue ? new ShardSpec(args.ShardIndex.Value, args.ShardCount.Value) : default;
+            var shard = args.Shard ?? ShardSpec.Whole;
             var prepared = DatasetCapture.Prepare(settings, target, projectRoot, shard, args.OutputFolder);
             if (!prepared.IsValid) return Refuse("the settings cannot be captured", prepared.Problems);
 

@@ -85,7 +85,7 @@ namespace NerfDatasetCreator.Tests
             Assert.That(a.Problems[0].Reason, Does.Contain(reason));
             Assert.That(a.Problems[0].Fix, Does.Contain(fix));
             Assert.That(a.Shard, Is.Null);
-            Assert.That(a.ShardIndex, Is.Null);
+            Assert.That(a.Shard, Is.Null);
         }
 
         [TestCase("0/1", 0, 1)]
@@ -97,8 +97,8 @@ namespace NerfDatasetCreator.Tests
             var a = BatchArguments.Parse(new[] { "-nerfShard", shard, "-nerfConfig", "a.json" });
             Assert.That(a.IsValid, Is.True);
             Assert.That(a.Shard, Is.EqualTo(new ShardSpec(index, count)));
-            Assert.That(a.ShardIndex, Is.EqualTo(index));
-            Assert.That(a.ShardCount, Is.EqualTo(count));
+            Assert.That(a.Shard.Value.Index, Is.EqualTo(index));
+            Assert.That(a.Shard.Value.Count, Is.EqualTo(count));
         }
     }
 }
