@@ -1,6 +1,7 @@
 // Eye depth: the distance along the camera's viewing axis, -z of the view-space position, in Unity units (metres).
 // Taken from the interpolated view position rather than the z-buffer, so no _ZBufferParams, reversed-Z or
-// platform depth conventions are involved; view-space z is affine in screen space, so interpolation is exact.
+// platform depth conventions are involved. View-space z is linear across a triangle, and the rasteriser's
+// perspective-correct interpolation reproduces such an attribute exactly at every pixel.
 // Rendered into an R32_SFloat target cleared to 0, so 0 means "no geometry".
 Shader "Hidden/NerfDatasetCreator/Depth"
 {
