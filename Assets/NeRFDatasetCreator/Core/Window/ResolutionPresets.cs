@@ -35,6 +35,12 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>
+        /// The entry the popup shows: "Custom" once the user chose it, even for a square preset size (else the
+        /// width and height fields would vanish as soon as they were revealed), otherwise the size's own entry.
+        /// </summary>
+        public static int Shown(int width, int height, bool customChosen) => customChosen ? CustomIndex : IndexOf(width, height);
+
+        /// <summary>
         /// Applies a popup choice: a preset sets both sides; "Custom" keeps the current size, so choosing it never
         /// changes the dataset, it only reveals the fields.
         /// </summary>

@@ -96,6 +96,25 @@ namespace NerfDatasetCreator
             return names.Count == 0 ? "none" : string.Join(", ", names);
         }
 
+        /// <summary>The formation popup's entries, in <see cref="FormationKinds.All"/> order.</summary>
+        public static string[] FormationLabels() => FormationKinds.All.Select(FormationLabel).ToArray();
+
+        public static string FormationLabel(FormationKind kind)
+        {
+            switch (kind)
+            {
+                case FormationKind.Halo: return "Halo (one ring)";
+                case FormationKind.Sphere: return "Sphere (even, all around)";
+                case FormationKind.SemiSphere: return "Semi-sphere (upper half, spiral)";
+                case FormationKind.Random: return "Random (seeded)";
+                case FormationKind.Orbit: return "Orbit (rising spiral path)";
+                default: throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a formation kind");
+            }
+        }
+
+        /// <summary>The depth and normal popups' entries, in <see cref="ExtraOutput"/> order.</summary>
+        public static readonly string[] ExtraOutputLabels = { "None", "PNG (16-bit / 8-bit)", "EXR (float)", "PNG + EXR" };
+
         /// <summary>Joins lines for a help box.</summary>
         public static string Lines(IEnumerable<string> lines) => string.Join("\n", lines);
     }

@@ -36,6 +36,14 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void CustomStaysShownOnceChosenEvenForAPresetSize()
+        {
+            Assert.That(ResolutionPresets.Shown(800, 800, customChosen: true), Is.EqualTo(ResolutionPresets.CustomIndex));
+            Assert.That(ResolutionPresets.Shown(800, 800, customChosen: false), Is.EqualTo(1));
+            Assert.That(ResolutionPresets.Shown(640, 480, customChosen: false), Is.EqualTo(ResolutionPresets.CustomIndex));
+        }
+
+        [Test]
         public void TheDefaultSizeIsTheMiddlePreset()
         {
             var settings = new DatasetSettings();

@@ -90,5 +90,15 @@ namespace NerfDatasetCreator.Tests
             Assert.That(WindowText.Progress(12, 400, 0), Is.EqualTo("12 / 400 views"));
             Assert.That(WindowText.Progress(12, 400, 7.25), Is.EqualTo("12 / 400 views, 7.3 views/s").Or.EqualTo("12 / 400 views, 7.2 views/s"));
         }
+
+        [Test]
+        public void ThePopupsListEveryKindInEnumOrder()
+        {
+            Assert.That(WindowText.FormationLabels().Length, Is.EqualTo(FormationKinds.All.Count));
+            for (var i = 0; i < FormationKinds.All.Count; i++) Assert.That((int)FormationKinds.All[i], Is.EqualTo(i));
+            Assert.That(WindowText.FormationLabels()[(int)FormationKind.SemiSphere], Does.StartWith("Semi-sphere"));
+            Assert.That(WindowText.ExtraOutputLabels.Length, Is.EqualTo(System.Enum.GetValues(typeof(ExtraOutput)).Length));
+            Assert.That(WindowText.ExtraOutputLabels[(int)ExtraOutput.PngAndExr], Is.EqualTo("PNG + EXR"));
+        }
     }
 }

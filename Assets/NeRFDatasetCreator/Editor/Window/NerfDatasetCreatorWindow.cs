@@ -1,0 +1,285 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using UnityEditor;
+using UnityEngine;
+
+namespace NerfDatasetCreator.Editor
+{
+    /// <summary>
+    /// Window ▸ NeRF Dataset Creator: the steps of making a dataset in the order of the work, with Core's validation
+    /// under each field as you type, the rig drawn in the Scene view, presets, batch configs and a background capture.
+    /// Settings live in <see cref="NerfDatasetCreatorSettings"/> (per project, undoable); this window keeps only the
+    /// scene objects they name and what is open.
+    /// </summary>
+    public sealed class NerfDatasetCreatorWindow : EditorWindow
+    {
+        const string EditUndoName = "Edit NeRF dataset settings";
+
+        [SerializeField] GameObject target;
+        [SerializeField] Camera templateCamera;
+        [SerializeField] NerfDatasetPreset preset;
+        [SerializeField] WindowFoldouts foldouts = new WindowFoldouts();
+        [SerializeField] ConfigReport report = new ConfigReport();
+        [SerializeField] Vector2 scroll;
+        [SerializeField] bool previewOn = true;
+
+        readonly CaptureController capture = new CaptureController();
+        PreviewDriver preview;
+        FieldProblems problems = FieldProblems.None;
+        TargetInfo targetInfo;
+        string pickNotice;
+        string checkedKey;
+        bool checkNeeded = true;
+
+        [MenuItem("Window/NeRF Dataset Creator")]
+        public static void Open()
+        {
+            var window = GetWindow<NerfDatasetCreatorWindow>("NeRF Dataset Creator");
+            window.minSize = new Vector2(340, 400);
+        }
+
+        static NerfDatasetCreatorSettings Store => NerfDatasetCreatorSettings.instance;
+
+        /// <summary>The project folder (the parent of Assets/): relative output folders and the default folder are resolved against it.</summary>
+        static string ProjectRoot => Path.GetDirectoryName(Application.dataPath);
+
+        void OnEnable()
+        {
+            preview = new PreviewDriver();
+            preview.Changed += Repaint;
+            preview.Enabled = previewOn;
+            Undo.undoRedoPerformed += OnUndoRedo;
+            ResolveSceneObjects();
+            checkNeeded = true;
+        }
+
+        void OnDisable()
+        {
+            Undo.undoRedoPerformed -= OnUndoRedo;
+            preview?.Dispose();
+            preview = null;
+        }
+
+        // The disk may have changed while the window was in the background (a dataset deleted or created).
+        void OnFocus() => checkNeeded = true;
+
+        void OnHierarchyChange()
+        {
+            ResolveSceneObjects();
+            checkNeeded = true;
+        }
+
+        void OnUndoRedo()
+        {
+            Store.SaveToProject();
+            ResolveSceneObjects();
+            checkNeeded = true;
+            Repaint();
+        }
+
+        /// <summary>
+        /// Ten times a second: follows the target's transform and size, rebuilds the preview when the plan changed,
+        /// and re-validates when anything validation reads changed.
+        /// </summary>
+        void OnInspectorUpdate()
+        {
+            if (preview == null) return;
+            var settings = Store.Settings;
+            targetInfo = TargetInfo.Of(target);
+            if (preview.Enabled) preview.Update(settings, targetInfo);
+            if (capture.IsRunning)
+            {
+                // The run's own folder is being written: checking it now would only report the run itself.
+                Repaint();
+                return;
+            }
+            var key = CheckKey(settings);
+            if (checkNeeded || key != checkedKey) Check(settings, key);
+        }
+
+        string CheckKey(DatasetSettings settings)
+        {
+            var measure = targetInfo?.Measure ?? PlanTarget.AtOrigin;
+            return DatasetSettingsJson.Write(settings) + "|" + (target == null ? 0 : target.GetInstanceID()) + "|" +
+                   measure.Centre + "|" + measure.BoundingRadius.ToString("R", System.Globalization.CultureInfo.InvariantCulture);
+        }
+
+        /// <summary>Runs the capture's own checks (settings, output folder, target, environment) so the window shows exactly what Create would refuse.</summary>
+        void Check(DatasetSettings settings, string key)
+        {
+            checkedKey = key;
+            checkNeeded = false;
+            var warnings = new List<ValidationProblem>();
+            List<ValidationProblem> errors;
+            try
+            {
+                var prepared = DatasetCapture.Prepare(settings.Clone(), target, ProjectRoot);
+                errors = new List<ValidationProblem>(prepared.Problems);
+                warnings.AddRange(prepared.Warnings);
+            }
+            catch (Exception e)
+            {
+                errors = new List<ValidationProblem> { new ValidationProblem("capture", e.GetType().Name, e.Message, "Report this with the console log.") };
+            }
+            var targetPath = SceneObjectPath.Check(WindowFields.Target, target);
+            if (targetPath != null) warnings.Add(targetPath);
+            problems = new FieldProblems(errors, warnings);
+            Repaint();
+        }
+
+        void OnGUI()
+        {
+            var context = new WindowContext(Store.Settings.Clone(), problems, target, targetInfo, templateCamera, capture.IsRunning, foldouts,
+                action => EditorApplication.delayCall += () => action())
+            {
+                PickNotice = pickNotice,
+            };
+            scroll = EditorGUILayout.BeginScrollView(scroll);
+            preset = PresetSection.Draw(context, preset, report, new PresetSection.Actions
+            {
+                SavePreset = SavePreset,
+                LoadPreset = LoadPreset,
+                SaveConfig = SaveConfig,
+                LoadConfig = LoadConfig,
+            });
+
+            using (new EditorGUI.DisabledScope(capture.IsRunning))
+            {
+                EditorGUI.BeginChangeCheck();
+                TargetSection.Draw(context);
+                CameraSection.Draw(context);
+                RigSection.Draw(context);
+                OutputsSection.Draw(context);
+                OutputFolderSection.Draw(context, ProjectRoot, ChooseFolder);
+                if (EditorGUI.EndChangeCheck()) Commit(context.Settings, EditUndoName);
+            }
+            target = context.Target;
+            templateCamera = context.TemplateCamera;
+            pickNotice = context.PickNotice;
+
+            PreviewSection.Draw(preview);
+            previewOn = preview.Enabled;
+            CreateSection.Draw(context, capture, StartCapture);
+            EditorGUILayout.EndScrollView();
+        }
+
+        /// <summary>Stores edited settings as one undo step, unless nothing actually changed (a click on the same value).</summary>
+        void Commit(DatasetSettings edited, string undoName)
+        {
+            if (DatasetSettingsJson.Write(edited) == DatasetSettingsJson.Write(Store.Settings)) return;
+            Store.Apply(edited, undoName);
+            checkNeeded = true;
+            Repaint();
+        }
+
+        /// <summary>Finds the target and template camera again from their stored paths (after a restart, an undo, or a scene change).</summary>
+        void ResolveSceneObjects()
+        {
+            var settings = Store.Settings;
+            if (SceneObjectPath.Of(target) != settings.Target) target = SceneObjectPath.Find(settings.Target);
+            var cameraPath = settings.Camera?.CopyFromCamera ?? "";
+            var currentCamera = templateCamera == null ? "" : SceneObjectPath.Of(templateCamera.gameObject);
+            if (currentCamera != cameraPath)
+            {
+                var found = SceneObjectPath.Find(cameraPath);
+                templateCamera = found == null ? null : found.GetComponent<Camera>();
+            }
+        }
+
+        void StartCapture()
+        {
+            if (this == null) return;
+            capture.Start(Store.Settings, target, ProjectRoot, () =>
+            {
+                if (this != null) Repaint();
+            });
+        }
+
+        void ChooseFolder(string start)
+        {
+            var chosen = EditorUtility.OpenFolderPanel("Parent folder of the dataset", start ?? ProjectRoot, "");
+            if (string.IsNullOrEmpty(chosen) || this == null) return;
+            var edited = Store.Settings.Clone();
+            edited.OutputFolder = chosen;
+            Commit(edited, "Choose NeRF dataset folder");
+        }
+
+        void SavePreset()
+        {
+            var path = EditorUtility.SaveFilePanelInProject("Save NeRF dataset preset", Store.Settings.Name + " preset", "asset",
+                "A preset keeps every setting of the window (camera, rig, outputs, folder) as a project asset.");
+            if (string.IsNullOrEmpty(path)) return;
+            var asset = CreateInstance<NerfDatasetPreset>();
+            asset.StoreSettings(Store.Settings);
+            AssetDatabase.CreateAsset(asset, path);
+            AssetDatabase.SaveAssets();
+            preset = asset;
+            report.Set("Saved preset " + path + ".", MessageType.Info);
+            Repaint();
+        }
+
+        void LoadPreset(NerfDatasetPreset chosen)
+        {
+            if (chosen == null || this == null) return;
+            Commit(chosen.ApplyTo(Store.Settings), "Load NeRF dataset preset");
+            report.Set("Loaded preset " + AssetDatabase.GetAssetPath(chosen) + " (the target stays as it was).", MessageType.Info);
+            Repaint();
+        }
+
+        void SaveConfig()
+        {
+            var path = EditorUtility.SaveFilePanel("Save config for batch mode", ProjectRoot, Store.Settings.Name + ".json", "json");
+            if (string.IsNullOrEmpty(path)) return;
+            try
+            {
+                File.WriteAllText(path, DatasetSettingsJson.Write(Store.Settings));
+                report.Set("Saved " + path + ". Batch mode: Unity -batchmode -projectPath <project> -executeMethod " +
+                           "NerfDatasetCreator.Editor.BatchCapture.Run -nerfConfig " + path + " -logFile -", MessageType.Info);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                report.Set("Could not write " + path + ": " + e.Message, MessageType.Error);
+            }
+            if (this != null) Repaint();
+        }
+
+        void LoadConfig()
+        {
+            var path = EditorUtility.OpenFilePanel("Load NeRF dataset config", ProjectRoot, "json");
+            if (string.IsNullOrEmpty(path) || this == null) return;
+            SettingsReadResult read;
+            try
+            {
+                read = DatasetSettingsJson.ReadFile(path);
+            }
+            catch (SettingsFormatException e)
+            {
+                report.Set(WindowText.ConfigError(e), MessageType.Error);
+                Repaint();
+                return;
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                report.Set("Could not read " + path + ": " + e.Message + " The window's settings are unchanged.", MessageType.Error);
+                Repaint();
+                return;
+            }
+            var loaded = read.Settings;
+            var warnings = new List<ValidationProblem>(read.Warnings);
+            var found = SceneObjectPath.Find(loaded.Target);
+            if (found == null && target != null)
+            {
+                if (!string.IsNullOrEmpty(loaded.Target))
+                    warnings.Add(new ValidationProblem("target", "\"" + loaded.Target + "\"", "is not in the open scenes, so the window keeps its target '" + target.name + "'.",
+                        "Open the config's scene (" + (loaded.Scene.Length == 0 ? "not named" : loaded.Scene) + ") to use its target."));
+                loaded.Target = SceneObjectPath.Of(target);
+                loaded.Scene = target.scene.path;
+            }
+            Commit(loaded, "Load NeRF dataset config");
+            ResolveSceneObjects();
+            report.Set("Loaded " + path + ".", warnings.Count == 0 ? MessageType.Info : MessageType.Warning, warnings);
+            Repaint();
+        }
+    }
+}
