@@ -50,7 +50,7 @@ namespace NerfDatasetCreator.Editor
             preview.Changed += Repaint;
             preview.Enabled = previewOn;
             Undo.undoRedoPerformed += OnUndoRedo;
-            ResolveSceneObjects();
+            FollowSceneObjects();
             checkNeeded = true;
         }
 
@@ -66,7 +66,7 @@ namespace NerfDatasetCreator.Editor
 
         void OnHierarchyChange()
         {
-            ResolveSceneObjects();
+            FollowSceneObjects();
             checkNeeded = true;
         }
 
@@ -173,7 +173,31 @@ namespace NerfDatasetCreator.Editor
             Repaint();
         }
 
-        /// <summary>Finds the target and template camera again from their stored paths (after a restart, an undo, or a scene change).</summary>
+        /// <summary>
+        /// After a hierarchy change or a domain reload: an object the window still holds keeps being the target even
+        /// when it was renamed or moved (its stored path follows it); an object that is gone is looked up by path.
+        /// </summary>
+        void FollowSceneObjects()
+        {
+            var settings = Store.Settings;
+            var changed = false;
+            if (target != null && SceneObjectPath.Of(target) != settings.Target)
+            {
+                settings.Target = SceneObjectPath.Of(target);
+                settings.Scene = target.scene.path;
+                changed = true;
+            }
+            if (templateCamera != null && settings.Camera != null && SceneObjectPath.Of(templateCamera.gameObject) != settings.Camera.CopyFromCamera)
+            {
+                settings.Camera.CopyFromCamera = SceneObjectPath.Of(templateCamera.gameObject);
+                changed = true;
+            }
+            // A path that follows a rename is not an edit of the user's: it is saved, but not as an undo step.
+            if (changed) Store.SaveToProject();
+            ResolveSceneObjects();
+        }
+
+        /// <summary>Finds the target and template camera from their stored paths (after a restart, an undo, or a config load).</summary>
         void ResolveSceneObjects()
         {
             var settings = Store.Settings;
@@ -268,13 +292,17 @@ namespace NerfDatasetCreator.Editor
             var loaded = read.Settings;
             var warnings = new List<ValidationProblem>(read.Warnings);
             var found = SceneObjectPath.Find(loaded.Target);
-            if (found == null && target != null)
+            if (found == null)
             {
+                var kept = target == null ? "so no target is set" : "so the window keeps its target '" + target.name + "'";
                 if (!string.IsNullOrEmpty(loaded.Target))
-                    warnings.Add(new ValidationProblem("target", "\"" + loaded.Target + "\"", "is not in the open scenes, so the window keeps its target '" + target.name + "'.",
-                        "Open the config's scene (" + (loaded.Scene.Length == 0 ? "not named" : loaded.Scene) + ") to use its target."));
-                loaded.Target = SceneObjectPath.Of(target);
-                loaded.Scene = target.scene.path;
+                    warnings.Add(new ValidationProblem("target", "\"" + loaded.Target + "\"", "is not in the open scenes, " + kept + ".",
+                        "Open the config's scene (" + (loaded.Scene.Length == 0 ? "not named" : loaded.Scene) + ") and load the config again, or pick the target."));
+                if (target != null)
+                {
+                    loaded.Target = SceneObjectPath.Of(target);
+                    loaded.Scene = target.scene.path;
+                }
             }
             Commit(loaded, "Load NeRF dataset config");
             ResolveSceneObjects();

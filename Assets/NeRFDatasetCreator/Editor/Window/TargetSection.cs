@@ -18,8 +18,13 @@ namespace NerfDatasetCreator.Editor
             EditorGUILayout.BeginHorizontal();
             if (GUILayout.Button("Use selection"))
             {
-                Pick(c, Selection.activeGameObject);
-                GUI.changed = true;
+                if (Selection.activeGameObject == null)
+                    c.PickNotice = "Nothing is selected: click the object in the Hierarchy or the Scene view first.";
+                else
+                {
+                    Pick(c, Selection.activeGameObject);
+                    GUI.changed = true;
+                }
             }
             using (new EditorGUI.DisabledScope(c.TargetInfo == null || !c.TargetInfo.HasRenderers))
                 if (GUILayout.Button("Frame in Scene view"))
