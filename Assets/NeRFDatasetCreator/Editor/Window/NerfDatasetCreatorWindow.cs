@@ -31,6 +31,10 @@ namespace NerfDatasetCreator.Editor
         string pickNotice;
         string checkedKey;
         bool checkNeeded = true;
+        double lastTick;
+
+        /// <summary>How often the window follows the target and re-checks: Unity's own inspector rate (10 per second).</summary>
+        const double TickSeconds = 0.1;
 
         [MenuItem("Window/NeRF Dataset Creator")]
         public static void Open()
@@ -50,6 +54,10 @@ namespace NerfDatasetCreator.Editor
             preview.Changed += Repaint;
             preview.Enabled = previewOn;
             Undo.undoRedoPerformed += OnUndoRedo;
+            // Editor-wide events rather than the OnHierarchyChange / OnInspectorUpdate messages, which Unity sends only
+            // to the visible tab of a dock area (HostView), so the preview keeps following a docked-away window too.
+            EditorApplication.hierarchyChanged += OnHierarchyChanged;
+            EditorApplication.update += OnEditorUpdate;
             FollowSceneObjects();
             checkNeeded = true;
         }
@@ -57,6 +65,8 @@ namespace NerfDatasetCreator.Editor
         void OnDisable()
         {
             Undo.undoRedoPerformed -= OnUndoRedo;
+            EditorApplication.hierarchyChanged -= OnHierarchyChanged;
+            EditorApplication.update -= OnEditorUpdate;
             preview?.Dispose();
             preview = null;
         }
@@ -64,7 +74,7 @@ namespace NerfDatasetCreator.Editor
         // The disk may have changed while the window was in the background (a dataset deleted or created).
         void OnFocus() => checkNeeded = true;
 
-        void OnHierarchyChange()
+        void OnHierarchyChanged()
         {
             FollowSceneObjects();
             checkNeeded = true;
@@ -82,9 +92,11 @@ namespace NerfDatasetCreator.Editor
         /// Ten times a second: follows the target's transform and size, rebuilds the preview when the plan changed,
         /// and re-validates when anything validation reads changed.
         /// </summary>
-        void OnInspectorUpdate()
+        void OnEditorUpdate()
         {
-            if (preview == null) return;
+            var now = EditorApplication.timeSinceStartup;
+            if (now - lastTick < TickSeconds || preview == null) return;
+            lastTick = now;
             var settings = Store.Settings;
             targetInfo = TargetInfo.Of(target);
             if (preview.Enabled) preview.Update(settings, targetInfo);
