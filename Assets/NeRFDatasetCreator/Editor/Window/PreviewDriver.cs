@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Linq;
+using UnityEngine;
 
 namespace NerfDatasetCreator.Editor
 {
@@ -13,6 +14,7 @@ namespace NerfDatasetCreator.Editor
     {
         readonly RigPreview _preview = new RigPreview();
         PreviewPlanKey _key;
+        Bounds _bounds;
         bool _enabled;
 
         public PreviewDriver()
@@ -59,8 +61,10 @@ namespace NerfDatasetCreator.Editor
                 return;
             }
             var key = PreviewPlanKey.Of(settings, target.Measure);
-            if (key.Equals(_key)) return;
+            // The plan ignores the target's rotation, but its renderers' box turns with it: compare that too.
+            if (key.Equals(_key) && target.Bounds == _bounds) return;
             _key = key;
+            _bounds = target.Bounds;
 
             var problems = CapturePlan.Check(settings, target.Measure);
             if (problems.Count > 0)

@@ -1,3 +1,4 @@
+using System;
 using UnityEngine;
 
 namespace NerfDatasetCreator.Editor
@@ -23,7 +24,17 @@ namespace NerfDatasetCreator.Editor
         public static TargetInfo Of(GameObject target)
         {
             if (target == null) return null;
-            var measure = DatasetCapture.MeasureTarget(target);
+            PlanTarget measure;
+            try
+            {
+                measure = DatasetCapture.MeasureTarget(target);
+            }
+            catch (Exception e) when (e is ArgumentException || e is InvalidOperationException)
+            {
+                // Shown as "no bounds" here; Prepare reports the target's actual problem under the Target field.
+                var p = target.transform.position;
+                measure = new PlanTarget(new Vector3d(p.x, p.y, p.z), 0);
+            }
             var any = false;
             var bounds = new Bounds(target.transform.position, Vector3.zero);
             foreach (var renderer in target.GetComponentsInChildren<Renderer>())
