@@ -23,6 +23,8 @@ namespace NerfDatasetCreator.Editor
         public void Apply(DatasetSettings changed, string undoName)
         {
             if (changed == null) throw new System.ArgumentNullException(nameof(changed));
+            // ScriptableSingleton makes its instance HideAndDontSave; Unity's own hidden editor state is undone the
+            // same way (AnimationWindowKeySelection, UnityCsReference 2022.3/6000.0), and an EditMode test checks it.
             Undo.RecordObject(this, undoName);
             settings = changed.Clone();
             SaveToProject();
