@@ -1,0 +1,51 @@
+using System;
+using System.Globalization;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// What the Scene-view preview was last built from: the settings that move or shape cameras, and the target's
+    /// centre and radius. The window rebuilds the plan only when this key changes, not on every repaint. Names,
+    /// folders and output passes are left out because they change no camera.
+    /// </summary>
+    public sealed class PreviewPlanKey : IEquatable<PreviewPlanKey>
+    {
+        readonly string _text;
+
+        PreviewPlanKey(string text) => _text = text;
+
+        public static PreviewPlanKey Of(DatasetSettings settings, PlanTarget target)
+        {
+            if (settings == null) throw new ArgumentNullException(nameof(settings));
+            var shaping = settings.Clone();
+            shaping.Name = "x";
+            shaping.OutputFolder = "";
+            shaping.Scene = "";
+            shaping.Target = "";
+            shaping.Overwrite = OverwritePolicy.Never;
+            shaping.Loaders = TargetLoaders.All;
+            shaping.Background = new BackgroundSettings();
+            foreach (var split in DatasetSplits.All)
+            {
+                var s = shaping.Split(split);
+                if (s == null) continue;
+                s.Depth = ExtraOutput.None;
+                s.Normal = ExtraOutput.None;
+                s.Mask = false;
+            }
+            // Round-trip ("R") formatting: any change of a double changes the key; nothing is lost to rounding.
+            var text = DatasetSettingsJson.Write(shaping) + "|" +
+                       target.Centre.X.ToString("R", CultureInfo.InvariantCulture) + "," +
+                       target.Centre.Y.ToString("R", CultureInfo.InvariantCulture) + "," +
+                       target.Centre.Z.ToString("R", CultureInfo.InvariantCulture) + "," +
+                       target.BoundingRadius.ToString("R", CultureInfo.InvariantCulture);
+            return new PreviewPlanKey(text);
+        }
+
+        public bool Equals(PreviewPlanKey other) => other != null && string.Equals(_text, other._text, StringComparison.Ordinal);
+
+        public override bool Equals(object obj) => Equals(obj as PreviewPlanKey);
+
+        public override int GetHashCode() => StringComparer.Ordinal.GetHashCode(_text);
+    }
+}

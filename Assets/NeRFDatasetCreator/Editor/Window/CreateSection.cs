@@ -1,0 +1,54 @@
+using System;
+using System.IO;
+using UnityEditor;
+using UnityEngine;
+
+namespace NerfDatasetCreator.Editor
+{
+    /// <summary>Step 6: what will be made, anything still wrong, the Create button, progress with Cancel, and the result.</summary>
+    static class CreateSection
+    {
+        public static void Draw(WindowContext c, CaptureController capture, Action create)
+        {
+            SectionHeader.Draw(c, WindowStep.Create, "Create dataset");
+            EditorGUILayout.LabelField(WindowText.RunSummary(c.Settings), EditorStyles.wordWrappedLabel);
+
+            // Problems that no control above shows (the graphics device, the render pipeline, …) are listed here.
+            ValidationMessages.Show(c.Problems.NotCoveredBy(WindowFields.All(c.Settings)), MessageType.Error, withField: true);
+            ValidationMessages.Show(capture.StartProblems, MessageType.Error, withField: true);
+
+            if (capture.IsRunning)
+            {
+                var meter = capture.Meter;
+                var rect = EditorGUILayout.GetControlRect();
+                EditorGUI.ProgressBar(rect, meter == null ? 0 : (float)meter.Fraction,
+                    meter == null ? "Starting…" : WindowText.Progress(meter.Done, meter.Total, meter.ViewsPerSecond));
+                if (GUILayout.Button("Cancel")) capture.Cancel();
+                return;
+            }
+
+            var first = c.Problems.FirstIncompleteStep();
+            if (first.HasValue)
+                EditorGUILayout.LabelField("Fix step " + (int)first.Value + " (" + first.Value + ") first; its problems are marked in red.",
+                    EditorStyles.wordWrappedMiniLabel);
+            using (new EditorGUI.DisabledScope(c.Problems.HasErrors || c.Target == null))
+                if (GUILayout.Button("Create dataset", GUILayout.Height(28)))
+                    c.Later(create);
+
+            var result = capture.LastResult;
+            if (result == null) return;
+            var type = result.Succeeded ? MessageType.Info : result.Cancelled ? MessageType.Warning : MessageType.Error;
+            EditorGUILayout.HelpBox(result.Message, type);
+            var folder = result.Succeeded ? result.DatasetFolder : result.PartialFolder;
+            if (!string.IsNullOrEmpty(folder) && Directory.Exists(folder) && GUILayout.Button(RevealLabel(result.Succeeded)))
+                c.Later(() => EditorUtility.RevealInFinder(folder));
+        }
+
+        static string RevealLabel(bool succeeded)
+        {
+            var where = Application.platform == RuntimePlatform.OSXEditor ? "Reveal in Finder"
+                : Application.platform == RuntimePlatform.WindowsEditor ? "Show in Explorer" : "Open containing folder";
+            return succeeded ? where : where + " (partial files)";
+        }
+    }
+}

@@ -1,0 +1,235 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using UnityEditor;
+using UnityEngine;
+
+namespace NerfDatasetCreator.Editor
+{
+    /// <summary>
+    /// Window ▸ NeRF Dataset Creator: the steps of making a dataset in the order of the work, with Core's validation
+    /// under each field as you type, the rig drawn in the Scene view, presets, batch configs and a background capture.
+    /// Settings live in <see cref="NerfDatasetCreatorSettings"/> (per project, undoable); this window keeps only the
+    /// scene objects they name and what is open.
+    /// </summary>
+    public sealed partial class NerfDatasetCreatorWindow : EditorWindow
+    {
+        const string EditUndoName = "Edit NeRF dataset settings";
+
+        [SerializeField] GameObject target;
+        [SerializeField] Camera templateCamera;
+        [SerializeField] NerfDatasetPreset preset;
+        [SerializeField] WindowFoldouts foldouts = new WindowFoldouts();
+        [SerializeField] ConfigReport report = new ConfigReport();
+        [SerializeField] Vector2 scroll;
+        [SerializeField] bool previewOn = true;
+
+        readonly CaptureController capture = new CaptureController();
+        PreviewDriver preview;
+        FieldProblems problems = FieldProblems.None;
+        TargetInfo targetInfo;
+        string pickNotice;
+        string checkedKey;
+        bool checkNeeded = true;
+        double lastTick;
+
+        /// <summary>How often the window follows the target and re-checks: Unity's own inspector rate (10 per second).</summary>
+        const double TickSeconds = 0.1;
+
+        [MenuItem("Window/NeRF Dataset Creator")]
+        public static void Open()
+        {
+            var window = GetWindow<NerfDatasetCreatorWindow>("NeRF Dataset Creator");
+            window.minSize = new Vector2(340, 400);
+        }
+
+        static NerfDatasetCreatorSettings Store => NerfDatasetCreatorSettings.instance;
+
+        /// <summary>The project folder (the parent of Assets/): relative output folders and the default folder are resolved against it.</summary>
+        static string ProjectRoot => Path.GetDirectoryName(Application.dataPath);
+
+        void OnEnable()
+        {
+            preview = new PreviewDriver();
+            preview.Changed += Repaint;
+            preview.Enabled = previewOn;
+            Undo.undoRedoPerformed += OnUndoRedo;
+            // Editor-wide events rather than the OnHierarchyChange / OnInspectorUpdate messages, which Unity sends only
+            // to the visible tab of a dock area (HostView), so the preview keeps following a docked-away window too.
+            EditorApplication.hierarchyChanged += OnHierarchyChanged;
+            EditorApplication.update += OnEditorUpdate;
+            FollowSceneObjects();
+            checkNeeded = true;
+        }
+
+        void OnDisable()
+        {
+            Undo.undoRedoPerformed -= OnUndoRedo;
+            EditorApplication.hierarchyChanged -= OnHierarchyChanged;
+            EditorApplication.update -= OnEditorUpdate;
+            preview?.Dispose();
+            preview = null;
+        }
+
+        // The disk may have changed while the window was in the background (a dataset deleted or created).
+        void OnFocus() => checkNeeded = true;
+
+        void OnHierarchyChanged()
+        {
+            FollowSceneObjects();
+            checkNeeded = true;
+        }
+
+        void OnUndoRedo()
+        {
+            Store.SaveToProject();
+            ResolveSceneObjects();
+            checkNeeded = true;
+            Repaint();
+        }
+
+        /// <summary>
+        /// Ten times a second: follows the target's transform and size, rebuilds the preview when the plan changed,
+        /// and re-validates when anything validation reads changed.
+        /// </summary>
+        void OnEditorUpdate()
+        {
+            var now = EditorApplication.timeSinceStartup;
+            if (now - lastTick < TickSeconds || preview == null) return;
+            lastTick = now;
+            var settings = Store.Settings;
+            targetInfo = TargetInfo.Of(target);
+            if (preview.Enabled) preview.Update(settings, targetInfo);
+            if (capture.IsRunning)
+            {
+                // The run's own folder is being written: checking it now would only report the run itself.
+                Repaint();
+                return;
+            }
+            var key = CheckKey(settings);
+            if (checkNeeded || key != checkedKey) Check(settings, key);
+        }
+
+        string CheckKey(DatasetSettings settings)
+        {
+            var measure = targetInfo?.Measure ?? PlanTarget.AtOrigin;
+            return DatasetSettingsJson.Write(settings) + "|" + (target == null ? 0 : target.GetInstanceID()) + "|" +
+                   measure.Centre + "|" + measure.BoundingRadius.ToString("R", System.Globalization.CultureInfo.InvariantCulture);
+        }
+
+        /// <summary>Runs the capture's own checks (settings, output folder, target, environment) so the window shows exactly what Create would refuse.</summary>
+        void Check(DatasetSettings settings, string key)
+        {
+            checkedKey = key;
+            checkNeeded = false;
+            var warnings = new List<ValidationProblem>();
+            List<ValidationProblem> errors;
+            try
+            {
+                var prepared = DatasetCapture.Prepare(settings.Clone(), target, ProjectRoot);
+                errors = new List<ValidationProblem>(prepared.Problems);
+                warnings.AddRange(prepared.Warnings);
+            }
+            catch (Exception e)
+            {
+                errors = new List<ValidationProblem> { new ValidationProblem("capture", e.GetType().Name, e.Message, "Report this with the console log.") };
+            }
+            var targetPath = SceneObjectPath.Check(WindowFields.Target, target);
+            if (targetPath != null) warnings.Add(targetPath);
+            problems = new FieldProblems(errors, warnings);
+            Repaint();
+        }
+
+        void OnGUI()
+        {
+            var context = new WindowContext(Store.Settings.Clone(), problems, target, targetInfo, templateCamera, capture.IsRunning, foldouts,
+                action => EditorApplication.delayCall += () => action())
+            {
+                PickNotice = pickNotice,
+            };
+            scroll = EditorGUILayout.BeginScrollView(scroll);
+            preset = PresetSection.Draw(context, preset, report, new PresetSection.Actions
+            {
+                SavePreset = SavePreset,
+                LoadPreset = LoadPreset,
+                SaveConfig = SaveConfig,
+                LoadConfig = LoadConfig,
+            });
+
+            using (new EditorGUI.DisabledScope(capture.IsRunning))
+            {
+                EditorGUI.BeginChangeCheck();
+                TargetSection.Draw(context);
+                CameraSection.Draw(context);
+                RigSection.Draw(context);
+                OutputsSection.Draw(context);
+                OutputFolderSection.Draw(context, ProjectRoot, ChooseFolder);
+                if (EditorGUI.EndChangeCheck()) Commit(context.Settings, EditUndoName);
+            }
+            target = context.Target;
+            templateCamera = context.TemplateCamera;
+            pickNotice = context.PickNotice;
+
+            PreviewSection.Draw(preview);
+            previewOn = preview.Enabled;
+            CreateSection.Draw(context, capture, StartCapture);
+            EditorGUILayout.EndScrollView();
+        }
+
+        /// <summary>Stores edited settings as one undo step, unless nothing actually changed (a click on the same value).</summary>
+        void Commit(DatasetSettings edited, string undoName)
+        {
+            if (DatasetSettingsJson.Write(edited) == DatasetSettingsJson.Write(Store.Settings)) return;
+            Store.Apply(edited, undoName);
+            checkNeeded = true;
+            Repaint();
+        }
+
+        /// <summary>
+        /// After a hierarchy change or a domain reload: an object the window still holds keeps being the target even
+        /// when it was renamed or moved (its stored path follows it); an object that is gone is looked up by path.
+        /// </summary>
+        void FollowSceneObjects()
+        {
+            var settings = Store.Settings;
+            var changed = false;
+            if (target != null && SceneObjectPath.Of(target) != settings.Target)
+            {
+                settings.Target = SceneObjectPath.Of(target);
+                settings.Scene = target.scene.path;
+                changed = true;
+            }
+            if (templateCamera != null && settings.Camera != null && SceneObjectPath.Of(templateCamera.gameObject) != settings.Camera.CopyFromCamera)
+            {
+                settings.Camera.CopyFromCamera = SceneObjectPath.Of(templateCamera.gameObject);
+                changed = true;
+            }
+            // A path that follows a rename is not an edit of the user's: it is saved, but not as an undo step.
+            if (changed) Store.SaveToProject();
+            ResolveSceneObjects();
+        }
+
+        /// <summary>Finds the target and template camera from their stored paths (after a restart, an undo, or a config load).</summary>
+        void ResolveSceneObjects()
+        {
+            var settings = Store.Settings;
+            if (SceneObjectPath.Of(target) != settings.Target) target = SceneObjectPath.Find(settings.Target);
+            var cameraPath = settings.Camera?.CopyFromCamera ?? "";
+            var currentCamera = templateCamera == null ? "" : SceneObjectPath.Of(templateCamera.gameObject);
+            if (currentCamera != cameraPath)
+            {
+                var found = SceneObjectPath.Find(cameraPath);
+                templateCamera = found == null ? null : found.GetComponent<Camera>();
+            }
+        }
+
+        void StartCapture()
+        {
+            if (this == null) return;
+            capture.Start(Store.Settings, target, ProjectRoot, () =>
+            {
+                if (this != null) Repaint();
+            });
+        }
+    }
+}

@@ -1,0 +1,31 @@
+using UnityEditor;
+
+namespace NerfDatasetCreator.Editor
+{
+    /// <summary>Step 4: per split, the extra passes next to the RGBA image: depth and normals (PNG and/or EXR) and the mask.</summary>
+    static class OutputsSection
+    {
+        public static void Draw(WindowContext c)
+        {
+            SectionHeader.Draw(c, WindowStep.Outputs, "Outputs per split");
+            EditorGUILayout.LabelField("Every view writes its RGBA image; add passes per split.", EditorStyles.wordWrappedMiniLabel);
+            foreach (var split in DatasetSplits.All)
+            {
+                var settings = c.Settings.Split(split);
+                EditorGUILayout.BeginHorizontal();
+                SectionHeader.Swatch(RigPreview.ColorOf((PreviewSplit)(int)split));
+                EditorGUILayout.LabelField(DatasetSplits.Name(split), EditorStyles.boldLabel);
+                EditorGUILayout.EndHorizontal();
+                using (new EditorGUI.IndentLevelScope())
+                {
+                    settings.Depth = (ExtraOutput)EditorGUILayout.Popup("Depth", (int)settings.Depth, WindowText.ExtraOutputLabels);
+                    ValidationMessages.For(c, WindowFields.SplitField(split, "depth"));
+                    settings.Normal = (ExtraOutput)EditorGUILayout.Popup("Normal", (int)settings.Normal, WindowText.ExtraOutputLabels);
+                    ValidationMessages.For(c, WindowFields.SplitField(split, "normal"));
+                    settings.Mask = EditorGUILayout.Toggle("Mask", settings.Mask);
+                    ValidationMessages.For(c, WindowFields.SplitField(split, "mask"));
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,42 @@
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+using UnityEditor;
+
+namespace NerfDatasetCreator.Editor.Tests
+{
+    /// <summary>The window against the real capture entry point: it opens cleanly, and what Prepare reports lands next to a field.</summary>
+    [TestFixture]
+    public class WindowTests
+    {
+        [Test]
+        public void TheWindowOpensAndClosesWithoutErrors()
+        {
+            // An exception in OnEnable, OnGUI or OnDisable is logged as an error, which fails the test.
+            var window = EditorWindow.GetWindow<NerfDatasetCreatorWindow>("NeRF Dataset Creator");
+            Assert.That(window, Is.Not.Null);
+            window.Close();
+        }
+
+        [Test]
+        public void AMissingTargetIsReportedUnderTheTargetField()
+        {
+            var root = Path.Combine(Path.GetTempPath(), "nerf-window-test-" + System.Guid.NewGuid().ToString("N"));
+            Directory.CreateDirectory(root);
+            try
+            {
+                var prepared = DatasetCapture.Prepare(new DatasetSettings(), null, root);
+                Assert.That(prepared.IsValid, Is.False);
+                var problems = new FieldProblems(prepared.Problems, prepared.Warnings);
+                Assert.That(problems.ErrorsFor(WindowFields.Target), Is.Not.Empty,
+                    "Prepare's problem for a missing target should use the field \"target\"; it said: " +
+                    string.Join("; ", prepared.Problems.Select(p => p.Field)));
+                Assert.That(problems.StepHasErrors(WindowStep.Target), Is.True);
+            }
+            finally
+            {
+                Directory.Delete(root, true);
+            }
+        }
+    }
+}
