@@ -61,11 +61,18 @@ namespace NerfDatasetCreator.Editor
             try
             {
                 CaptureSession.CheckTarget(target, options.Isolation);
+            }
+            catch (CaptureException e)
+            {
+                problems.Add(new ValidationProblem("target", target == null ? "none" : target.name, e.Message, ""));
+            }
+            try
+            {
                 CaptureEnvironment.ThrowIfCannotRender(options.EffectivePasses);
             }
             catch (CaptureException e)
             {
-                problems.Add(new ValidationProblem(target == null ? "target" : "capture", target == null ? "none" : target.name, e.Message, ""));
+                problems.Add(new ValidationProblem("capture", CaptureEnvironment.RenderPipelineName, e.Message, ""));
             }
 
             var run = DatasetRun.Prepare(settings, MeasureTarget(target), projectRoot, shard, datasetFolder);
