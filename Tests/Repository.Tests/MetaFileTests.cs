@@ -89,6 +89,12 @@ namespace NerfDatasetCreator.Repository.Tests
                 Assert.That(MetaFiles.OrphanedMetas(tree), Is.Empty);
                 Assert.That(File.Exists(Path.Combine(tree, "package.json.meta")), Is.True);
                 Assert.That(Directory.Exists(Path.Combine(tree, "Core")), Is.True, "the plugin's Core folder sits at the package root");
+                // The sample is imported by Package Manager into Assets/, so it needs its .metas too.
+                var sample = Path.Combine(tree, "Samples~", "NeRFSample");
+                Assert.That(File.Exists(Path.Combine(sample, "NeRFSample.unity")), Is.True);
+                Assert.That(MetaFiles.MissingMetas(sample), Is.Empty);
+                var declared = Newtonsoft.Json.Linq.JObject.Parse(File.ReadAllText(Path.Combine(tree, "package.json")))["samples"][0]["path"];
+                Assert.That(Directory.Exists(Path.Combine(tree, (string)declared)), Is.True, "package.json's sample path exists in the package");
             }
             finally
             {
