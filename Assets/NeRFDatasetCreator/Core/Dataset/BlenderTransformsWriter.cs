@@ -13,11 +13,14 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class BlenderTransformsWriter
     {
-        /// <summary>Output units per step of a 16-bit depth PNG: millimetres of a metre (one Unity unit).</summary>
+        /// <summary>
+        /// Output units per step of a 16-bit depth PNG: thousandths of an output unit (millimetres when the scale is 1
+        /// and a Unity unit is a metre); depth is written in output units, metric z × the normalisation scale.
+        /// </summary>
         public const double DepthUnitScale = 0.001;
 
-        /// <summary>instant-ngp's scene-box multiplier; 1 suits a single object at nerf_synthetic's scale.</summary>
-        public const int AabbScale = 1;
+        /// <summary>The key of the <see cref="SceneNormalisation.ToJson"/> record in the transforms files and dataset_config.json.</summary>
+        public const string SceneNormalisationKey = "scene_normalisation";
 
         /// <summary>
         /// The split's file. The depth scale keys follow the split's settings, not its frames: a shard that drew no
@@ -25,9 +28,12 @@ namespace NerfDatasetCreator
         /// </summary>
         public static string Write(CapturePlan plan, DatasetSplit split) =>
             Write(plan.Intrinsics, plan.RotationOf(split), plan.ViewsOf(split).ToList(),
-                ExtraOutputs.HasPng(plan.Settings.Split(split).Depth));
+                ExtraOutputs.HasPng(plan.Settings.Split(split).Depth), plan.AabbScale, plan.Normalisation);
 
-        public static string Write(CameraIntrinsics intrinsics, double rotation, IReadOnlyList<PlannedView> views, bool declareDepthScale)
+        /// <param name="aabbScale">instant-ngp's scene cube (<see cref="NerfDatasetCreator.AabbScale"/>); 1 for one object at nerf_synthetic's scale.</param>
+        /// <param name="normalisation">Written as <c>scene_normalisation</c>, which every loader ignores; null writes none.</param>
+        public static string Write(CameraIntrinsics intrinsics, double rotation, IReadOnlyList<PlannedView> views, bool declareDepthScale,
+            int aabbScale, SceneNormalisation normalisation)
         {
             if (intrinsics == null) throw new ArgumentNullException(nameof(intrinsics));
             var anyDepthPng = declareDepthScale || views.Any(v => v.Writes(DatasetFileKind.DepthPng));
@@ -44,11 +50,16 @@ namespace NerfDatasetCreator
                     Number(w, "cy", intrinsics.Cy);
                     w.WritePropertyName("w"); w.WriteValue(intrinsics.Width);
                     w.WritePropertyName("h"); w.WriteValue(intrinsics.Height);
-                    w.WritePropertyName("aabb_scale"); w.WriteValue(AabbScale);
+                    w.WritePropertyName("aabb_scale"); w.WriteValue(aabbScale);
                     if (anyDepthPng)
                     {
                         Number(w, "integer_depth_scale", DepthUnitScale);
                         Number(w, "depth_unit_scale_factor", DepthUnitScale);
+                    }
+                    if (normalisation != null)
+                    {
+                        w.WritePropertyName(SceneNormalisationKey);
+                        JsonNumbers.WriteToken(w, normalisation.ToJson());
                     }
                     w.WritePropertyName("frames");
                     w.WriteStartArray();

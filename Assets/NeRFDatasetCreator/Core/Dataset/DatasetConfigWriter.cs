@@ -6,7 +6,8 @@ namespace NerfDatasetCreator
     /// <summary>
     /// <c>dataset_config.json</c>: enough to regenerate the dataset — the full settings (the same object a config
     /// file holds, so it can be used as one), the seed, the resolved distance, the target and how output poses
-    /// relate to the Unity world, the plugin and Unity versions and the UTC date.
+    /// relate to the Unity world (<c>scene_normalisation</c>, as in the transforms files), the plugin and Unity versions
+    /// and the UTC date.
     /// </summary>
     public static class DatasetConfigWriter
     {
@@ -41,7 +42,9 @@ namespace NerfDatasetCreator
                     else w.WriteNull();
                     w.WriteEndObject();
                     w.WritePropertyName("outputFrame");
-                    w.WriteValue("Blender world (right-handed, +Z up): output = (x, z, y) of (Unity position - target.unityCentre), scale 1; OpenGL camera axes");
+                    w.WriteValue("Blender world (right-handed, +Z up): output = scene_normalisation.scale * ((x, z, y) of the Unity position - scene_normalisation.centre); OpenGL camera axes; depth files in output units");
+                    w.WritePropertyName(BlenderTransformsWriter.SceneNormalisationKey);
+                    JsonNumbers.WriteToken(w, plan.Normalisation.ToJson());
                     w.WritePropertyName("views");
                     w.WriteStartObject();
                     foreach (var split in DatasetSplits.All)

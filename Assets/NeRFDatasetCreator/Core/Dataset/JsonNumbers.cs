@@ -32,6 +32,34 @@ namespace NerfDatasetCreator
 
         public static void Write(JsonWriter writer, double value) => writer.WriteRawValue(Format(value));
 
+        /// <summary>A JSON tree (e.g. <see cref="SceneNormalisation.ToJson"/>) with every double through <see cref="Format"/>.</summary>
+        public static void WriteToken(JsonWriter writer, Newtonsoft.Json.Linq.JToken token)
+        {
+            switch (token.Type)
+            {
+                case Newtonsoft.Json.Linq.JTokenType.Object:
+                    writer.WriteStartObject();
+                    foreach (var property in ((Newtonsoft.Json.Linq.JObject)token).Properties())
+                    {
+                        writer.WritePropertyName(property.Name);
+                        WriteToken(writer, property.Value);
+                    }
+                    writer.WriteEndObject();
+                    break;
+                case Newtonsoft.Json.Linq.JTokenType.Array:
+                    writer.WriteStartArray();
+                    foreach (var item in (Newtonsoft.Json.Linq.JArray)token) WriteToken(writer, item);
+                    writer.WriteEndArray();
+                    break;
+                case Newtonsoft.Json.Linq.JTokenType.Float:
+                    Write(writer, (double)token);
+                    break;
+                default:
+                    token.WriteTo(writer);
+                    break;
+            }
+        }
+
         /// <summary>A writer over <paramref name="text"/> with the dataset's formatting.</summary>
         public static JsonTextWriter CreateWriter(StringWriter text, int indentation = 2)
         {

@@ -1,8 +1,9 @@
 namespace NerfDatasetCreator
 {
     /// <summary>
-    /// Depth images from the depth pass (eye z in metres, 0 = no surface), point-sampled per output pixel by the
-    /// <see cref="PointSampling"/> rule and flipped to top row first.
+    /// Depth images from the depth pass (eye z in Unity units, 0 = no surface), optionally scaled into output units
+    /// (the scene normalisation's scale), point-sampled per output pixel by the <see cref="PointSampling"/> rule and
+    /// flipped to top row first. "Metres" below means depth units: Unity units × scale.
     /// </summary>
     public static class DepthEncoding
     {
@@ -14,8 +15,10 @@ namespace NerfDatasetCreator
         /// nearer than 0.5 mm is written as 1 so it stays distinguishable from background. Returns how many pixels
         /// were farther than 65.535 m and were clamped to 65535, so the caller can report it once per run.
         /// </summary>
-        public static int ToMillimetres(RawFrame frame, ushort[] millimetres)
+        /// <param name="scale">Output units per depth-pass unit (the scene normalisation's scale): the PNG then holds thousandths of an output unit.</param>
+        public static int ToMillimetres(RawFrame frame, ushort[] millimetres, double scale = 1)
         {
+            RequireScale(scale);
             frame.Require(color: false, mask: false, depth: true, normals: false);
             int ow = frame.OutputWidth, oh = frame.OutputHeight;
             RawFrame.RequireOutput("millimetres", millimetres, (long)ow * oh, "values (1 per output pixel)");
@@ -30,7 +33,7 @@ namespace NerfDatasetCreator
                 int o = oy * ow;
                 for (int ox = 0; ox < ow; ox++)
                 {
-                    float z = Sample(depth, blockRow * width + ox * k, order);
+                    float z = Scaled(Sample(depth, blockRow * width + ox * k, order), scale);
                     ushort mm;
                     if (!(z > 0)) mm = 0;
                     else
@@ -52,8 +55,10 @@ namespace NerfDatasetCreator
         /// pass <see cref="RowDirection.BottomRowFirst"/> for it. <see cref="RowDirection.TopRowFirst"/> gives file
         /// order, for writers that store rows as given.
         /// </summary>
-        public static void ToMetres(RawFrame frame, float[] metres, RowDirection rows)
+        /// <param name="scale">Output units per depth-pass unit (the scene normalisation's scale).</param>
+        public static void ToMetres(RawFrame frame, float[] metres, RowDirection rows, double scale = 1)
         {
+            RequireScale(scale);
             frame.Require(color: false, mask: false, depth: true, normals: false);
             int ow = frame.OutputWidth, oh = frame.OutputHeight;
             RawFrame.RequireOutput("metres", metres, (long)ow * oh, "values (1 per output pixel)");
@@ -68,11 +73,17 @@ namespace NerfDatasetCreator
                 int o = (rows == RowDirection.TopRowFirst ? oy : oh - 1 - oy) * ow;
                 for (int ox = 0; ox < ow; ox++)
                 {
-                    float z = Sample(depth, blockRow * width + ox * k, order);
+                    float z = Scaled(Sample(depth, blockRow * width + ox * k, order), scale);
                     metres[o + ox] = z > 0 ? z : 0f;
                 }
             }
         }
+
+        // Scale 1 keeps the depth pass's floats bit for bit; otherwise the product is rounded once, in double.
+        static float Scaled(float z, double scale) => scale == 1 ? z : (float)(z * scale);
+
+        static void RequireScale(double scale) =>
+            InvalidParameterException.ThrowIfAny(scale > 0 && !double.IsInfinity(scale) ? null : ValidationProblem.OutsideRange("depthScale", scale, 1e-9, 1e9));
 
         static float Sample(float[] depth, int first, int[] order)
         {

@@ -8,17 +8,21 @@ namespace NerfDatasetCreator
     /// The ordered list of views a run captures — train, then val, then test, each by index — built from settings
     /// alone, so the same settings and seed give the same plan, byte for byte (<see cref="CapturePlanJson"/>).
     /// Cameras are placed by <see cref="CameraRig.Place"/> around the target's centre; random formations draw from
-    /// <c>SeededRandom.Derive(seed, splitName)</c>. Output poses are recentred on the target at unit scale: the
-    /// target's centre is the output origin and one output unit is one Unity unit.
+    /// <c>SeededRandom.Derive(seed, splitName)</c>. Output poses go through the settings' <see cref="SceneNormalisation"/>
+    /// (by default recentred on the target at unit scale: the target's centre is the output origin and one output
+    /// unit is one Unity unit); <see cref="Warnings"/> says where the result breaks a chosen loader's fixed range.
     /// </summary>
     public sealed class CapturePlan
     {
-        CapturePlan(DatasetSettings settings, PlanTarget target, double distance, CameraIntrinsics intrinsics, IReadOnlyList<PlannedView> views)
+        CapturePlan(DatasetSettings settings, PlanTarget target, double distance, CameraIntrinsics intrinsics,
+            SceneNormalisation normalisation, IReadOnlyList<ValidationProblem> warnings, IReadOnlyList<PlannedView> views)
         {
             Settings = settings;
             Target = target;
             Distance = distance;
             Intrinsics = intrinsics;
+            Normalisation = normalisation;
+            Warnings = warnings;
             Views = views;
         }
 
@@ -32,6 +36,22 @@ namespace NerfDatasetCreator
 
         public CameraIntrinsics Intrinsics { get; }
 
+        /// <summary>The similarity from the (Blender-relabelled) Unity world to the output world; its scale also scales depth.</summary>
+        public SceneNormalisation Normalisation { get; }
+
+        /// <summary>
+        /// Where the output breaks a fixed range of a loader in <see cref="DatasetSettings.Loaders"/> (NeRF's near 2 /
+        /// far 6, 3DGS's ±1.3 initial cloud, nerfstudio's ±1.5 box, instant-ngp's largest aabb_scale): the dataset is
+        /// still valid, so these never stop a run. Always the whole dataset's, also in a shard's plan.
+        /// </summary>
+        public IReadOnlyList<ValidationProblem> Warnings { get; }
+
+        /// <summary>The target's reach from the output origin in output units: |normalised centre| + s·b (0 with unknown bounds).</summary>
+        public double TargetReach => PlanWarnings.TargetReach(Target, Normalisation);
+
+        /// <summary>instant-ngp's <c>aabb_scale</c> for a cube that holds the target (<see cref="AabbScale"/>).</summary>
+        public int AabbScale => NerfDatasetCreator.AabbScale.ForRadius(TargetReach);
+
         public IReadOnlyList<PlannedView> Views { get; }
 
         public IEnumerable<PlannedView> ViewsOf(DatasetSplit split) => Views.Where(v => v.Split == split);
@@ -41,7 +61,7 @@ namespace NerfDatasetCreator
         /// Its transforms files list just those frames; settings, distance and intrinsics are the whole plan's.
         /// </summary>
         public CapturePlan Only(Func<PlannedView, bool> keep) =>
-            new CapturePlan(Settings, Target, Distance, Intrinsics, Views.Where(keep).ToList());
+            new CapturePlan(Settings, Target, Distance, Intrinsics, Normalisation, Warnings, Views.Where(keep).ToList());
 
         /// <summary>nerf_synthetic's <c>rotation</c> key for a split (ignored by every loader): the formation's azimuth step.</summary>
         public double RotationOf(DatasetSplit split)
@@ -69,6 +89,10 @@ namespace NerfDatasetCreator
                     "Pick a target with renderers, or give the distance as a number."));
                 return problems;
             }
+            if (settings.Normalisation == NormalisationMode.FitTargetRadius && !target.HasBounds)
+                problems.Add(new ValidationProblem("normalisation", "\"" + NormalisationModes.Name(settings.Normalisation) + "\"",
+                    "scales the target to a chosen radius, which needs the target's bounds; they are unknown here.",
+                    "Pick a target with renderers, or use \"recentre\" or \"nerf-synthetic\"."));
             if (!target.HasBounds) return problems;
             var distance = ResolveDistance(settings, target);
             var b = target.BoundingRadius;
@@ -105,6 +129,7 @@ namespace NerfDatasetCreator
 
             var copy = settings.Clone();
             var distance = ResolveDistance(copy, target);
+            var normalisation = SceneNormalisation.ForTarget(copy.Normalisation, target.Centre, target.BoundingRadius, distance, copy.NormalisedTargetRadius);
             var views = new List<PlannedView>();
             foreach (var split in DatasetSplits.All)
             {
@@ -116,12 +141,12 @@ namespace NerfDatasetCreator
                 for (var i = 0; i < poses.Count; i++)
                 {
                     var pose = poses[i];
-                    var recentred = new UnityPose(pose.Position - target.Centre, pose.Rotation);
                     var files = kinds.Select(k => new PlannedFile(k, DatasetLayout.RelativePath(split, i, k))).ToList();
-                    views.Add(new PlannedView(split, i, pose, BlenderConvention.CameraToWorld(recentred), files));
+                    views.Add(new PlannedView(split, i, pose, normalisation.ApplyToCameraToWorld(BlenderConvention.CameraToWorld(pose)), files));
                 }
             }
-            return new CapturePlan(copy, target, distance, copy.Intrinsics(), views);
+            var warnings = PlanWarnings.For(copy, target, normalisation, views.Select(v => v.Pose));
+            return new CapturePlan(copy, target, distance, copy.Intrinsics(), normalisation, warnings, views);
         }
     }
 }

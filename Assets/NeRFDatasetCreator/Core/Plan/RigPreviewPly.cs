@@ -28,10 +28,11 @@ namespace NerfDatasetCreator
         {
             var vertices = new List<string>();
             var edges = new List<string>();
-            var depth = FrustumDepthFraction * plan.Distance;
+            // Output units: the camera distance times the normalisation's scale.
+            var depth = FrustumDepthFraction * plan.Distance * plan.Normalisation.Scale;
             var halfW = depth * Math.Tan(plan.Intrinsics.CameraAngleX / 2);
             var halfH = depth * Math.Tan(plan.Intrinsics.CameraAngleY / 2);
-            vertices.Add(Vertex(Vector3d.Zero, TargetColour));
+            vertices.Add(Vertex(plan.Normalisation.ApplyToUnityPoint(plan.Target.Centre), TargetColour));
             foreach (var view in plan.Views)
             {
                 var colour = ColourOf(view.Split);

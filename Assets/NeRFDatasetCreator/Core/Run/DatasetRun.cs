@@ -71,9 +71,21 @@ namespace NerfDatasetCreator
             return DatasetWriteSession.Begin(DatasetFolder, FullPlan.Settings.Overwrite, ProjectRoot);
         }
 
-        /// <summary>Writes the transforms files, dataset_config.json and, for a shard, shard.json; then commits.</summary>
-        public void Finish(DatasetWriteSession session, Provenance provenance)
+        /// <summary>
+        /// Whether this run writes <c>points3d.ply</c>: the settings ask for points and this is the whole dataset or
+        /// shard 0 (one cloud per dataset; merge carries it over).
+        /// </summary>
+        public bool WritesPointCloud => IsValid && FullPlan.Settings.PointCloudPoints > 0 && Shard.Index == 0;
+
+        /// <summary>
+        /// Writes <c>points3d.ply</c> when <paramref name="pointCloud"/> has points (output world, e.g. from
+        /// <see cref="TargetPointCloud.Sample"/>), the transforms files, dataset_config.json and, for a shard,
+        /// shard.json; then commits.
+        /// </summary>
+        public void Finish(DatasetWriteSession session, Provenance provenance, IReadOnlyList<CloudPoint> pointCloud = null)
         {
+            if (pointCloud != null && pointCloud.Count > 0)
+                PlyWriter.Write(session.PathOf(TargetPointCloud.FileName), pointCloud);
             DatasetMetadataFiles.Write(session, Plan, provenance);
             if (Shard.Count > 1)
                 ShardManifest.ForShard(Shard, CountsOf(FullPlan)).Write(session.WorkingFolder);

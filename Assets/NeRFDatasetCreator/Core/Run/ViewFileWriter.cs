@@ -6,7 +6,8 @@ namespace NerfDatasetCreator
 {
     /// <summary>
     /// Writes the files of one planned view from its raw readback: colour with straight alpha, and the depth, normal
-    /// and mask images its split asks for, under the write session's working folder. Thread-safe: the capture calls it
+    /// and mask images its split asks for, under the write session's working folder. Depth is written in output units:
+    /// the depth pass's Unity-unit z times the plan's normalisation scale, like the poses. Thread-safe: the capture calls it
     /// from several worker threads at once, one view each; scratch arrays are per call (a view's worth, freed with it).
     /// </summary>
     public sealed class ViewFileWriter
@@ -14,17 +15,24 @@ namespace NerfDatasetCreator
         readonly DatasetWriteSession _session;
         readonly Background _background;
         readonly ExrEncoder _encodeExr;
+        readonly double _depthScale;
         int _clampedDepthPixels;
 
+        /// <param name="plan">The views' plan: its settings (background) and its normalisation (depth scale).</param>
         /// <param name="encodeExr">Needed only when a split writes EXR files; null otherwise.</param>
-        public ViewFileWriter(DatasetSettings settings, DatasetWriteSession session, ExrEncoder encodeExr)
+        public ViewFileWriter(CapturePlan plan, DatasetWriteSession session, ExrEncoder encodeExr)
         {
+            if (plan == null) throw new ArgumentNullException(nameof(plan));
             _session = session ?? throw new ArgumentNullException(nameof(session));
-            _background = BackgroundOf(settings ?? throw new ArgumentNullException(nameof(settings)));
+            _background = BackgroundOf(plan.Settings);
+            _depthScale = plan.Normalisation.Scale;
             _encodeExr = encodeExr;
         }
 
-        /// <summary>Depth pixels farther than a 16-bit PNG holds (65.535 m), clamped so far: reported once per run.</summary>
+        /// <summary>Output units per Unity unit of depth (the normalisation's scale s).</summary>
+        public double DepthScale => _depthScale;
+
+        /// <summary>Depth pixels farther than a 16-bit PNG holds (65.535 output units), clamped so far: reported once per run.</summary>
         public int ClampedDepthPixels => Volatile.Read(ref _clampedDepthPixels);
 
         /// <summary>
@@ -45,13 +53,13 @@ namespace NerfDatasetCreator
             if (view.Writes(DatasetFileKind.DepthPng))
             {
                 var millimetres = new ushort[width * height];
-                Interlocked.Add(ref _clampedDepthPixels, DepthEncoding.ToMillimetres(data, millimetres));
+                Interlocked.Add(ref _clampedDepthPixels, DepthEncoding.ToMillimetres(data, millimetres, _depthScale));
                 Save(view, DatasetFileKind.DepthPng, PngWriter.EncodeGray16(millimetres, width, height));
             }
             if (view.Writes(DatasetFileKind.DepthExr))
             {
                 var metres = new float[width * height];
-                DepthEncoding.ToMetres(data, metres, RowDirection.BottomRowFirst);
+                DepthEncoding.ToMetres(data, metres, RowDirection.BottomRowFirst, _depthScale);
                 Save(view, DatasetFileKind.DepthExr, Exr(metres, width, height, 1));
             }
             if (view.Writes(DatasetFileKind.NormalPng))

@@ -20,6 +20,13 @@ namespace NerfDatasetCreator
         public const int MaxSupersampling = 4;
         public const int MaxViews = 100000;
 
+        /// <summary>Bounds of <see cref="NormalisedTargetRadius"/> (output units).</summary>
+        public const double MinNormalisedTargetRadius = 0.001;
+        public const double MaxNormalisedTargetRadius = 1000;
+
+        /// <summary>The most points <c>points3d.ply</c> may hold.</summary>
+        public const int MaxPointCloudPoints = SurfaceSampler.MaxCount;
+
         /// <summary>The largest side of the supersampled render (size × supersampling): desktop GPUs' usual texture limit.</summary>
         public const int MaxRenderSize = 16384;
 
@@ -68,6 +75,23 @@ namespace NerfDatasetCreator
 
         /// <summary>The loaders the dataset must work in; validation checks the splits each needs.</summary>
         public TargetLoaders Loaders = TargetLoaders.All;
+
+        /// <summary>
+        /// How output poses relate to the Unity world: recentred on the target (default), also scaled to
+        /// nerf_synthetic's camera radius 4, or scaled so the target's bounding sphere has
+        /// <see cref="NormalisedTargetRadius"/> (see <see cref="SceneNormalisation"/>).
+        /// </summary>
+        public NormalisationMode Normalisation = NormalisationMode.Recentre;
+
+        /// <summary>
+        /// The target's bounding-sphere radius in output units with <see cref="NormalisationMode.FitTargetRadius"/>.
+        /// Every loader's box holds for radii up to 1.3 (3DGS's random initial cloud is ±1.3, nerfstudio's box ±1.5);
+        /// 1 leaves room for bounds that are loose.
+        /// </summary>
+        public double NormalisedTargetRadius = 1.0;
+
+        /// <summary>Points sampled on the target's mesh surfaces into <c>points3d.ply</c> (3DGS's initial cloud); 0 writes no file.</summary>
+        public int PointCloudPoints;
 
         public SplitSettings Split(DatasetSplit split)
         {

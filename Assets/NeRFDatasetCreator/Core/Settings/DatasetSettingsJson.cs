@@ -58,6 +58,9 @@ namespace NerfDatasetCreator
             w.WriteStartArray();
             foreach (var name in TargetLoaderNames.NamesOf(s.Loaders)) w.WriteValue(name);
             w.WriteEndArray();
+            w.WritePropertyName("normalisation"); w.WriteValue(NormalisationModes.IsDefined(s.Normalisation) ? NormalisationModes.Name(s.Normalisation) : ((int)s.Normalisation).ToString(System.Globalization.CultureInfo.InvariantCulture));
+            Number(w, "normalisedTargetRadius", s.NormalisedTargetRadius);
+            w.WritePropertyName("pointCloudPoints"); w.WriteValue(s.PointCloudPoints);
             w.WritePropertyName("splits");
             w.WriteStartObject();
             foreach (var split in DatasetSplits.All)
@@ -220,6 +223,14 @@ namespace NerfDatasetCreator
                     }
                     s.Loaders = loaders;
                 },
+                ["normalisation"] = (t, p) =>
+                {
+                    if (!NormalisationModes.TryParse(reader.String(t, p), out var mode))
+                        throw reader.Error(t, p, "must be one of " + NormalisationModes.NameList() + ", not " + Describe(t) + ".");
+                    s.Normalisation = mode;
+                },
+                ["normalisedTargetRadius"] = (t, p) => s.NormalisedTargetRadius = reader.Double(t, p),
+                ["pointCloudPoints"] = (t, p) => s.PointCloudPoints = reader.Int(t, p),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),

@@ -72,6 +72,16 @@ namespace NerfDatasetCreator
                 Add(ValidationProblem.OutsideRange("background.b", background.B, 0, 1));
             }
 
+            if (!NormalisationModes.IsDefined(settings.Normalisation))
+                Add(new ValidationProblem("normalisation", ((int)settings.Normalisation).ToString(System.Globalization.CultureInfo.InvariantCulture),
+                    "is not a normalisation mode.", "Use one of " + NormalisationModes.NameList() + "."));
+            var radius = ValidationProblem.OutsideRange("normalisedTargetRadius", settings.NormalisedTargetRadius,
+                DatasetSettings.MinNormalisedTargetRadius, DatasetSettings.MaxNormalisedTargetRadius, "output units");
+            if (radius != null)
+                Add(new ValidationProblem(radius.Field, radius.Value, radius.Reason,
+                    radius.Fix + " 1.3 or less keeps the target inside every loader's box (3DGS ±1.3, nerfstudio ±1.5)."));
+            Add(ValidationProblem.OutsideRange("pointCloudPoints", settings.PointCloudPoints, 0, DatasetSettings.MaxPointCloudPoints));
+
             foreach (var split in DatasetSplits.All)
                 ValidateSplit(settings, split, problems);
 

@@ -88,6 +88,12 @@ namespace NerfDatasetCreator
                     byView.Remove(key);
                 }
             }
+            // One point cloud per dataset, written by shard 0: carried over; a second one is a collision, never a silent pick.
+            foreach (var shard in shards)
+            {
+                var cloud = Path.Combine(shard.Folder, TargetPointCloud.FileName);
+                if (File.Exists(cloud)) Add(cloud, TargetPointCloud.FileName, shard.Name);
+            }
             foreach (var leftover in byView.Values.SelectMany(v => v))
                 warnings.Add(leftover + " belongs to no frame of its shard's transforms and was left in place.");
 
@@ -95,7 +101,7 @@ namespace NerfDatasetCreator
             foreach (var shard in shards)
                 foreach (var entry in Directory.EnumerateFileSystemEntries(shard.Folder).OrderBy(p => p, StringComparer.Ordinal))
                     if (!known.Contains(Path.GetFileName(entry)) && !claimed.Contains(entry))
-                        warnings.Add(entry + " is not part of the Blender-format splits and was not merged (per-shard extras such as a point cloud or a nerfstudio transforms.json must be made again from the merged dataset).");
+                        warnings.Add(entry + " is not part of the Blender-format splits and was not merged (per-shard extras such as a nerfstudio transforms.json must be made again from the merged dataset).");
             return transfers;
         }
 

@@ -81,6 +81,7 @@ namespace NerfDatasetCreator.Editor
             var shard = args.Shard ?? ShardSpec.Whole;
             var prepared = DatasetCapture.Prepare(settings, target, projectRoot, shard, args.OutputFolder);
             if (!prepared.IsValid) return Refuse("the settings cannot be captured", prepared.Problems);
+            foreach (var warning in prepared.Warnings) Debug.LogWarning(Prefix + warning);
 
             Debug.Log(Prefix + "capturing " + prepared.ViewCount + " views of '" + target.name + "'" +
                 (shard.Count > 1 ? " (shard " + shard.Index + "/" + shard.Count + ")" : "") + " into " + prepared.DatasetFolder);

@@ -141,7 +141,7 @@ namespace NerfDatasetCreator.Editor.Capture
         }
 
         /// <summary>Whether <paramref name="t"/> is active, ignoring the target's own and its parents' active states (the copy is activated).</summary>
-        static bool ActiveBelow(Transform t, Transform target)
+        internal static bool ActiveBelow(Transform t, Transform target)
         {
             for (; t != null && t != target; t = t.parent)
                 if (!t.gameObject.activeSelf) return false;

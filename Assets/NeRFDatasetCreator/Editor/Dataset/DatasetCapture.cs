@@ -77,7 +77,19 @@ namespace NerfDatasetCreator.Editor
 
             var run = DatasetRun.Prepare(settings, MeasureTarget(target), projectRoot, shard, datasetFolder);
             problems.AddRange(run.Problems);
-            return new PreparedCapture(run, target, options, problems, Array.Empty<ValidationProblem>());
+            var warnings = new List<ValidationProblem>();
+            List<SurfaceMesh> surface = null;
+            if (run.IsValid)
+            {
+                warnings.AddRange(run.FullPlan.Warnings);
+                if (run.WritesPointCloud && problems.Count == 0)
+                {
+                    // Read now, with the scene as it is measured; sampled when the run finishes.
+                    surface = TargetSurface.Collect(target, warnings);
+                    problems.AddRange(TargetPointCloud.Check(run.Plan.Settings, surface));
+                }
+            }
+            return new PreparedCapture(run, target, options, problems, warnings, surface);
         }
 
         /// <summary>Captures and writes the whole dataset (or shard) before returning. Never throws for user or I/O errors.</summary>
@@ -93,7 +105,7 @@ namespace NerfDatasetCreator.Editor
             {
                 return Failed(prepared, null, e, 0);
             }
-            var files = new ViewFileWriter(prepared.Run.Plan.Settings, session, UnityExr.Encode);
+            var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode);
             using (var consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files)))
             {
                 try
@@ -125,7 +137,7 @@ namespace NerfDatasetCreator.Editor
             try
             {
                 session = prepared.Run.Begin();
-                var files = new ViewFileWriter(prepared.Run.Plan.Settings, session, UnityExr.Encode);
+                var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode);
                 consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files));
                 var written = consumer;
                 return CaptureRunner.RunInBackground(prepared.Target, Poses(prepared), prepared.Options, consumer, (summary, error) =>
@@ -154,9 +166,15 @@ namespace NerfDatasetCreator.Editor
             provenance.Statistics["seconds"] = summary.Seconds;
             provenance.Statistics["viewsPerSecond"] = summary.ViewsPerSecond;
             provenance.Statistics["clampedDepthPixels"] = files.ClampedDepthPixels;
+            IReadOnlyList<CloudPoint> cloud = null;
             try
             {
-                prepared.Run.Finish(session, provenance);
+                if (prepared.Surface != null)
+                {
+                    cloud = TargetPointCloud.Sample(prepared.Run.Plan, prepared.Surface);
+                    provenance.Statistics["points3d"] = cloud.Count;
+                }
+                prepared.Run.Finish(session, provenance, cloud);
             }
             catch (Exception e)
             {
@@ -165,9 +183,11 @@ namespace NerfDatasetCreator.Editor
             var message = string.Format(CultureInfo.InvariantCulture,
                 "NeRF Dataset Creator: wrote {0} views to {1} in {2:0.0} s ({3:0.00} views/s).",
                 summary.Views, session.FinalFolder, summary.Seconds, summary.ViewsPerSecond);
+            if (cloud != null && cloud.Count > 0)
+                message += string.Format(CultureInfo.InvariantCulture, " points3d.ply holds {0} surface points.", cloud.Count);
             if (files.ClampedDepthPixels > 0)
                 message += string.Format(CultureInfo.InvariantCulture,
-                    " {0} depth pixels lay beyond 65.535 m and were clamped in the 16-bit depth PNGs (the EXR files keep them).",
+                    " {0} depth pixels lay beyond 65.535 output units and were clamped in the 16-bit depth PNGs (the EXR files keep them).",
                     files.ClampedDepthPixels);
             return new DatasetCaptureResult(true, false, session.FinalFolder, null, message, summary.Views, summary.ViewsPerSecond);
         }

@@ -8,8 +8,9 @@ namespace NerfDatasetCreator.Editor
     public sealed class PreparedCapture
     {
         internal PreparedCapture(DatasetRun run, GameObject target, CaptureOptions options,
-            IReadOnlyList<ValidationProblem> problems, IReadOnlyList<ValidationProblem> warnings)
+            IReadOnlyList<ValidationProblem> problems, IReadOnlyList<ValidationProblem> warnings, IReadOnlyList<SurfaceMesh> surface = null)
         {
+            Surface = surface;
             Run = run;
             Target = target;
             Options = options;
@@ -21,9 +22,16 @@ namespace NerfDatasetCreator.Editor
         internal GameObject Target { get; }
         internal CaptureOptions Options { get; }
 
+        /// <summary>The target's mesh surfaces (Unity world) for points3d.ply; null when this run writes none.</summary>
+        internal IReadOnlyList<SurfaceMesh> Surface { get; }
+
         /// <summary>Every reason the capture cannot start; empty when <see cref="IsValid"/>.</summary>
         public IReadOnlyList<ValidationProblem> Problems { get; }
 
+        /// <summary>
+        /// What works but will not suit a chosen loader (the plan's <see cref="CapturePlan.Warnings"/>: NeRF's near/far,
+        /// 3DGS's and nerfstudio's boxes, instant-ngp's cube) and meshes the point cloud leaves out. Never stops a capture.
+        /// </summary>
         public IReadOnlyList<ValidationProblem> Warnings { get; }
 
         public bool IsValid => Problems.Count == 0;

@@ -36,6 +36,7 @@ namespace NerfDatasetCreator.Tool
                 return Program.UsageError;
             }
             var plan = CapturePlan.Build(settings, PlanTarget.AtOrigin);
+            foreach (var warning in plan.Warnings) stderr.WriteLine("warning: " + warning);
 
             DatasetWriteSession session;
             try

@@ -32,7 +32,7 @@ namespace NerfDatasetCreator.Tests
             Assert.That(ourKeys.Last(), Is.EqualTo("frames"));
             Assert.That(ourKeys, Is.EqualTo(new[]
             {
-                "camera_angle_x", "camera_angle_y", "fl_x", "fl_y", "cx", "cy", "w", "h", "aabb_scale", "integer_depth_scale", "depth_unit_scale_factor", "frames",
+                "camera_angle_x", "camera_angle_y", "fl_x", "fl_y", "cx", "cy", "w", "h", "aabb_scale", "integer_depth_scale", "depth_unit_scale_factor", "scene_normalisation", "frames",
             }));
             var legoFrameKeys = ((JObject)lego["frames"][0]).Properties().Select(p => p.Name).ToList();
             var ourFrameKeys = ((JObject)ours["frames"][0]).Properties().Select(p => p.Name).ToList();

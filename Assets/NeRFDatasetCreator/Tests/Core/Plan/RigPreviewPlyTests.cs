@@ -67,5 +67,25 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(Vector3d.Dot(offset, forward), Is.EqualTo(RigPreviewPly.FrustumDepthFraction * 4).Within(1e-5));
             }
         }
+
+        [Test]
+        public void ANormalisedRigIsDrawnInOutputUnits()
+        {
+            // Distance 10 with the nerf_synthetic preset: s = 0.4, cameras at 4, frusta 0.15·4 deep; without
+            // recentring the target marker sits at the target's own output position.
+            var s = new DatasetSettings { Distance = 10, Normalisation = NormalisationMode.NerfSyntheticScale };
+            s.Train.Count = 1;
+            var plan = CapturePlan.Build(s, new PlanTarget(new Vector3d(3, 1, 2), 1));
+            var lines = RigPreviewPly.Write(plan).Split('\n').ToList();
+            var body = lines.Skip(lines.IndexOf("end_header") + 1).ToList();
+            Assert.That(body[0], Is.EqualTo("0 0 0 255 255 255"));
+            var m = plan.Views[0].TransformMatrix;
+            var corner = body[2].Split(' ').Take(3).Select(x => double.Parse(x, CultureInfo.InvariantCulture)).ToArray();
+            Assert.That(Vector3d.Dot(new Vector3d(corner[0], corner[1], corner[2]) - m.Translation, -m.Column(2)), Is.EqualTo(0.6).Within(1e-5));
+
+            s.Normalisation = NormalisationMode.None;
+            var raw = RigPreviewPly.Write(CapturePlan.Build(s, new PlanTarget(new Vector3d(3, 1, 2), 1))).Split('\n').ToList();
+            Assert.That(raw[raw.IndexOf("end_header") + 1], Is.EqualTo("3 2 1 255 255 255"), "Unity (3, 1, 2) → (3, 2, 1)");
+        }
     }
 }

@@ -56,7 +56,7 @@ namespace NerfDatasetCreator.Tests
                 var project = Path.Combine(_root, name);
                 var run = DatasetRun.Prepare(settings, new PlanTarget(new Vector3d(0.25, -1.5, 2.75), 0.7), project);
                 var session = run.Begin();
-                var writer = new ViewFileWriter(run.Plan.Settings, session, SyntheticViews.FakeExr);
+                var writer = new ViewFileWriter(run.Plan, session, SyntheticViews.FakeExr);
                 foreach (var view in run.Plan.Views) writer.Write(view, SyntheticViews.Colour(), SyntheticViews.Data());
                 session.WriteText("settings.json", DatasetSettingsJson.Write(settings));
                 session.WriteText(DatasetLayout.RigPreviewFileName, RigPreviewPly.Write(run.Plan));

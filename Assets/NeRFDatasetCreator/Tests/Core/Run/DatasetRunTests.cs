@@ -42,7 +42,7 @@ namespace NerfDatasetCreator.Tests
         {
             Assert.That(run.Problems, Is.Empty);
             var session = run.Begin();
-            var writer = new ViewFileWriter(run.Plan.Settings, session, SyntheticViews.FakeExr);
+            var writer = new ViewFileWriter(run.Plan, session, SyntheticViews.FakeExr);
             foreach (var view in run.Plan.Views)
                 writer.Write(view, SyntheticViews.Colour(), SyntheticViews.Data());
             beforeFinish?.Invoke(session);
@@ -139,7 +139,7 @@ namespace NerfDatasetCreator.Tests
         {
             var run = DatasetRun.Prepare(Settings(train: 1, val: 1, test: 1), Target, _project);
             var session = run.Begin();
-            var writer = new ViewFileWriter(run.Plan.Settings, session, SyntheticViews.FakeExr);
+            var writer = new ViewFileWriter(run.Plan, session, SyntheticViews.FakeExr);
             writer.Write(run.Plan.ViewsOf(DatasetSplit.Test).Single(), SyntheticViews.Colour(), SyntheticViews.Data(extraMetres: 70));
             Assert.That(writer.ClampedDepthPixels, Is.EqualTo(5 * 8), "the 5 covered columns of 8 rows");
             session.DiscardPartialFiles();

@@ -259,14 +259,41 @@ namespace NerfDatasetCreator.Tests
         public void StrayFilesAreWarnedAboutAndLeftInPlace()
         {
             var shards = ShardFolders.Create(root, 2, Counts);
-            File.WriteAllText(Path.Combine(shards[0], "points3d.ply"), "ply");
+            File.WriteAllText(Path.Combine(shards[0], "transforms.json"), "{}");
             File.WriteAllText(Path.Combine(shards[0], "train", "notes.txt"), "x");
 
             var result = ShardMerger.Merge(shards, output, true);
 
             Assert.That(result.Succeeded, Is.True, Lines(result));
             Assert.That(result.Warnings, Has.Count.EqualTo(2));
-            Assert.That(File.Exists(Path.Combine(shards[0], "points3d.ply")), Is.True);
+            Assert.That(File.Exists(Path.Combine(shards[0], "transforms.json")), Is.True);
+            Assert.That(File.Exists(Path.Combine(output, "transforms.json")), Is.False);
+        }
+
+        [Test]
+        public void ThePointCloudOfShardZeroIsCarriedOver()
+        {
+            var shards = ShardFolders.Create(root, 2, Counts);
+            File.WriteAllBytes(Path.Combine(shards[0], "points3d.ply"), new byte[] { 1, 2, 3 });
+
+            var result = ShardMerger.Merge(shards, output, true);
+
+            Assert.That(result.Succeeded, Is.True, Lines(result));
+            Assert.That(result.Warnings, Is.Empty);
+            Assert.That(File.ReadAllBytes(Path.Combine(output, "points3d.ply")), Is.EqualTo(new byte[] { 1, 2, 3 }));
+        }
+
+        [Test]
+        public void TwoPointCloudsAreAProblemNotAPick()
+        {
+            var shards = ShardFolders.Create(root, 2, Counts);
+            File.WriteAllBytes(Path.Combine(shards[0], "points3d.ply"), new byte[] { 1 });
+            File.WriteAllBytes(Path.Combine(shards[1], "points3d.ply"), new byte[] { 2 });
+
+            var result = ShardMerger.Merge(shards, output, true);
+
+            Assert.That(result.Succeeded, Is.False);
+            Assert.That(result.Problems.Select(p => p.Field), Does.Contain("points3d.ply"));
             Assert.That(File.Exists(Path.Combine(output, "points3d.ply")), Is.False);
         }
     }
