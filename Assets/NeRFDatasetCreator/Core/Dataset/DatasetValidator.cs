@@ -30,6 +30,7 @@ namespace NerfDatasetCreator
                     "says the images were not rendered (a plan from `nerf-dataset plan`): image and extra-file checks are skipped."));
             double? firstAngle = null;
             string firstAngleFile = null;
+            var cameraCentres = new List<Vector3d>();
             foreach (var split in DatasetSplits.All)
             {
                 var file = DatasetLayout.TransformsFileName(split);
@@ -74,6 +75,7 @@ namespace NerfDatasetCreator
                 var needsDepthScale = false;
                 foreach (var frame in doc.Frames)
                 {
+                    if (frame.TransformMatrix.HasValue && frame.TransformMatrix.Value.IsFinite) cameraCentres.Add(frame.TransformMatrix.Value.Translation);
                     CheckFrame(folder, file, frame, state, report);
                     if (frame.ExtraFiles.ContainsKey("depth_path")) needsDepthScale = true;
                 }
@@ -82,6 +84,11 @@ namespace NerfDatasetCreator
                         "frames have depth_path but integer_depth_scale is " + (doc.IntegerDepthScale.HasValue ? ValidationProblem.Format(doc.IntegerDepthScale.Value) : "missing") +
                         "; instant-ngp needs it above 0 (0.001 for millimetre PNGs)."));
             }
+            // The object's size is not in a Blender-format dataset, so the check is for its centre at the origin
+            // (where the loaders assume it): a camera nearer than NeRF's near 2 or beyond its far 6 cannot see it.
+            foreach (var range in LoaderRangeCheck.Check(cameraCentres, 0))
+                report.Warnings.Add(new DatasetProblem("transforms_*.json", -1, null,
+                    "(object size unknown here: the target is taken as a point at the origin) " + range));
             return report;
         }
 

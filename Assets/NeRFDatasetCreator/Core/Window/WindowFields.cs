@@ -26,6 +26,9 @@ namespace NerfDatasetCreator
         public const string OutputFolder = "outputFolder";
         public const string Overwrite = "overwrite";
         public const string Loaders = "loaders";
+        public const string Normalisation = "normalisation";
+        public const string NormalisedTargetRadius = "normalisedTargetRadius";
+        public const string PointCloudPoints = "pointCloudPoints";
 
         /// <summary>"splits.train.count" and the like.</summary>
         public static string SplitField(DatasetSplit split, string key) => "splits." + DatasetSplits.Name(split) + "." + key;
@@ -41,6 +44,7 @@ namespace NerfDatasetCreator
             {
                 Target, Scene, Distance, AutoDistanceMargin, VerticalFov, NearClip, FarClip, CopyFromCamera, Width, Height,
                 Supersampling, Background, Seed, Name, OutputFolder, Overwrite, Loaders,
+                Normalisation, NormalisedTargetRadius, PointCloudPoints,
             };
             foreach (var split in DatasetSplits.All)
             {
@@ -84,6 +88,8 @@ namespace NerfDatasetCreator
             if (Covers(Seed, field)) return WindowStep.Rig;
             if (Covers(Name, field) || Covers(OutputFolder, field) || Covers(Overwrite, field) || Covers(Loaders, field))
                 return WindowStep.OutputFolder;
+            if (Covers(Normalisation, field) || Covers(NormalisedTargetRadius, field) || Covers(PointCloudPoints, field))
+                return WindowStep.Outputs;
             foreach (var split in DatasetSplits.All)
             {
                 if (Covers(SplitField(split, "depth"), field) || Covers(SplitField(split, "normal"), field) || Covers(SplitField(split, "mask"), field))

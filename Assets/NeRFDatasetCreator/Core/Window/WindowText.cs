@@ -115,6 +115,15 @@ namespace NerfDatasetCreator
         /// <summary>The depth and normal popups' entries, in <see cref="ExtraOutput"/> order.</summary>
         public static readonly string[] ExtraOutputLabels = { "None", "PNG (16-bit / 8-bit)", "EXR (float)", "PNG + EXR" };
 
+        /// <summary>Labels of <see cref="NormalisationMode"/>, in its order.</summary>
+        public static readonly string[] NormalisationLabels =
+        {
+            "None (Unity world units and origin)",
+            "Recentre on the target",
+            "nerf_synthetic scale (cameras 4 units out)",
+            "Fit the target to a radius",
+        };
+
         /// <summary>Joins lines for a help box.</summary>
         public static string Lines(IEnumerable<string> lines) => string.Join("\n", lines);
     }

@@ -26,6 +26,27 @@ namespace NerfDatasetCreator.Editor
                     ValidationMessages.For(c, WindowFields.SplitField(split, "mask"));
                 }
             }
+            DrawScene(c);
+        }
+
+        /// <summary>Scale and centring of the output world, and the initial point cloud for Gaussian Splatting.</summary>
+        static void DrawScene(WindowContext c)
+        {
+            var settings = c.Settings;
+            EditorGUILayout.LabelField("Scene", EditorStyles.boldLabel);
+            using (new EditorGUI.IndentLevelScope())
+            {
+                settings.Normalisation = (NormalisationMode)EditorGUILayout.Popup("Normalisation", (int)settings.Normalisation, WindowText.NormalisationLabels);
+                // Also where the NeRF near 2 / far 6 and ±1.3 warnings appear: the scale that fixes them is chosen here.
+                ValidationMessages.For(c, WindowFields.Normalisation);
+                if (settings.Normalisation == NormalisationMode.FitTargetRadius)
+                {
+                    settings.NormalisedTargetRadius = EditorGUILayout.DoubleField("Target radius", settings.NormalisedTargetRadius);
+                    ValidationMessages.For(c, WindowFields.NormalisedTargetRadius);
+                }
+                settings.PointCloudPoints = EditorGUILayout.IntField("points3d.ply points", settings.PointCloudPoints);
+                ValidationMessages.For(c, WindowFields.PointCloudPoints);
+            }
         }
     }
 }

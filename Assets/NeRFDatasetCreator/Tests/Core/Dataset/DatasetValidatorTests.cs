@@ -50,6 +50,18 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void ACameraInsideNerfsNearDistanceIsAWarningNotAProblem()
+        {
+            // Train r_0 sits at (−0.054, 3.845, 1.208), 4.03 from the origin; moved to (−0.054, 1, 1) it is 1.42 away,
+            // nearer than bmild/nerf's fixed near plane 2.
+            Edit("transforms_train.json", "3.845470428466797", "1.0");
+            Edit("transforms_train.json", "1.2080823183059692", "1.0");
+            var report = DatasetValidator.Validate(_lego);
+            Assert.That(report.Problems, Is.Empty);
+            Assert.That(report.Warnings.Select(w => w.ToString()), Has.Exactly(1).Contains("normalisation.near").And.Contains("1 of 300 cameras"));
+        }
+
+        [Test]
         public void MissingImage()
         {
             File.Delete(Path.Combine(_lego, "train", "r_5.png"));

@@ -25,6 +25,8 @@ namespace NerfDatasetCreator.Tests
             yield return Case("empty val for nerfstudio", s => s.Val.Count = 0, "splits.val.count", WindowStep.Rig);
             yield return Case("orbit turns", s => s.Test.Formation.Turns = 0, "splits.test.formation.turns", WindowStep.Rig);
             yield return Case("semisphere bottom", s => s.Train.Formation.BottomElevationDegrees = 95, "splits.train.formation.bottomElevationDegrees", WindowStep.Rig);
+            yield return Case("normalised radius", s => s.NormalisedTargetRadius = double.NaN, "normalisedTargetRadius", WindowStep.Outputs);
+            yield return Case("point cloud", s => s.PointCloudPoints = -5, "pointCloudPoints", WindowStep.Outputs);
             yield return Case("halo elevation", s =>
             {
                 s.Train.Formation.Kind = FormationKind.Halo;
