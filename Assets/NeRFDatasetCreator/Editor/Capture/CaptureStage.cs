@@ -172,9 +172,13 @@ namespace NerfDatasetCreator.Editor.Capture
                     UnsupportedRendererCount++;
                 }
             }
-            foreach (var terrain in _root.GetComponentsInChildren<Terrain>(true))
+            // Terrains draw without a Renderer. Recognised by type name: UnityEngine.Terrain lives in the Terrain
+            // built-in module, which a project may disable (this package's own development project does), and
+            // naming the type would then not compile.
+            foreach (var behaviour in _root.GetComponentsInChildren<Behaviour>(true))
             {
-                Hide(terrain);
+                if (behaviour == null || behaviour.GetType().FullName != TerrainTypeName) continue;
+                Hide(behaviour);
                 UnsupportedRendererCount++;
             }
             // The data shaders are unlit: lights would only cost shadow-map renders in those passes.
@@ -193,6 +197,8 @@ namespace NerfDatasetCreator.Editor.Capture
             _otherRenderers.Add(renderer);
             _otherRenderersWereEnabled.Add(renderer.enabled);
         }
+
+        const string TerrainTypeName = "UnityEngine.Terrain";
 
         readonly List<Renderer> _otherRenderers = new List<Renderer>();
         readonly List<bool> _otherRenderersWereEnabled = new List<bool>();
@@ -226,6 +232,14 @@ namespace NerfDatasetCreator.Editor.Capture
             // Whatever the template says, these are what the dataset needs.
             camera.enabled = false;
             camera.usePhysicalProperties = false; // fieldOfView is then exactly the vertical FOV: no gate fit, no lens shift
+            // CopyFrom also brings the template's projection mode and viewport rect: an orthographic template or a
+            // split-screen rect would render something other than the pinhole images the transforms describe.
+            camera.orthographic = false;
+            camera.rect = new Rect(0f, 0f, 1f, 1f);
+            camera.allowDynamicResolution = false;
+            camera.ResetProjectionMatrix();
+            camera.ResetWorldToCameraMatrix();
+            camera.ResetCullingMatrix();
             camera.aspect = (float)options.Width / options.Height;
             camera.cameraType = CameraType.Game;
             camera.renderingPath = RenderingPath.Forward; // deferred loses alpha and needs MRT formats we do not own
