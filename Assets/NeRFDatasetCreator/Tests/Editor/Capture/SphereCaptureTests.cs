@@ -194,6 +194,32 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         }
 
         /// <summary>
+        /// A template camera lends its field of view and clip planes, not its projection mode or viewport: an
+        /// orthographic split-screen template still gives the full-frame pinhole images of the built-in camera.
+        /// </summary>
+        [Test]
+        public void AnOrthographicSplitScreenTemplateStillRendersTheFullPinholeView()
+        {
+            var template = new GameObject("Test template camera", typeof(Camera)).GetComponent<Camera>();
+            template.enabled = false;
+            template.fieldOfView = (float)FovDegrees;
+            template.nearClipPlane = 0.1f;
+            template.farClipPlane = 100f;
+            template.orthographic = true;
+            template.orthographicSize = 0.2f;
+            template.rect = new Rect(0f, 0f, 0.5f, 0.5f);
+            var options = Options();
+            options.TemplateCamera = template;
+            var withTemplate = Capture(options, Poses(Vector3d.Zero));
+            var builtIn = Capture(Options(), Poses(Vector3d.Zero));
+            for (var i = 0; i < builtIn.Views.Count; i++)
+            {
+                Assert.That(withTemplate.Views[i].Mask, Is.EqualTo(builtIn.Views[i].Mask), $"view {i} mask");
+                Assert.That(withTemplate.Views[i].Depth, Is.EqualTo(builtIn.Views[i].Depth), $"view {i} depth");
+            }
+        }
+
+        /// <summary>
         /// An unlit colour is stored as its sRGB bytes: in a Linear project the GPU encodes the linearised colour back
         /// to sRGB, in a Gamma project the value passes unchanged. Running this in either kind of project checks that
         /// both write the same bytes (within 1 LSB).
