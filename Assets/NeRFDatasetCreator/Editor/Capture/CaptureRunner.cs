@@ -62,12 +62,18 @@ namespace NerfDatasetCreator.Editor.Capture
             {
                 if (change == PlayModeStateChange.ExitingEditMode) session.Cancel();
             };
+            var ended = false;
             void End(CaptureSummary summary, Exception error)
             {
+                // Once only: an exception thrown by done() must not make the tick's catch end the run a second time.
+                if (ended) return;
+                ended = true;
                 EditorApplication.update -= tick;
                 EditorApplication.playModeStateChanged -= onPlayMode;
                 session.Dispose();
-                progress.FinalStatus = error == null ? Progress.Status.Succeeded : Progress.Status.Failed;
+                // A cancel through session.Cancel() (the window's button, entering Play mode) is a cancel, not a failure.
+                progress.FinalStatus = error == null ? Progress.Status.Succeeded
+                    : error is OperationCanceledException ? Progress.Status.Canceled : Progress.Status.Failed;
                 progress.Close();
                 if (summary != null) Debug.Log(summary.ToString());
                 done?.Invoke(summary, error);
@@ -80,6 +86,7 @@ namespace NerfDatasetCreator.Editor.Capture
                 }
                 catch (Exception e)
                 {
+                    if (ended) throw; // from done(): the run is over; Unity logs it
                     End(null, e);
                 }
             };
