@@ -44,6 +44,11 @@ namespace NerfDatasetCreator.Editor
             {
                 // Also called before StartInBackground returns when the capture could not start.
                 ended = true;
+                // Also to the Console: the window may have been closed while the run went on, and then this result
+                // (where the dataset or the partial files are, or why it failed) would be shown nowhere.
+                if (result.Succeeded) Debug.Log(result.Message);
+                else if (result.Cancelled) Debug.LogWarning(result.Message);
+                else Debug.LogError(result.Message);
                 if (run != _run) return;
                 _session = null;
                 LastResult = result;
