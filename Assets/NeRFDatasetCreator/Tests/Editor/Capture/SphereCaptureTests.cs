@@ -4,7 +4,6 @@ using System.IO;
 using System.Linq;
 using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
-using UnityEditor.SceneManagement;
 using UnityEngine;
 using UnityEngine.Rendering;
 using UnityEngine.SceneManagement;
@@ -37,9 +36,8 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
             if (SystemInfo.graphicsDeviceType == GraphicsDeviceType.Null)
                 Assert.Ignore("no graphics device (Unity runs with -nographics): nothing can be rendered");
             if (CaptureEnvironment.IsHdrp) Assert.Ignore("HDRP is not supported by the capture");
-            // A scene of our own, added to whatever the user has open, and closed again in TearDown.
-            _scene = EditorSceneManager.NewScene(NewSceneSetup.EmptyScene, NewSceneMode.Additive);
-            SceneManager.SetActiveScene(_scene);
+            // A scene of our own, next to whatever the user has open, and closed again in TearDown.
+            _scene = TestScene.Open();
             _sphere = GameObject.CreatePrimitive(PrimitiveType.Sphere);
             _sphere.name = "Test sphere";
             _light = new GameObject("Test light", typeof(Light));
@@ -50,7 +48,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         [TearDown]
         public void TearDown()
         {
-            if (_scene.IsValid()) EditorSceneManager.CloseScene(_scene, true);
+            TestScene.Close(_scene);
         }
 
         static CaptureOptions Options() => new CaptureOptions

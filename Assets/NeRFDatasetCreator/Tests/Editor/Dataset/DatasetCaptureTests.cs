@@ -2,9 +2,9 @@ using System;
 using System.IO;
 using System.Linq;
 using NerfDatasetCreator.Editor.Capture;
+using NerfDatasetCreator.Editor.Tests.Capture;
 using Newtonsoft.Json.Linq;
 using NUnit.Framework;
-using UnityEditor.SceneManagement;
 using UnityEngine;
 using UnityEngine.Rendering;
 using UnityEngine.SceneManagement;
@@ -29,8 +29,7 @@ namespace NerfDatasetCreator.Editor.Tests
             if (SystemInfo.graphicsDeviceType == GraphicsDeviceType.Null)
                 Assert.Ignore("no graphics device (Unity runs with -nographics): nothing can be rendered");
             if (CaptureEnvironment.IsHdrp) Assert.Ignore("HDRP is not supported by the capture");
-            _scene = EditorSceneManager.NewScene(NewSceneSetup.EmptyScene, NewSceneMode.Additive);
-            SceneManager.SetActiveScene(_scene);
+            _scene = TestScene.Open();
             _sphere = GameObject.CreatePrimitive(PrimitiveType.Sphere);
             _sphere.name = "Dataset test sphere";
             var light = new GameObject("Dataset test light", typeof(Light));
@@ -42,7 +41,7 @@ namespace NerfDatasetCreator.Editor.Tests
         [TearDown]
         public void TearDown()
         {
-            if (_scene.IsValid()) EditorSceneManager.CloseScene(_scene, true);
+            TestScene.Close(_scene);
             if (_project != null && Directory.Exists(_project)) Directory.Delete(_project, true);
         }
 
