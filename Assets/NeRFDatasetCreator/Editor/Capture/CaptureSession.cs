@@ -126,26 +126,9 @@ namespace NerfDatasetCreator.Editor.Capture
             if (EditorUtility.IsPersistent(target))
                 throw new CaptureException("The target '" + target.name + "' is a prefab or model asset, not an object in the scene. " +
                     "Drag it into the scene and pick that instance.");
-            foreach (var renderer in target.GetComponentsInChildren<Renderer>(true))
-            {
-                if (!renderer.enabled || !ActiveBelow(renderer.transform, target.transform)) continue;
-                if (renderer is SkinnedMeshRenderer skinned && skinned.sharedMesh != null) return;
-                if (renderer is MeshRenderer)
-                {
-                    var filter = renderer.GetComponent<MeshFilter>();
-                    if (filter != null && filter.sharedMesh != null) return;
-                }
-            }
+            foreach (var _ in TargetMeshes.Of(target)) return;
             throw new CaptureException("The target '" + target.name + "' has no enabled MeshRenderer or SkinnedMeshRenderer with " +
                 "a mesh on itself or its active children, so there is nothing to capture. Pick the object that holds the model's renderers.");
-        }
-
-        /// <summary>Whether <paramref name="t"/> is active, ignoring the target's own and its parents' active states (the copy is activated).</summary>
-        internal static bool ActiveBelow(Transform t, Transform target)
-        {
-            for (; t != null && t != target; t = t.parent)
-                if (!t.gameObject.activeSelf) return false;
-            return true;
         }
 
         void SetUp()

@@ -16,26 +16,15 @@ namespace NerfDatasetCreator.Editor
     public static class DatasetCapture
     {
         /// <summary>
-        /// Centre and bounding-sphere radius of the target's enabled renderers in world space (the sphere around
-        /// their combined axis-aligned bounds). Radius 0 when there are none.
+        /// Centre and bounding-sphere radius (the sphere around the axis-aligned box) of the meshes the capture renders
+        /// (<see cref="TargetMeshes"/>), in world space. Radius 0 at the target's position when it has none.
         /// </summary>
         public static PlanTarget MeasureTarget(GameObject target)
         {
             if (target == null) return PlanTarget.AtOrigin;
-            Bounds? all = null;
-            foreach (var renderer in target.GetComponentsInChildren<Renderer>())
-            {
-                if (!renderer.enabled) continue;
-                if (all.HasValue)
-                {
-                    var grown = all.Value;
-                    grown.Encapsulate(renderer.bounds);
-                    all = grown;
-                }
-                else all = renderer.bounds;
-            }
-            if (!all.HasValue) return new PlanTarget(ToCore(target.transform.position), 0);
-            return new PlanTarget(ToCore(all.Value.center), all.Value.extents.magnitude);
+            var bounds = TargetMeshes.WorldBounds(target);
+            if (!bounds.HasValue) return new PlanTarget(ToCore(target.transform.position), 0);
+            return new PlanTarget(ToCore(bounds.Value.center), bounds.Value.extents.magnitude);
         }
 
         /// <summary>

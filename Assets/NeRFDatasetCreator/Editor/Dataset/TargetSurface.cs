@@ -23,12 +23,11 @@ namespace NerfDatasetCreator.Editor
         {
             var meshes = new List<SurfaceMesh>();
             if (target == null) return meshes;
-            foreach (var renderer in target.GetComponentsInChildren<Renderer>(true))
+            foreach (var pair in TargetMeshes.Of(target))
             {
-                if (!renderer.enabled || !CaptureSession.ActiveBelow(renderer.transform, target.transform)) continue;
+                var renderer = pair.Key;
                 if (renderer is SkinnedMeshRenderer skinned)
                 {
-                    if (skinned.sharedMesh == null) continue;
                     var baked = new Mesh();
                     try
                     {
@@ -42,12 +41,7 @@ namespace NerfDatasetCreator.Editor
                         Object.DestroyImmediate(baked);
                     }
                 }
-                else if (renderer is MeshRenderer)
-                {
-                    var filter = renderer.GetComponent<MeshFilter>();
-                    if (filter == null || filter.sharedMesh == null) continue;
-                    Add(meshes, warnings, renderer, filter.sharedMesh, filter.sharedMesh.name);
-                }
+                else Add(meshes, warnings, renderer, pair.Value, pair.Value.name);
             }
             return meshes;
         }

@@ -5,8 +5,8 @@ namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// The target as the window shows it: Core's measure (centre and bounding radius, from
-    /// <see cref="DatasetCapture.MeasureTarget"/>, which the plan uses) and the axis-aligned box of its enabled
-    /// renderers (for the size shown, "Frame in Scene view" and the preview's box).
+    /// <see cref="DatasetCapture.MeasureTarget"/>, which the plan uses) and the axis-aligned box of the meshes the
+    /// capture renders (for the size shown, "Frame in Scene view" and the preview's box).
     /// </summary>
     sealed class TargetInfo
     {
@@ -35,15 +35,9 @@ namespace NerfDatasetCreator.Editor
                 var p = target.transform.position;
                 measure = new PlanTarget(new Vector3d(p.x, p.y, p.z), 0);
             }
-            var any = false;
-            var bounds = new Bounds(target.transform.position, Vector3.zero);
-            foreach (var renderer in target.GetComponentsInChildren<Renderer>())
-            {
-                if (!renderer.enabled) continue;
-                if (!any) bounds = renderer.bounds;
-                else bounds.Encapsulate(renderer.bounds);
-                any = true;
-            }
+            var measured = NerfDatasetCreator.Editor.Capture.TargetMeshes.WorldBounds(target);
+            var bounds = measured ?? new Bounds(target.transform.position, Vector3.zero);
+            var any = measured.HasValue;
             return new TargetInfo(measure, bounds, any);
         }
     }
