@@ -14,7 +14,7 @@ namespace NerfDatasetCreator.Editor
     /// <c>Unity -batchmode -projectPath P -executeMethod NerfDatasetCreator.Editor.BatchCapture.Run -nerfConfig F
     /// [-nerfScene S] [-nerfOut D] [-nerfShard i/N] -logFile -</c>. Exits 0 on success, 1 when the capture failed,
     /// 2 when the arguments, config, scene or target are invalid (every problem printed), 3 without a graphics device.
-    /// Do not pass -quit: the capture spans editor updates and exits itself.
+    /// The capture runs to the end inside <see cref="Run"/>, which then exits Unity with its code: -quit is not needed.
     /// </summary>
     public static class BatchCapture
     {
