@@ -55,7 +55,12 @@ namespace NerfDatasetCreator
                 else if (angleX == null) angleX = (double)angle;
                 else if (Math.Abs(angleX.Value - (double)angle) > 1e-9)
                     warnings.Add(new ValidationProblem(split + ".camera_angle_x", ((double)angle).ToString("R", CultureInfo.InvariantCulture), "differs from train's " + angleX.Value.ToString("R", CultureInfo.InvariantCulture) + "; the export uses train's (NeRF itself uses the test file's).", "Write the same field of view in every split."));
-                if (cx == null && json["cx"] != null && json["cy"] != null) { cx = (double)json["cx"]; cy = (double)json["cy"]; }
+                if (cx == null && json["cx"] != null && json["cy"] != null)
+                {
+                    if (IsNumber(json["cx"]) && IsNumber(json["cy"])) { cx = (double)json["cx"]; cy = (double)json["cy"]; }
+                    else problems.Add(new ValidationProblem(split + ".cx, cy", json["cx"].ToString(Formatting.None) + ", " + json["cy"].ToString(Formatting.None),
+                        "must be the principal point in pixels, two numbers.", "Write cx and cy as numbers (W/2 and H/2 without lens shift), or remove both."));
+                }
                 if (normalisation == null && json["scene_normalisation"] != null) normalisation = SceneNormalisation.FromJson(json["scene_normalisation"]);
 
                 if (!(json["frames"] is JArray list) || list.Count == 0)
@@ -137,6 +142,8 @@ namespace NerfDatasetCreator
                     $"Re-capture with {what} for every split."));
         }
 
+        static bool IsNumber(JToken token) => token.Type == JTokenType.Float || token.Type == JTokenType.Integer;
+
         static bool TryMatrix(JToken token, out Matrix4x4d matrix, out string reason)
         {
             matrix = Matrix4x4d.Identity;
@@ -148,7 +155,7 @@ namespace NerfDatasetCreator
                 if (!(rows[r] is JArray row) || row.Count != 4) return false;
                 for (var c = 0; c < 4; c++)
                 {
-                    if (row[c].Type != JTokenType.Float && row[c].Type != JTokenType.Integer) return false;
+                    if (!IsNumber(row[c])) return false;
                     values[r * 4 + c] = (double)row[c];
                 }
             }

@@ -220,6 +220,34 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void Load_PrincipalPointThatIsNotANumber_NamesTheField()
+        {
+            var path = Path.Combine(_lego.Root, "transforms_train.json");
+            var train = JObject.Parse(File.ReadAllText(path));
+            train["cx"] = "centre";
+            train["cy"] = 400;
+            File.WriteAllText(path, train.ToString());
+
+            var e = Assert.Throws<InvalidParameterException>(() => BlenderDatasetLoader.Load(_lego.Root));
+
+            Assert.That(e.Problems.Select(p => p.Field), Is.EqualTo(new[] { "train.cx, cy" }));
+            Assert.That(e.Problems[0].Value, Is.EqualTo("\"centre\", 400"));
+        }
+
+        [Test]
+        public void Load_SceneNormalisationWithATextScale_NamesTheKey()
+        {
+            var path = Path.Combine(_lego.Root, "transforms_train.json");
+            var train = JObject.Parse(File.ReadAllText(path));
+            train["scene_normalisation"] = new JObject { ["scale"] = "one", ["centre"] = new JArray(0.0, 0.0, 0.0) };
+            File.WriteAllText(path, train.ToString());
+
+            var e = Assert.Throws<InvalidParameterException>(() => BlenderDatasetLoader.Load(_lego.Root));
+
+            Assert.That(e.Problems[0].Field, Is.EqualTo("scene_normalisation"));
+        }
+
+        [Test]
         public void Load_MissingImage_NamesTheFrame()
         {
             File.Delete(Path.Combine(_lego.Root, "val", "r_2.png"));
