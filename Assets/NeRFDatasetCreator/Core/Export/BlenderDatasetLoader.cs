@@ -18,7 +18,6 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class BlenderDatasetLoader
     {
-        public static readonly string[] Splits = { "train", "val", "test" };
         public const string PointCloudFileName = "points3d.ply";
 
         public static ExportScene Load(string datasetDirectory, ICollection<ValidationProblem> warnings = null)
@@ -37,12 +36,12 @@ namespace NerfDatasetCreator
             SceneNormalisation normalisation = null;
             PngInfo size = null;
             string sizeSource = null;
-            foreach (var split in Splits)
+            foreach (var split in DatasetSplits.Names)
             {
-                var jsonPath = Path.Combine(root, "transforms_" + split + ".json");
+                var jsonPath = Path.Combine(root, DatasetLayout.TransformsFileName(split));
                 if (!File.Exists(jsonPath))
                 {
-                    warnings.Add(new ValidationProblem("transforms_" + split + ".json", jsonPath, "is missing; the export has no " + split + " frames.", "bmild/nerf and nerf-pytorch need all three split files."));
+                    warnings.Add(new ValidationProblem(DatasetLayout.TransformsFileName(split), jsonPath, "is missing; the export has no " + split + " frames.", "bmild/nerf and nerf-pytorch need all three split files."));
                     continue;
                 }
                 JObject json;
