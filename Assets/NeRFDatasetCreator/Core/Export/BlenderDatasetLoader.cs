@@ -159,12 +159,10 @@ namespace NerfDatasetCreator
                 }
             }
             matrix = Matrix4x4d.FromRowMajor(values);
-            if (!matrix.IsFinite) { reason = "contains a non-finite number."; return false; }
-            // nerf_synthetic stores float32 rotations: orthonormal to ~1e-7, so the tolerance is loose but still
-            // rejects scaled or mirrored matrices, which no converter could turn into a camera pose.
-            if (Math.Abs(matrix.Determinant3x3 - 1) > 1e-4 || matrix[3, 0] != 0 || matrix[3, 1] != 0 || matrix[3, 2] != 0 || matrix[3, 3] != 1)
+            var pose = DatasetValidator.PoseProblems(matrix);
+            if (pose.Count > 0)
             {
-                reason = "is not a rigid camera-to-world matrix (rotation determinant " + matrix.Determinant3x3.ToString("R", CultureInfo.InvariantCulture) + ", last row must be 0 0 0 1).";
+                reason = string.Join(" ", pose);
                 return false;
             }
             return true;
