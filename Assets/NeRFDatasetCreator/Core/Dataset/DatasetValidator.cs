@@ -79,6 +79,10 @@ namespace NerfDatasetCreator
                     CheckFrame(folder, file, frame, state, report);
                     if (frame.ExtraFiles.ContainsKey("depth_path")) needsDepthScale = true;
                 }
+                if (state.First != null && (doc.W.HasValue && doc.W != state.First.Width || doc.H.HasValue && doc.H != state.First.Height))
+                    report.Problems.Add(new DatasetProblem(file, -1, null,
+                        "w × h = " + Show(doc.W) + "×" + Show(doc.H) + " but the images are " + state.First.Width + "×" + state.First.Height +
+                        "; instant-ngp and nerfstudio take the intrinsics from w and h (write the images' size)."));
                 if (needsDepthScale && !(doc.IntegerDepthScale > 0))
                     report.Problems.Add(new DatasetProblem(file, -1, null,
                         "frames have depth_path but integer_depth_scale is " + (doc.IntegerDepthScale.HasValue ? ValidationProblem.Format(doc.IntegerDepthScale.Value) : "missing") +
@@ -91,6 +95,8 @@ namespace NerfDatasetCreator
                     "(object size unknown here: the target is taken as a point at the origin) " + range));
             return report;
         }
+
+        static string Show(int? value) => value.HasValue ? value.Value.ToString(System.Globalization.CultureInfo.InvariantCulture) : "?";
 
         static string LoadersNeeding(DatasetSplit split)
         {
