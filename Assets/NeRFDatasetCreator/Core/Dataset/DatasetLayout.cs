@@ -15,7 +15,10 @@ namespace NerfDatasetCreator
         public const string ConfigFileName = "dataset_config.json";
         public const string RigPreviewFileName = "rig_preview.ply";
 
-        public static string TransformsFileName(DatasetSplit split) => "transforms_" + DatasetSplits.Name(split) + ".json";
+        public static string TransformsFileName(DatasetSplit split) => TransformsFileName(DatasetSplits.Name(split));
+
+        /// <summary><c>transforms_&lt;split&gt;.json</c> for a split name as the files spell it ("train").</summary>
+        public static string TransformsFileName(string splitName) => "transforms_" + splitName + ".json";
 
         /// <summary>The view's file stem, <c>r_7</c>.</summary>
         public static string Stem(int index)

@@ -20,6 +20,9 @@ namespace NerfDatasetCreator
     {
         public static readonly IReadOnlyList<DatasetSplit> All = new[] { DatasetSplit.Train, DatasetSplit.Val, DatasetSplit.Test };
 
+        /// <summary>The names of <see cref="All"/>, in the same order: "train", "val", "test".</summary>
+        public static readonly IReadOnlyList<string> Names = new[] { Name(DatasetSplit.Train), Name(DatasetSplit.Val), Name(DatasetSplit.Test) };
+
         public static string Name(DatasetSplit split)
         {
             switch (split)

@@ -30,7 +30,7 @@ namespace NerfDatasetCreator
             sb.Append(Folder).Append(": ");
             if (FrameCounts.Count == 0) sb.Append("no transforms file read; ");
             else
-                sb.Append(string.Join(", ", new[] { "train", "val", "test" }.Where(FrameCounts.ContainsKey)
+                sb.Append(string.Join(", ", DatasetSplits.Names.Where(FrameCounts.ContainsKey)
                     .Select(s => s + " " + FrameCounts[s].ToString(CultureInfo.InvariantCulture)))).Append(" frames; ");
             sb.Append(ImagesChecked.ToString(CultureInfo.InvariantCulture)).Append(" images");
             if (ImageWidth.HasValue) sb.Append(" (").Append(ImageWidth.Value.ToString(CultureInfo.InvariantCulture)).Append('×').Append(ImageHeight.Value.ToString(CultureInfo.InvariantCulture)).Append(')');

@@ -79,6 +79,10 @@ namespace NerfDatasetCreator
                     CheckFrame(folder, file, frame, state, report);
                     if (frame.ExtraFiles.ContainsKey("depth_path")) needsDepthScale = true;
                 }
+                if (state.First != null && (doc.W.HasValue && doc.W != state.First.Width || doc.H.HasValue && doc.H != state.First.Height))
+                    report.Problems.Add(new DatasetProblem(file, -1, null,
+                        "w × h = " + Show(doc.W) + "×" + Show(doc.H) + " but the images are " + state.First.Width + "×" + state.First.Height +
+                        "; instant-ngp and nerfstudio take the intrinsics from w and h (write the images' size)."));
                 if (needsDepthScale && !(doc.IntegerDepthScale > 0))
                     report.Problems.Add(new DatasetProblem(file, -1, null,
                         "frames have depth_path but integer_depth_scale is " + (doc.IntegerDepthScale.HasValue ? ValidationProblem.Format(doc.IntegerDepthScale.Value) : "missing") +
@@ -91,6 +95,8 @@ namespace NerfDatasetCreator
                     "(object size unknown here: the target is taken as a point at the origin) " + range));
             return report;
         }
+
+        static string Show(int? value) => value.HasValue ? value.Value.ToString(System.Globalization.CultureInfo.InvariantCulture) : "?";
 
         static string LoadersNeeding(DatasetSplit split)
         {
@@ -243,13 +249,24 @@ namespace NerfDatasetCreator
 
         static void CheckMatrix(Matrix4x4d m, Action<string> problem)
         {
+            foreach (var p in PoseProblems(m)) problem(p);
+        }
+
+        /// <summary>
+        /// Why <paramref name="m"/> is not a rigid camera-to-world pose (finite, last row 0 0 0 1, rotation orthonormal
+        /// with determinant +1 within <see cref="RotationTolerance"/>); empty when it is one. Shared by validate and
+        /// the converters' loader, so both accept exactly the same matrices.
+        /// </summary>
+        public static IReadOnlyList<string> PoseProblems(Matrix4x4d m)
+        {
+            var problems = new List<string>();
             if (!m.IsFinite)
             {
-                problem("transform_matrix has a NaN or infinite entry.");
-                return;
+                problems.Add("transform_matrix has a NaN or infinite entry.");
+                return problems;
             }
             if (m[3, 0] != 0 || m[3, 1] != 0 || m[3, 2] != 0 || m[3, 3] != 1)
-                problem("transform_matrix's last row is not [0, 0, 0, 1].");
+                problems.Add("transform_matrix's last row is not [0, 0, 0, 1].");
             var worst = 0.0;
             for (var a = 0; a < 3; a++)
                 for (var b = 0; b < 3; b++)
@@ -259,10 +276,11 @@ namespace NerfDatasetCreator
                 }
             var det = m.Determinant3x3;
             if (worst >= RotationTolerance)
-                problem("transform_matrix's rotation is not orthonormal (largest error of RᵀR − I: " + ValidationProblem.Format(worst) +
-                        "); it is scaled or sheared, and loaders expect a rigid camera pose.");
+                problems.Add("transform_matrix's rotation is not orthonormal (largest error of RᵀR − I: " + ValidationProblem.Format(worst) +
+                             "); it is scaled or sheared, and loaders expect a rigid camera pose.");
             else if (Math.Abs(det - 1) >= RotationTolerance)
-                problem("transform_matrix's rotation has determinant " + ValidationProblem.Format(det) + ", not +1: it is mirrored (a left-handed pose, e.g. Unity's matrix without the Y/Z swap).");
+                problems.Add("transform_matrix's rotation has determinant " + ValidationProblem.Format(det) + ", not +1: it is mirrored (a left-handed pose, e.g. Unity's matrix without the Y/Z swap).");
+            return problems;
         }
 
         /// <summary>The absolute path of a dataset-relative path such as <c>./train/r_0.png</c>, or null when it leaves the folder.</summary>

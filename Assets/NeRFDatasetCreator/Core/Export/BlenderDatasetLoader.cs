@@ -18,7 +18,6 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class BlenderDatasetLoader
     {
-        public static readonly string[] Splits = { "train", "val", "test" };
         public const string PointCloudFileName = "points3d.ply";
 
         public static ExportScene Load(string datasetDirectory, ICollection<ValidationProblem> warnings = null)
@@ -37,12 +36,12 @@ namespace NerfDatasetCreator
             SceneNormalisation normalisation = null;
             PngInfo size = null;
             string sizeSource = null;
-            foreach (var split in Splits)
+            foreach (var split in DatasetSplits.Names)
             {
-                var jsonPath = Path.Combine(root, "transforms_" + split + ".json");
+                var jsonPath = Path.Combine(root, DatasetLayout.TransformsFileName(split));
                 if (!File.Exists(jsonPath))
                 {
-                    warnings.Add(new ValidationProblem("transforms_" + split + ".json", jsonPath, "is missing; the export has no " + split + " frames.", "bmild/nerf and nerf-pytorch need all three split files."));
+                    warnings.Add(new ValidationProblem(DatasetLayout.TransformsFileName(split), jsonPath, "is missing; the export has no " + split + " frames.", "bmild/nerf and nerf-pytorch need all three split files."));
                     continue;
                 }
                 JObject json;
@@ -55,7 +54,12 @@ namespace NerfDatasetCreator
                 else if (angleX == null) angleX = (double)angle;
                 else if (Math.Abs(angleX.Value - (double)angle) > 1e-9)
                     warnings.Add(new ValidationProblem(split + ".camera_angle_x", ((double)angle).ToString("R", CultureInfo.InvariantCulture), "differs from train's " + angleX.Value.ToString("R", CultureInfo.InvariantCulture) + "; the export uses train's (NeRF itself uses the test file's).", "Write the same field of view in every split."));
-                if (cx == null && json["cx"] != null && json["cy"] != null) { cx = (double)json["cx"]; cy = (double)json["cy"]; }
+                if (cx == null && json["cx"] != null && json["cy"] != null)
+                {
+                    if (IsNumber(json["cx"]) && IsNumber(json["cy"])) { cx = (double)json["cx"]; cy = (double)json["cy"]; }
+                    else problems.Add(new ValidationProblem(split + ".cx, cy", json["cx"].ToString(Formatting.None) + ", " + json["cy"].ToString(Formatting.None),
+                        "must be the principal point in pixels, two numbers.", "Write cx and cy as numbers (W/2 and H/2 without lens shift), or remove both."));
+                }
                 if (normalisation == null && json["scene_normalisation"] != null) normalisation = SceneNormalisation.FromJson(json["scene_normalisation"]);
 
                 if (!(json["frames"] is JArray list) || list.Count == 0)
@@ -137,6 +141,8 @@ namespace NerfDatasetCreator
                     $"Re-capture with {what} for every split."));
         }
 
+        static bool IsNumber(JToken token) => token.Type == JTokenType.Float || token.Type == JTokenType.Integer;
+
         static bool TryMatrix(JToken token, out Matrix4x4d matrix, out string reason)
         {
             matrix = Matrix4x4d.Identity;
@@ -148,17 +154,15 @@ namespace NerfDatasetCreator
                 if (!(rows[r] is JArray row) || row.Count != 4) return false;
                 for (var c = 0; c < 4; c++)
                 {
-                    if (row[c].Type != JTokenType.Float && row[c].Type != JTokenType.Integer) return false;
+                    if (!IsNumber(row[c])) return false;
                     values[r * 4 + c] = (double)row[c];
                 }
             }
             matrix = Matrix4x4d.FromRowMajor(values);
-            if (!matrix.IsFinite) { reason = "contains a non-finite number."; return false; }
-            // nerf_synthetic stores float32 rotations: orthonormal to ~1e-7, so the tolerance is loose but still
-            // rejects scaled or mirrored matrices, which no converter could turn into a camera pose.
-            if (Math.Abs(matrix.Determinant3x3 - 1) > 1e-4 || matrix[3, 0] != 0 || matrix[3, 1] != 0 || matrix[3, 2] != 0 || matrix[3, 3] != 1)
+            var pose = DatasetValidator.PoseProblems(matrix);
+            if (pose.Count > 0)
             {
-                reason = "is not a rigid camera-to-world matrix (rotation determinant " + matrix.Determinant3x3.ToString("R", CultureInfo.InvariantCulture) + ", last row must be 0 0 0 1).";
+                reason = string.Join(" ", pose);
                 return false;
             }
             return true;

@@ -1,11 +1,8 @@
-using System.Globalization;
-using System.IO;
-using Newtonsoft.Json;
 using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
-    /// <summary>JSON as the exporters write it: Newtonsoft's round-trip doubles, invariant culture, "\n" line ends.</summary>
+    /// <summary>JSON as the exporters write it: <see cref="JsonNumbers"/>' numbers, invariant culture, "\n" line ends.</summary>
     public static class ExportJson
     {
         public static JArray Matrix(Matrix4x4d m) => Rows(m, 4);
@@ -20,14 +17,17 @@ namespace NerfDatasetCreator
             return result;
         }
 
+        /// <summary>
+        /// The file text of <paramref name="token"/>: 2-space indentation, every double through
+        /// <see cref="JsonNumbers.Format"/>, so exports write numbers exactly as the Blender split files do.
+        /// </summary>
         public static string Serialise(JToken token)
         {
-            using (var text = new StringWriter(CultureInfo.InvariantCulture) { NewLine = "\n" })
+            using (var text = JsonNumbers.CreateText())
             {
-                using (var writer = new JsonTextWriter(text) { Formatting = Formatting.Indented, Culture = CultureInfo.InvariantCulture, CloseOutput = false })
-                    token.WriteTo(writer);
-                text.Write("\n");
-                return text.ToString();
+                using (var writer = JsonNumbers.CreateWriter(text))
+                    JsonNumbers.WriteToken(writer, token);
+                return text.ToString() + "\n";
             }
         }
     }

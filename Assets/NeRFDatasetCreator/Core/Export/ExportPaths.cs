@@ -8,7 +8,7 @@ namespace NerfDatasetCreator
         public static string Normalise(string relativePath)
         {
             var p = relativePath.Replace('\\', '/');
-            while (p.StartsWith("./")) p = p.Substring(2);
+            while (p.StartsWith("./", System.StringComparison.Ordinal)) p = p.Substring(2);
             return p;
         }
 

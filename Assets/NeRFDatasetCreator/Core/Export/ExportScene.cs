@@ -24,7 +24,7 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>16-bit depth PNGs store round(z·1000): one step is a thousandth of an output unit (nerfstudio's default factor).</summary>
-        public const double DefaultDepthUnitScale = 0.001;
+        public const double DefaultDepthUnitScale = BlenderTransformsWriter.DepthUnitScale;
 
         public string RootDirectory { get; }
         public CameraIntrinsics Intrinsics { get; }

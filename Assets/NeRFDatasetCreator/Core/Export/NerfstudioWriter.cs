@@ -38,7 +38,7 @@ namespace NerfDatasetCreator
             if (scene.PointCloudPath != null) json["ply_file_path"] = Rel(scene.PointCloudPath);
             if (scene.HasDepth) json["depth_unit_scale_factor"] = scene.DepthUnitScale;
             if (scene.Normalisation != null) json["scene_normalisation"] = scene.Normalisation.ToJson();
-            foreach (var split in new[] { "train", "val", "test" })
+            foreach (var split in DatasetSplits.Names)
                 json[split + "_filenames"] = new JArray(scene.Split(split).Select(f => (object)Rel(f.ImagePath)).ToArray());
 
             var frames = new JArray();
@@ -64,7 +64,7 @@ namespace NerfDatasetCreator
         public static IReadOnlyList<ValidationProblem> Warnings(ExportScene scene)
         {
             var problems = new List<ValidationProblem>();
-            foreach (var split in new[] { "train", "val", "test" })
+            foreach (var split in DatasetSplits.Names)
                 if (!scene.Split(split).Any())
                     problems.Add(new ValidationProblem(split + "_filenames", "[]",
                         $"is empty; nerfstudio needs frames in every split it loads (train, and val or test for evaluation).",

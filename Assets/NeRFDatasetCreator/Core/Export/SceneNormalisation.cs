@@ -1,5 +1,6 @@
 using System;
 using System.Globalization;
+using System.Linq;
 using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
@@ -101,11 +102,12 @@ namespace NerfDatasetCreator
         /// <summary>Reads a record written by <see cref="ToJson"/>.</summary>
         public static SceneNormalisation FromJson(JToken token)
         {
-            if (!(token is JObject o) || o["scale"] == null || !(o["centre"] is JArray c) || c.Count != 3)
+            bool IsNumber(JToken t) => t != null && (t.Type == JTokenType.Float || t.Type == JTokenType.Integer);
+            if (!(token is JObject o) || !IsNumber(o["scale"]) || !(o["centre"] is JArray c) || c.Count != 3 || !c.All(IsNumber))
                 throw new InvalidParameterException(new[]
                 {
                     new ValidationProblem("scene_normalisation", token?.ToString(Newtonsoft.Json.Formatting.None) ?? "null",
-                        "is not a record with \"scale\" and a 3-element \"centre\".", "Remove the key or restore it from the original export."),
+                        "is not a record with a number \"scale\" and a \"centre\" of 3 numbers.", "Remove the key or restore it from the original export."),
                 });
             return new SceneNormalisation(new Vector3d((double)c[0], (double)c[1], (double)c[2]), (double)o["scale"]);
         }

@@ -8,14 +8,15 @@ namespace NerfDatasetCreator
     /// <summary>
     /// An ASCII PLY of the planned rig in the output frame (the frame of the transforms files): per camera its
     /// centre and a small frustum pyramid (4 edges to the image corners and the image rectangle), plus a marker
-    /// at the target; vertices and edges coloured by split (train red, val green, test blue, target white).
+    /// at the target; vertices and edges coloured by split in the Scene-view preview's palette (<see cref="SplitColors"/>:
+    /// train sky blue, val orange, test reddish purple; target white), so both previews read the same way.
     /// MeshLab and Blender read <c>element vertex</c> with <c>red green blue</c> and <c>element edge</c>.
     /// </summary>
     public static class RigPreviewPly
     {
-        public static readonly byte[] TrainColour = { 230, 70, 50 };
-        public static readonly byte[] ValColour = { 60, 190, 80 };
-        public static readonly byte[] TestColour = { 60, 110, 235 };
+        public static readonly byte[] TrainColour = Bytes(SplitColors.Train);
+        public static readonly byte[] ValColour = Bytes(SplitColors.Val);
+        public static readonly byte[] TestColour = Bytes(SplitColors.Test);
         public static readonly byte[] TargetColour = { 255, 255, 255 };
 
         /// <summary>The frustum drawn for each camera reaches this fraction of the camera distance.</summary>
@@ -49,7 +50,7 @@ namespace NerfDatasetCreator
                 }
             }
             var sb = new StringBuilder();
-            sb.Append("ply\nformat ascii 1.0\ncomment ").Append(PluginInfo.Name).Append(" rig preview: train red, val green, test blue, target white; output (Blender) frame\n");
+            sb.Append("ply\nformat ascii 1.0\ncomment ").Append(PluginInfo.Name).Append(" rig preview: train sky blue, val orange, test reddish purple, target white; output (Blender) frame\n");
             sb.Append("element vertex ").Append(vertices.Count.ToString(CultureInfo.InvariantCulture)).Append('\n');
             sb.Append("property float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n");
             sb.Append("element edge ").Append(edges.Count.ToString(CultureInfo.InvariantCulture)).Append('\n');
@@ -70,5 +71,9 @@ namespace NerfDatasetCreator
         static string Number(double v) => ((float)v).ToString("G9", CultureInfo.InvariantCulture);
 
         static string Byte(byte b) => b.ToString(CultureInfo.InvariantCulture);
+
+        static byte[] Bytes(RgbaColor c) => new[] { ToByte(c.R), ToByte(c.G), ToByte(c.B) };
+
+        static byte ToByte(float component) => (byte)Math.Round(Math.Max(0, Math.Min(1, component)) * 255);
     }
 }

@@ -18,7 +18,7 @@ namespace NerfDatasetCreator
         public const int MaxSize = 8192;
         public const int MinSupersampling = 1;
         public const int MaxSupersampling = 4;
-        public const int MaxViews = 100000;
+        public const int MaxViews = FormationMath.MaxViews;
 
         /// <summary>Bounds of <see cref="NormalisedTargetRadius"/> (output units).</summary>
         public const double MinNormalisedTargetRadius = 0.001;

@@ -61,17 +61,17 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>
-        /// The first shard's config made to describe the whole dataset: <c>imagesRendered</c> summed over the shards,
-        /// and the per-shard <c>statistics</c> and <c>shard</c> entries dropped.
+        /// The first shard's config made to describe the whole dataset: <c>imagesRendered</c> (a boolean, see
+        /// <see cref="DatasetConfigWriter"/>) true only when every shard rendered its images, and the per-shard
+        /// <c>statistics</c> dropped.
         /// </summary>
         static JToken MergedConfig(JToken first, List<ShardFolder> shards)
         {
             if (!(first.DeepClone() is JObject merged)) return first.DeepClone();
             merged.Remove("statistics");
-            merged.Remove("shard");
-            var counts = shards.Select(s => (s.Config as JObject)?["imagesRendered"]).ToList();
-            if (counts.All(c => c != null && c.Type == JTokenType.Integer))
-                merged["imagesRendered"] = counts.Sum(c => (long)c);
+            var rendered = shards.Select(s => (s.Config as JObject)?["imagesRendered"]).ToList();
+            if (rendered.All(r => r != null && r.Type == JTokenType.Boolean))
+                merged["imagesRendered"] = rendered.All(r => (bool)r);
             return merged;
         }
 

@@ -65,8 +65,7 @@ namespace NerfDatasetCreator
                 {
                     if (property.Value.Type != JTokenType.String) continue;
                     if (property.Name != "file_path" && !property.Name.EndsWith("_path", StringComparison.Ordinal)) continue;
-                    var relative = ((string)property.Value).Replace('\\', '/');
-                    if (relative.StartsWith("./", StringComparison.Ordinal)) relative = relative.Substring(2);
+                    var relative = ExportPaths.Normalise((string)property.Value);
                     if (property.Name == "file_path" && Path.GetExtension(relative).Length == 0) relative += ".png";
                     var where = Path.Combine(frame.Shard.Folder, ShardMerger.TransformsFileName(frame.Split)) + ": " + frame.Split + " r_" + Str(frame.Index) + "." + property.Name;
                     if (relative.Length == 0 || Path.IsPathRooted(relative) || relative.Split('/').Contains(".."))

@@ -111,10 +111,14 @@ namespace NerfDatasetCreator
             }
 
             var problems = new List<ValidationProblem>();
-            if ((string)root["format"] != Format)
-                problems.Add(new ValidationProblem(source + ": format", (string)root["format"] ?? "(missing)", "is not \"" + Format + "\".", "Pass the shard folders written by the NeRF Dataset Creator capture."));
+            if (!(root["format"] is JValue format && format.Type == JTokenType.String && (string)format == Format))
+                problems.Add(new ValidationProblem(source + ": format", root["format"]?.ToString(Formatting.None) ?? "(missing)", "is not \"" + Format + "\".", "Pass the shard folders written by the NeRF Dataset Creator capture."));
             if (!(root["version"] is JValue version) || version.Type != JTokenType.Integer || (long)version != Version)
                 problems.Add(new ValidationProblem(source + ": version", root["version"]?.ToString() ?? "(missing)", "is not " + Version + ".", "Merge with the version of the tool that captured the shards."));
+            var assignment = root["assignment"];
+            if (assignment != null && !(assignment.Type == JTokenType.String && (string)assignment == RoundRobin))
+                problems.Add(new ValidationProblem(source + ": assignment", assignment.ToString(Formatting.None), "is not \"" + RoundRobin + "\", the only assignment merge knows.",
+                    "Recapture the shards with this plugin's -nerfShard i/N."));
             var index = Integer(root, "shardIndex", source, problems);
             var count = Integer(root, "shardCount", source, problems);
             if (index.HasValue && count.HasValue)
@@ -152,7 +156,7 @@ namespace NerfDatasetCreator
             if (problems.Count > 0) throw new InvalidParameterException(problems);
             return new ShardManifest(new ShardSpec(index.Value, count.Value),
                 new ViewCounts(perSplit["train"], perSplit["val"], perSplit["test"]),
-                (string)root["assignment"] ?? RoundRobin, views);
+                RoundRobin, views);
         }
 
         static int? Integer(JObject o, string key, string source, List<ValidationProblem> problems)

@@ -15,16 +15,16 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class ShardMerger
     {
-        public const string ConfigFileName = "dataset_config.json";
+        public const string ConfigFileName = DatasetLayout.ConfigFileName;
 
         /// <summary>
         /// Top-level keys of <c>dataset_config.json</c> that describe one run rather than the dataset (when and
         /// where it ran, what it rendered): they may differ between shards, which merge reports as a warning. Every
         /// other key (settings, seed, distance, target, plugin version) must be identical.
         /// </summary>
-        public static readonly IReadOnlyList<string> PerRunConfigKeys = new[] { "createdUtc", "imagesRendered", "statistics", "tool", "unityVersion", "shard" };
+        public static readonly IReadOnlyList<string> PerRunConfigKeys = new[] { "createdUtc", "imagesRendered", "statistics", "tool", "unityVersion" };
 
-        public static string TransformsFileName(string split) => "transforms_" + split + ".json";
+        public static string TransformsFileName(string split) => DatasetLayout.TransformsFileName(split);
 
         /// <summary>
         /// Merges <paramref name="shardFolders"/> into <paramref name="outputFolder"/>, which must not exist.

@@ -12,7 +12,7 @@ namespace NerfDatasetCreator
     public sealed class ViewCounts
     {
         /// <summary>The split names as the dataset files spell them, in plan order.</summary>
-        public static readonly IReadOnlyList<string> SplitNames = new[] { "train", "val", "test" };
+        public static readonly IReadOnlyList<string> SplitNames = DatasetSplits.Names;
 
         public ViewCounts(int train, int val, int test)
         {

@@ -1,5 +1,6 @@
 using System;
 using System.Globalization;
+using Newtonsoft.Json.Linq;
 using NUnit.Framework;
 
 namespace NerfDatasetCreator.Tests
@@ -33,6 +34,16 @@ namespace NerfDatasetCreator.Tests
                 var text = JsonNumbers.Format(value);
                 Assert.That(double.Parse(text, NumberStyles.Float, CultureInfo.InvariantCulture), Is.EqualTo(value), text);
             }
+        }
+
+        [Test]
+        public void ExportsWriteNumbersAsTheSplitFilesDo()
+        {
+            // nerfstudio's and instant-ngp's transforms.json are written by ExportJson: the same number text as
+            // transforms_<split>.json (lowercase exponent, no negative zero), not Newtonsoft's "1E-16" and "-0.0".
+            var json = new JObject { ["tiny"] = 1e-16, ["negativeZero"] = -0.0, ["whole"] = 400.0, ["count"] = 3 };
+            Assert.That(ExportJson.Serialise(json),
+                Is.EqualTo("{\n  \"tiny\": 1e-16,\n  \"negativeZero\": 0.0,\n  \"whole\": 400.0,\n  \"count\": 3\n}\n"));
         }
 
         [TestCase(double.NaN)]

@@ -40,6 +40,23 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void DeclaredSizeThatIsNotTheImagesSize()
+        {
+            var s = new DatasetSettings { Width = 64, Height = 48 };
+            s.Train.Count = 2;
+            s.Val.Count = 1;
+            s.Test.Count = 1;
+            var folder = _temp.Combine("ours");
+            TestDatasets.FromPlan(folder, CapturePlan.Build(s, PlanTarget.AtOrigin));
+            var train = Path.Combine(folder, "transforms_train.json");
+            File.WriteAllText(train, File.ReadAllText(train).Replace("\"w\": 64,", "\"w\": 800,"));
+            Assert.That(Lines(folder), Is.EqualTo(new[]
+            {
+                "transforms_train.json: w × h = 800×48 but the images are 64×48; instant-ngp and nerfstudio take the intrinsics from w and h (write the images' size).",
+            }));
+        }
+
+        [Test]
         public void ExtraFileInTheWrongFormat()
         {
             var s = new DatasetSettings { Width = 32, Height = 32 };

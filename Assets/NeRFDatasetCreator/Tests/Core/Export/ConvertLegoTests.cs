@@ -220,6 +220,51 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void Load_PrincipalPointThatIsNotANumber_NamesTheField()
+        {
+            var path = Path.Combine(_lego.Root, "transforms_train.json");
+            var train = JObject.Parse(File.ReadAllText(path));
+            train["cx"] = "centre";
+            train["cy"] = 400;
+            File.WriteAllText(path, train.ToString());
+
+            var e = Assert.Throws<InvalidParameterException>(() => BlenderDatasetLoader.Load(_lego.Root));
+
+            Assert.That(e.Problems.Select(p => p.Field), Is.EqualTo(new[] { "train.cx, cy" }));
+            Assert.That(e.Problems[0].Value, Is.EqualTo("\"centre\", 400"));
+        }
+
+        [Test]
+        public void Load_SceneNormalisationWithATextScale_NamesTheKey()
+        {
+            var path = Path.Combine(_lego.Root, "transforms_train.json");
+            var train = JObject.Parse(File.ReadAllText(path));
+            train["scene_normalisation"] = new JObject { ["scale"] = "one", ["centre"] = new JArray(0.0, 0.0, 0.0) };
+            File.WriteAllText(path, train.ToString());
+
+            var e = Assert.Throws<InvalidParameterException>(() => BlenderDatasetLoader.Load(_lego.Root));
+
+            Assert.That(e.Problems[0].Field, Is.EqualTo("scene_normalisation"));
+        }
+
+        [Test]
+        public void Load_ShearedMatrixWithDeterminantOne_IsRefusedLikeValidateRefusesIt()
+        {
+            // Column 1 += 0.5 · column 0 keeps the determinant at 1 but makes the rotation non-orthonormal: no camera pose.
+            var path = Path.Combine(_lego.Root, "transforms_val.json");
+            var val = JObject.Parse(File.ReadAllText(path));
+            var m = (JArray)val["frames"][1]["transform_matrix"];
+            for (var r = 0; r < 3; r++) m[r][1] = (double)m[r][1] + 0.5 * (double)m[r][0];
+            File.WriteAllText(path, val.ToString());
+
+            var e = Assert.Throws<InvalidParameterException>(() => BlenderDatasetLoader.Load(_lego.Root));
+
+            Assert.That(e.Problems.Select(p => p.Field), Is.EqualTo(new[] { "val.frames[1].transform_matrix" }));
+            Assert.That(e.Problems[0].Reason, Does.Contain("not orthonormal"));
+            Assert.That(DatasetValidator.Validate(_lego.Root).Problems.Select(p => p.ToString()), Has.Some.Contains("not orthonormal"), "validate refuses the same matrix");
+        }
+
+        [Test]
         public void Load_MissingImage_NamesTheFrame()
         {
             File.Delete(Path.Combine(_lego.Root, "val", "r_2.png"));

@@ -43,11 +43,11 @@ namespace NerfDatasetCreator.Tests
             Assert.That(double.Parse(v1[0], CultureInfo.InvariantCulture), Is.EqualTo(t.X).Within(1e-6));
             Assert.That(double.Parse(v1[1], CultureInfo.InvariantCulture), Is.EqualTo(t.Y).Within(1e-6));
             Assert.That(double.Parse(v1[2], CultureInfo.InvariantCulture), Is.EqualTo(t.Z).Within(1e-6));
-            Assert.That(string.Join(" ", v1.Skip(3)), Is.EqualTo("230 70 50"));
-            Assert.That(string.Join(" ", body[16].Split(' ').Skip(3)), Is.EqualTo("60 190 80"));
-            Assert.That(string.Join(" ", body[26].Split(' ').Skip(3)), Is.EqualTo("60 110 235"));
+            Assert.That(string.Join(" ", v1.Skip(3)), Is.EqualTo("86 180 233"), "train: Okabe–Ito sky blue, as the Scene-view preview");
+            Assert.That(string.Join(" ", body[16].Split(' ').Skip(3)), Is.EqualTo("230 159 0"), "val: orange");
+            Assert.That(string.Join(" ", body[26].Split(' ').Skip(3)), Is.EqualTo("204 121 167"), "test: reddish purple");
             // The first edge joins train camera 0's centre to its first image corner.
-            Assert.That(body[31], Is.EqualTo("1 2 230 70 50"));
+            Assert.That(body[31], Is.EqualTo("1 2 86 180 233"));
             foreach (var edge in body.Skip(31))
                 Assert.That(edge.Split(' ').Take(2).Select(int.Parse).All(i => i >= 0 && i < 31), Is.True, edge);
         }

@@ -1,3 +1,4 @@
+using System.Linq;
 using Newtonsoft.Json.Linq;
 using NUnit.Framework;
 
@@ -40,6 +41,17 @@ namespace NerfDatasetCreator.Tests
             Assert.That(text, Does.Contain("s/shard.json: shardIndex/shardCount = 5/4"));
             Assert.That(text, Does.Contain("s/shard.json: viewCounts: test = (missing)"));
             Assert.That(text, Does.Contain("s/shard.json: views.train = 2"));
+        }
+
+        [Test]
+        public void AFormatOrAssignmentOfTheWrongTypeIsAProblemNamingTheField()
+        {
+            var json = ShardManifest.ForShard(new ShardSpec(0, 2), new ViewCounts(2, 1, 1)).ToJson();
+            json["format"] = new JObject();
+            json["assignment"] = "blocks";
+            var e = Assert.Throws<InvalidParameterException>(() => ShardManifest.Parse(json.ToString(), "s/shard.json"));
+            Assert.That(e.Problems.Select(p => p.Field), Is.EqualTo(new[] { "s/shard.json: format", "s/shard.json: assignment" }));
+            Assert.That(e.Problems[0].Value, Is.EqualTo("{}"));
         }
 
         [Test]

@@ -29,6 +29,23 @@ namespace NerfDatasetCreator.Tests
 
         static string Lines(MergeResult result) => string.Join("\n", result.Lines());
 
+        [Test]
+        public void TheMergedConfigSaysImagesRenderedOnlyWhenEveryShardDid()
+        {
+            var shards = ShardFolders.Create(root, 3, Counts);
+            var configPath = Path.Combine(shards[1], "dataset_config.json");
+            var config = ShardFolders.ReadJson(configPath);
+            config["imagesRendered"] = false;
+            ShardFolders.WriteJson(configPath, config);
+
+            var result = ShardMerger.Merge(shards, output);
+
+            Assert.That(result.Succeeded, Is.True, Lines(result));
+            var merged = ShardFolders.ReadJson(Path.Combine(output, "dataset_config.json"));
+            Assert.That(merged["imagesRendered"].Type, Is.EqualTo(JTokenType.Boolean));
+            Assert.That((bool)merged["imagesRendered"], Is.False, "shard 1 rendered no images, so the whole dataset is not rendered");
+        }
+
         [TestCase(false)]
         [TestCase(true)]
         public void ThreeShardsMergeIntoOneDatasetOrderedBySplitThenIndex(bool move)
@@ -56,7 +73,8 @@ namespace NerfDatasetCreator.Tests
             Assert.That(File.ReadAllBytes(Path.Combine(output, "test", "r_3_depth.png")), Is.EqualTo(ShardFolders.ImageBytes("test-depth", 3)));
             var config = ShardFolders.ReadJson(Path.Combine(output, "dataset_config.json"));
             Assert.That((int)config["seed"], Is.EqualTo(42));
-            Assert.That((int)config["imagesRendered"], Is.EqualTo(5 + 3 + 4), "summed over the shards");
+            Assert.That(config["imagesRendered"].Type, Is.EqualTo(JTokenType.Boolean), "still the boolean DatasetConfigWriter writes, so validate and convert read it");
+            Assert.That((bool)config["imagesRendered"], Is.True);
             Assert.That(config["statistics"], Is.Null, "per-shard timings describe no single run of the whole dataset");
             Assert.That(File.ReadAllText(Path.Combine(output, "dataset_config.json")), Does.Contain("\"createdUtc\": \"2026-01-01T10:00:00.000Z\""), "shard 0's date, verbatim");
             Assert.That(result.Warnings, Is.Empty, "the dates and counts differ, which is normal");
