@@ -94,7 +94,8 @@ namespace NerfDatasetCreator
             for (var dir = full; dir != null; dir = Path.GetDirectoryName(dir))
             {
                 var name = Path.GetFileName(dir);
-                if (string.Equals(name, "Assets", StringComparison.Ordinal))
+                // Any case: on Windows and macOS "assets" is Unity's Assets folder; refusing it on Linux costs nothing.
+                if (string.Equals(name, "Assets", StringComparison.OrdinalIgnoreCase))
                 {
                     var project = Path.GetDirectoryName(dir);
                     var isProject = !string.IsNullOrEmpty(projectRoot)
@@ -111,7 +112,8 @@ namespace NerfDatasetCreator
         static bool SamePath(string a, string b) =>
             string.Equals(Path.GetFullPath(a).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar),
                 Path.GetFullPath(b).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar),
-                Path.DirectorySeparatorChar == '\\' ? StringComparison.OrdinalIgnoreCase : StringComparison.Ordinal);
+                // Case-insensitive everywhere: macOS is case-insensitive too, and erring towards "same" only refuses more.
+                StringComparison.OrdinalIgnoreCase);
 
         /// <summary>
         /// Null when a file can be created where the dataset's parent folder is or will be; otherwise why not.

@@ -48,6 +48,15 @@ namespace NerfDatasetCreator.Tests
             Assert.That(problems[0].Fix, Does.Contain("~"));
         }
 
+        [TestCase("assets")]
+        [TestCase("ASSETS")]
+        public void FolderInsideAssetsSpelledInAnotherCaseIsRefused(string spelling)
+        {
+            // On Windows and macOS (case-insensitive file systems) this is Unity's Assets folder.
+            var problems = SafeOutput.CheckOutputFolder(Path.Combine(_project, spelling, "lego"), _project, OverwritePolicy.Never);
+            Assert.That(problems.Select(p => p.Field), Is.EqualTo(new[] { "outputFolder" }));
+        }
+
         [Test]
         public void FolderInsideAssetsIsRecognisedWithoutAProjectRoot()
         {
