@@ -11,20 +11,18 @@ namespace NerfDatasetCreator.Tests
     public class DatasetRunTests
     {
         static readonly PlanTarget Target = new PlanTarget(new Vector3d(1, 2, 3), 0.5);
+        TempFolder _temp;
         string _project;
 
         [SetUp]
         public void CreateProject()
         {
-            _project = Path.Combine(Path.GetTempPath(), "nerf-run-" + Guid.NewGuid().ToString("N"));
-            Directory.CreateDirectory(_project);
+            _temp = new TempFolder();
+            _project = _temp.Path;
         }
 
         [TearDown]
-        public void DeleteProject()
-        {
-            if (Directory.Exists(_project)) Directory.Delete(_project, true);
-        }
+        public void DeleteProject() => _temp.Dispose();
 
         static DatasetSettings Settings(int train = 2, int val = 1, int test = 1)
         {

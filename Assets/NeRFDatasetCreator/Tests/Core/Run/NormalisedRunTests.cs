@@ -11,20 +11,18 @@ namespace NerfDatasetCreator.Tests
     public class NormalisedRunTests
     {
         static readonly PlanTarget Target = new PlanTarget(new Vector3d(1, 2, 3), 0.5);
+        TempFolder _temp;
         string _project;
 
         [SetUp]
         public void CreateProject()
         {
-            _project = Path.Combine(Path.GetTempPath(), "nerf-norm-" + Guid.NewGuid().ToString("N"));
-            Directory.CreateDirectory(_project);
+            _temp = new TempFolder();
+            _project = _temp.Path;
         }
 
         [TearDown]
-        public void DeleteProject()
-        {
-            if (Directory.Exists(_project)) Directory.Delete(_project, true);
-        }
+        public void DeleteProject() => _temp.Dispose();
 
         /// <summary>Distance 8 with the nerf_synthetic preset: s = 4/8 = 0.5.</summary>
         static DatasetSettings HalfScale(int points = 0)
