@@ -28,21 +28,14 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
 
         Scene _scene;
         GameObject _sphere;
-        GameObject _light;
 
         [SetUp]
         public void SetUp()
         {
-            if (SystemInfo.graphicsDeviceType == GraphicsDeviceType.Null)
-                Assert.Ignore("no graphics device (Unity runs with -nographics): nothing can be rendered");
-            if (CaptureEnvironment.IsHdrp) Assert.Ignore("HDRP is not supported by the capture");
+            TestScene.RequireRendering();
             // A scene of our own, next to whatever the user has open, and closed again in TearDown.
             _scene = TestScene.Open();
-            _sphere = GameObject.CreatePrimitive(PrimitiveType.Sphere);
-            _sphere.name = "Test sphere";
-            _light = new GameObject("Test light", typeof(Light));
-            _light.GetComponent<Light>().type = LightType.Directional;
-            _light.transform.rotation = Quaternion.Euler(50, -30, 0);
+            _sphere = TestScene.LitSphere("Test sphere");
         }
 
         [TearDown]

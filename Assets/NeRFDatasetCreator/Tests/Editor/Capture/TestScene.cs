@@ -1,5 +1,8 @@
+using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
 using UnityEditor.SceneManagement;
+using UnityEngine;
+using UnityEngine.Rendering;
 using UnityEngine.SceneManagement;
 
 namespace NerfDatasetCreator.Editor.Tests.Capture
@@ -12,6 +15,25 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
     /// </summary>
     static class TestScene
     {
+        /// <summary>Ignores the test where nothing can be rendered: no graphics device (-nographics), or HDRP.</summary>
+        public static void RequireRendering()
+        {
+            if (SystemInfo.graphicsDeviceType == GraphicsDeviceType.Null)
+                Assert.Ignore("no graphics device (Unity runs with -nographics): nothing can be rendered");
+            if (CaptureEnvironment.IsHdrp) Assert.Ignore("HDRP is not supported by the capture");
+        }
+
+        /// <summary>Unity's primitive sphere (radius 0.5, at the origin) in the active scene, with a directional light.</summary>
+        public static GameObject LitSphere(string name)
+        {
+            var sphere = GameObject.CreatePrimitive(PrimitiveType.Sphere);
+            sphere.name = name;
+            var light = new GameObject(name + " light", typeof(Light));
+            light.GetComponent<Light>().type = LightType.Directional;
+            light.transform.rotation = Quaternion.Euler(50, -30, 0);
+            return sphere;
+        }
+
         public static Scene Open()
         {
             var mode = NewSceneMode.Additive;

@@ -26,14 +26,9 @@ namespace NerfDatasetCreator.Editor.Tests
         [SetUp]
         public void SetUp()
         {
-            if (SystemInfo.graphicsDeviceType == GraphicsDeviceType.Null)
-                Assert.Ignore("no graphics device (Unity runs with -nographics): nothing can be rendered");
-            if (CaptureEnvironment.IsHdrp) Assert.Ignore("HDRP is not supported by the capture");
+            TestScene.RequireRendering();
             _scene = TestScene.Open();
-            _sphere = GameObject.CreatePrimitive(PrimitiveType.Sphere);
-            _sphere.name = "Dataset test sphere";
-            var light = new GameObject("Dataset test light", typeof(Light));
-            light.GetComponent<Light>().type = LightType.Directional;
+            _sphere = TestScene.LitSphere("Dataset test sphere");
             _project = Path.Combine(Path.GetTempPath(), "nerf-dataset-capture-" + Guid.NewGuid().ToString("N"));
             Directory.CreateDirectory(_project);
         }
