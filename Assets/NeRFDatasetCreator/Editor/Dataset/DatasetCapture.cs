@@ -66,25 +66,18 @@ namespace NerfDatasetCreator.Editor
 
             var run = DatasetRun.Prepare(settings, MeasureTarget(target), projectRoot, shard, datasetFolder);
             problems.AddRange(run.Problems);
-            var warnings = new List<ValidationProblem>();
-            List<SurfaceMesh> surface = null;
-            if (run.IsValid)
-            {
-                warnings.AddRange(run.FullPlan.Warnings);
-                if (run.WritesPointCloud && problems.Count == 0)
-                {
-                    // Read now, with the scene as it is measured; sampled when the run finishes.
-                    surface = TargetSurface.Collect(target, warnings);
-                    problems.AddRange(TargetPointCloud.Check(run.Plan.Settings, surface));
-                }
-            }
-            return new PreparedCapture(run, target, options, problems, warnings, surface);
+            // The point cloud's meshes are read when a run starts (ReadSurface), not here: the window calls Prepare as
+            // the user types, and copying a large model's arrays each time would make the editor stutter.
+            var warnings = run.IsValid ? run.FullPlan.Warnings : (IReadOnlyList<ValidationProblem>)Array.Empty<ValidationProblem>();
+            return new PreparedCapture(run, target, options, problems, warnings);
         }
 
         /// <summary>Captures and writes the whole dataset (or shard) before returning. Never throws for user or I/O errors.</summary>
         public static DatasetCaptureResult RunBlocking(PreparedCapture prepared, ICaptureProgress progress = null, string tool = "unity-editor")
         {
-            if (!prepared.IsValid) return Refused(prepared);
+            if (!prepared.IsValid) return Refused(prepared.Problems);
+            var unreadable = ReadSurface(prepared);
+            if (unreadable != null) return unreadable;
             DatasetWriteSession session;
             try
             {
@@ -116,9 +109,10 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         public static CaptureSession StartInBackground(PreparedCapture prepared, Action<DatasetCaptureResult> done, string tool = "unity-editor")
         {
-            if (!prepared.IsValid)
+            var refused = prepared.IsValid ? ReadSurface(prepared) : Refused(prepared.Problems);
+            if (refused != null)
             {
-                done?.Invoke(Refused(prepared));
+                done?.Invoke(refused);
                 return null;
             }
             DatasetWriteSession session = null;
@@ -189,8 +183,22 @@ namespace NerfDatasetCreator.Editor
             return new DatasetCaptureResult(false, cancelled, null, session?.PartialFolder, "NeRF Dataset Creator: " + what + where, written, 0);
         }
 
-        static DatasetCaptureResult Refused(PreparedCapture prepared) => new DatasetCaptureResult(false, false, null, null,
-            "NeRF Dataset Creator: nothing was captured —\n" + string.Join("\n", prepared.Problems.Select(p => "  " + p)), 0, 0);
+        static DatasetCaptureResult Refused(IEnumerable<ValidationProblem> problems) => new DatasetCaptureResult(false, false, null, null,
+            "NeRF Dataset Creator: nothing was captured —\n" + string.Join("\n", problems.Select(p => "  " + p)), 0, 0);
+
+        /// <summary>
+        /// Reads the target's meshes for points3d.ply at the start of a run, with the scene as it is captured; a result
+        /// that refuses the run when they give nothing to sample, null when all is well (or no cloud is asked for).
+        /// </summary>
+        static DatasetCaptureResult ReadSurface(PreparedCapture prepared)
+        {
+            if (!prepared.Run.WritesPointCloud) return null;
+            var warnings = new List<ValidationProblem>();
+            prepared.Surface = TargetSurface.Collect(prepared.Target, warnings);
+            foreach (var warning in warnings) Debug.LogWarning("NeRF Dataset Creator: " + warning);
+            var problems = TargetPointCloud.Check(prepared.Run.Plan.Settings, prepared.Surface);
+            return problems.Count == 0 ? null : Refused(problems);
+        }
 
         static string Describe(Exception e)
         {

@@ -8,9 +8,8 @@ namespace NerfDatasetCreator.Editor
     public sealed class PreparedCapture
     {
         internal PreparedCapture(DatasetRun run, GameObject target, CaptureOptions options,
-            IReadOnlyList<ValidationProblem> problems, IReadOnlyList<ValidationProblem> warnings, IReadOnlyList<SurfaceMesh> surface = null)
+            IReadOnlyList<ValidationProblem> problems, IReadOnlyList<ValidationProblem> warnings)
         {
-            Surface = surface;
             Run = run;
             Target = target;
             Options = options;
@@ -22,8 +21,11 @@ namespace NerfDatasetCreator.Editor
         internal GameObject Target { get; }
         internal CaptureOptions Options { get; }
 
-        /// <summary>The target's mesh surfaces (Unity world) for points3d.ply; null when this run writes none.</summary>
-        internal IReadOnlyList<SurfaceMesh> Surface { get; }
+        /// <summary>
+        /// The target's mesh surfaces (Unity world) for points3d.ply, read when the run starts; null when this run writes
+        /// none or has not started.
+        /// </summary>
+        internal IReadOnlyList<SurfaceMesh> Surface { get; set; }
 
         /// <summary>Every reason the capture cannot start; empty when <see cref="IsValid"/>.</summary>
         public IReadOnlyList<ValidationProblem> Problems { get; }
