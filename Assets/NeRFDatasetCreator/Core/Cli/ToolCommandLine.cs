@@ -116,7 +116,7 @@ namespace NerfDatasetCreator
             else
             {
                 result.Target = ExportTargets.Parse(to, out var problem);
-                if (problem != null) result.Errors.Add(problem.ToString());
+                if (problem != null) result.Errors.Add(problem.ToString()); // ValidationProblem formats its numbers with the invariant culture
             }
             if (options.TryGetValue("out", out var output))
             {

@@ -37,7 +37,7 @@ namespace NerfDatasetCreator
             sb.Append(", ").Append(ExtraFilesChecked.ToString(CultureInfo.InvariantCulture)).Append(" extra files; ");
             sb.Append(Problems.Count.ToString(CultureInfo.InvariantCulture)).Append(Problems.Count == 1 ? " problem, " : " problems, ");
             sb.Append(Warnings.Count.ToString(CultureInfo.InvariantCulture)).Append(Warnings.Count == 1 ? " warning." : " warnings.");
-            return sb.ToString();
+            return sb.ToString(); // every number above was formatted with the invariant culture
         }
     }
 }

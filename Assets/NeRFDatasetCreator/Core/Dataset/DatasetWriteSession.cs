@@ -46,7 +46,7 @@ namespace NerfDatasetCreator
             var parent = Path.GetDirectoryName(full);
             Directory.CreateDirectory(parent);
             var stamp = (now ?? DateTime.UtcNow).ToString("yyyyMMdd-HHmmss", CultureInfo.InvariantCulture);
-            var working = Path.Combine(parent, Path.GetFileName(full) + ".partial-" + stamp + "-" + Guid.NewGuid().ToString("N").Substring(0, 8) + "~");
+            var working = Path.Combine(parent, Path.GetFileName(full) + ".partial-" + stamp + "-" + Guid.NewGuid().ToString("N").Substring(0, 8) + "~"); // "N" is 32 hex digits: invariant
             Directory.CreateDirectory(working);
             return new DatasetWriteSession(full, working, policy);
         }

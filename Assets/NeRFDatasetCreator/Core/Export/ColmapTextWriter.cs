@@ -45,7 +45,7 @@ namespace NerfDatasetCreator
             sb.Append("# Number of cameras: 1\n");
             sb.Append("1 PINHOLE ").Append(I(k.Width)).Append(' ').Append(I(k.Height)).Append(' ')
                 .Append(R(k.FlX)).Append(' ').Append(R(k.FlY)).Append(' ').Append(R(k.Cx)).Append(' ').Append(R(k.Cy)).Append('\n');
-            return sb.ToString();
+            return sb.ToString(); // numbers went through R() and I(), both invariant
         }
 
         public static string ImagesText(IReadOnlyList<ExportFrame> frames, IReadOnlyList<string> names)
@@ -65,7 +65,7 @@ namespace NerfDatasetCreator
                     .Append(names[i]).Append('\n');
                 sb.Append('\n'); // no 2D observations
             }
-            return sb.ToString();
+            return sb.ToString(); // numbers went through R() and I(), both invariant
         }
 
         /// <summary>Points with empty tracks; with no points, only the header (valid COLMAP, but see the converter's warning).</summary>
@@ -83,7 +83,7 @@ namespace NerfDatasetCreator
                     .Append(R(p.Position.X)).Append(' ').Append(R(p.Position.Y)).Append(' ').Append(R(p.Position.Z)).Append(' ')
                     .Append(I(p.Red)).Append(' ').Append(I(p.Green)).Append(' ').Append(I(p.Blue)).Append(" 0\n");
             }
-            return sb.ToString();
+            return sb.ToString(); // numbers went through R() and I(), both invariant
         }
 
         /// <summary>

@@ -27,7 +27,7 @@ namespace NerfDatasetCreator
             {
                 using (var writer = JsonNumbers.CreateWriter(text))
                     JsonNumbers.WriteToken(writer, token);
-                return text.ToString() + "\n";
+                return text.ToString() + "\n"; // the writer's text, formatted by CreateText's invariant culture
             }
         }
     }

@@ -44,7 +44,7 @@ namespace NerfDatasetCreator
                     w.WriteEndArray();
                     w.WriteEndObject();
                 }
-                return text.ToString() + "\n";
+                return text.ToString() + "\n"; // the writer's text, formatted by CreateText's invariant culture
             }
         }
 

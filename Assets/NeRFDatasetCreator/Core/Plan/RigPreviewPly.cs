@@ -58,7 +58,7 @@ namespace NerfDatasetCreator
             sb.Append("end_header\n");
             foreach (var v in vertices) sb.Append(v).Append('\n');
             foreach (var e in edges) sb.Append(e).Append('\n');
-            return sb.ToString();
+            return sb.ToString(); // numbers went through Number(), Byte() and invariant counts
         }
 
         static string Vertex(Vector3d p, byte[] c) =>

@@ -21,7 +21,7 @@ namespace NerfDatasetCreator
             {
                 using (var w = JsonNumbers.CreateWriter(text))
                     WriteObject(w, settings);
-                return text.ToString() + "\n";
+                return text.ToString() + "\n"; // the writer's text, formatted by CreateText's invariant culture
             }
         }
 
