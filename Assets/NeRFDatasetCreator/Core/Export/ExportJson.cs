@@ -18,6 +18,20 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>
+        /// The pinhole keys nerfstudio and instant-ngp both read, in this order: <c>fl_x</c>, <c>fl_y</c>, <c>cx</c>,
+        /// <c>cy</c>, <c>w</c>, <c>h</c> (instant-ngp divides cx/cy by w/h, so they always travel together).
+        /// </summary>
+        public static void AddPixelIntrinsics(JObject json, CameraIntrinsics k)
+        {
+            json["fl_x"] = k.FlX;
+            json["fl_y"] = k.FlY;
+            json["cx"] = k.Cx;
+            json["cy"] = k.Cy;
+            json["w"] = k.Width;
+            json["h"] = k.Height;
+        }
+
+        /// <summary>
         /// The file text of <paramref name="token"/>: 2-space indentation, every double through
         /// <see cref="JsonNumbers.Format"/>, so exports write numbers exactly as the Blender split files do.
         /// </summary>

@@ -27,14 +27,9 @@ namespace NerfDatasetCreator
             var json = new JObject
             {
                 ["camera_model"] = "PINHOLE",
-                ["fl_x"] = k.FlX,
-                ["fl_y"] = k.FlY,
-                ["cx"] = k.Cx,
-                ["cy"] = k.Cy,
-                ["w"] = k.Width,
-                ["h"] = k.Height,
-                ["applied_transform"] = ExportJson.Matrix3x4(Matrix4x4d.Identity),
             };
+            ExportJson.AddPixelIntrinsics(json, k);
+            json["applied_transform"] = ExportJson.Matrix3x4(Matrix4x4d.Identity);
             if (scene.PointCloudPath != null) json["ply_file_path"] = Rel(scene.PointCloudPath);
             if (scene.HasDepth) json["depth_unit_scale_factor"] = scene.DepthUnitScale;
             if (scene.Normalisation != null) json["scene_normalisation"] = scene.Normalisation.ToJson();

@@ -34,14 +34,9 @@ namespace NerfDatasetCreator
             {
                 ["camera_angle_x"] = k.CameraAngleX,
                 ["camera_angle_y"] = k.CameraAngleY,
-                ["fl_x"] = k.FlX,
-                ["fl_y"] = k.FlY,
-                ["cx"] = k.Cx,
-                ["cy"] = k.Cy,
-                ["w"] = k.Width,
-                ["h"] = k.Height,
-                ["aabb_scale"] = AabbScale.ForRadius(sceneRadius, warnings),
             };
+            ExportJson.AddPixelIntrinsics(json, k);
+            json["aabb_scale"] = AabbScale.ForRadius(sceneRadius, warnings);
             if (depth) json["integer_depth_scale"] = scene.DepthUnitScale;
             if (scene.Normalisation != null) json["scene_normalisation"] = scene.Normalisation.ToJson();
             var frames = new JArray();
