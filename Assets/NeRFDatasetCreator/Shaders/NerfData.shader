@@ -128,9 +128,10 @@ Shader "Hidden/NerfDatasetCreator/Data"
             #pragma fragment frag
             float4 frag(v2f i) : SV_Target
             {
+                // Derivatives first: after a discard, neighbouring lanes' values are undefined on some APIs.
+                float3 plane = cross(ddx(i.viewPos), ddy(i.viewPos));
                 ClipLikeTheSource(i.uv);
                 float3 worldNormal = normalize(i.worldNormal);
-                float3 plane = cross(ddx(i.viewPos), ddy(i.viewPos));
                 // Towards the camera: the camera is at the view-space origin. (Edge-on, plane is 0 and nothing flips.)
                 float3 towardsCamera = plane * sign(dot(plane, -i.viewPos));
                 float3 viewNormal = mul((float3x3)UNITY_MATRIX_V, worldNormal);
