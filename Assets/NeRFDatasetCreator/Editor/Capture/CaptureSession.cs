@@ -24,7 +24,7 @@ namespace NerfDatasetCreator.Editor.Capture
         readonly ICaptureProgress _progress;
         readonly Stopwatch _clock = new Stopwatch();
         CaptureStage _stage;
-        CaptureMaterials _materials;
+        DataPassRenderer _dataPasses;
         RenderTargetSet[] _targets;
         ViewReadback[] _readbacks;
         SynchronousReadback _synchronous;
@@ -143,8 +143,8 @@ namespace NerfDatasetCreator.Editor.Capture
             ShaderUtil.allowAsyncCompilation = false;
             _asyncShadersChanged = true;
 
-            _materials = new CaptureMaterials();
             _stage = new CaptureStage(_target, _options);
+            _dataPasses = new DataPassRenderer(_stage.DataPassRenderers, _stage.Camera.cullingMask);
             VerticalFieldOfViewDegrees = _stage.Camera.fieldOfView;
 
             UsesAsyncReadback = SystemInfo.supportsAsyncGPUReadback && !_options.ForceSynchronousReadback;
@@ -225,12 +225,16 @@ namespace NerfDatasetCreator.Editor.Capture
             pose.ApplyTo(camera.transform);
             var targets = _targets[slot];
 
-            if (targets.Color != null) Render(camera, targets.Color, null);
-            if (targets.Mask != null) Render(camera, targets.Mask, _materials.Mask);
-            if (targets.Depth != null) Render(camera, targets.Depth, _materials.Depth);
-            if (targets.Normal != null) Render(camera, targets.Normal, _materials.Normal);
-            _stage.UseMaterial(null);
-            camera.targetTexture = null;
+            if (targets.Color != null)
+            {
+                camera.targetTexture = targets.Color;
+                camera.Render();
+                camera.targetTexture = null;
+            }
+            // The data passes draw outside the camera's render loop, so no pipeline setting can change them.
+            if (targets.Mask != null) _dataPasses.Render(camera, targets.Mask, DataPassRenderer.MaskPass);
+            if (targets.Depth != null) _dataPasses.Render(camera, targets.Depth, DataPassRenderer.DepthPass);
+            if (targets.Normal != null) _dataPasses.Render(camera, targets.Normal, DataPassRenderer.NormalPass);
 
             if (UsesAsyncReadback)
             {
@@ -250,13 +254,6 @@ namespace NerfDatasetCreator.Editor.Capture
                 }
                 Hand(view);
             }
-        }
-
-        void Render(Camera camera, RenderTexture target, Material passMaterial)
-        {
-            _stage.UseMaterial(passMaterial);
-            camera.targetTexture = target;
-            camera.Render();
         }
 
         void DrainAll()
@@ -321,7 +318,7 @@ namespace NerfDatasetCreator.Editor.Capture
                     if (set != null) Try(set.Dispose);
             if (_synchronous != null) Try(_synchronous.Dispose);
             if (_stage != null) Try(_stage.Dispose);
-            if (_materials != null) Try(_materials.Dispose);
+            if (_dataPasses != null) Try(_dataPasses.Dispose);
             if (_asyncShadersChanged)
             {
                 _asyncShadersChanged = false;

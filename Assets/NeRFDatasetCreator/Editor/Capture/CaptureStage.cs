@@ -16,17 +16,17 @@ namespace NerfDatasetCreator.Editor.Capture
     /// </summary>
     sealed class CaptureStage : IDisposable
     {
-        readonly List<SwappableRenderer> _renderers = new List<SwappableRenderer>();
-        readonly List<Behaviour> _hiddenInDataPasses = new List<Behaviour>();
-        readonly List<bool> _hiddenWasEnabled = new List<bool>();
+        readonly List<Renderer> _dataPassRenderers = new List<Renderer>();
         Scene _scene;
         GameObject _root;
         GameObject _cameraObject;
-        Material _current;
 
         public Camera Camera { get; private set; }
 
-        /// <summary>Renderers the data passes cannot draw (particles, lines, sprites…, terrains): hidden in mask, depth and normal.</summary>
+        /// <summary>The copies' mesh and skinned-mesh renderers the mask, depth and normal passes draw (LOD 0 only).</summary>
+        public IReadOnlyList<Renderer> DataPassRenderers => _dataPassRenderers;
+
+        /// <summary>Renderers the data passes cannot draw (particles, lines, sprites…, terrains): absent from mask, depth and normal.</summary>
         public int UnsupportedRendererCount { get; private set; }
 
         /// <summary>False once anything the stage owns was destroyed from outside (a scene reload, a script).</summary>
@@ -162,57 +162,44 @@ namespace NerfDatasetCreator.Editor.Capture
 
         void CollectRenderers()
         {
+            var otherLods = ForceLodZero();
             foreach (var renderer in _root.GetComponentsInChildren<Renderer>(true))
             {
                 if (renderer is MeshRenderer || renderer is SkinnedMeshRenderer)
-                    _renderers.Add(new SwappableRenderer(renderer));
-                else
                 {
-                    Hide(renderer);
-                    UnsupportedRendererCount++;
+                    if (!otherLods.Contains(renderer)) _dataPassRenderers.Add(renderer);
                 }
+                else UnsupportedRendererCount++;
             }
             // Terrains draw without a Renderer. Recognised by type name: UnityEngine.Terrain lives in the Terrain
             // built-in module, which a project may disable (this package's own development project does), and
             // naming the type would then not compile.
             foreach (var behaviour in _root.GetComponentsInChildren<Behaviour>(true))
-            {
-                if (behaviour == null || behaviour.GetType().FullName != TerrainTypeName) continue;
-                Hide(behaviour);
-                UnsupportedRendererCount++;
-            }
-            // The data shaders are unlit: lights would only cost shadow-map renders in those passes.
-            foreach (var light in _root.GetComponentsInChildren<Light>(true)) Hide(light);
-        }
-
-        void Hide(Behaviour behaviour)
-        {
-            _hiddenInDataPasses.Add(behaviour);
-            _hiddenWasEnabled.Add(behaviour.enabled);
-        }
-
-        void Hide(Renderer renderer)
-        {
-            // Renderer is a Component, not a Behaviour: keep its own enabled flag separately.
-            _otherRenderers.Add(renderer);
-            _otherRenderersWereEnabled.Add(renderer.enabled);
+                if (behaviour != null && behaviour.GetType().FullName == TerrainTypeName) UnsupportedRendererCount++;
         }
 
         const string TerrainTypeName = "UnityEngine.Terrain";
 
-        readonly List<Renderer> _otherRenderers = new List<Renderer>();
-        readonly List<bool> _otherRenderersWereEnabled = new List<bool>();
-
-        /// <summary>Renders every copy with <paramref name="material"/> (a data pass), or with its own materials when null.</summary>
-        public void UseMaterial(Material material)
+        /// <summary>
+        /// Pins every active LOD group of the copies to its most detailed level for the whole run, so that the colour
+        /// pass (where the camera would pick a level by screen size) and the data passes (which draw renderers
+        /// directly) show the same geometry in every view. Returns the renderers that belong only to other levels.
+        /// </summary>
+        HashSet<Renderer> ForceLodZero()
         {
-            if (material == _current) return;
-            _current = material;
-            foreach (var swappable in _renderers) swappable.Use(material);
-            for (var i = 0; i < _hiddenInDataPasses.Count; i++)
-                if (_hiddenInDataPasses[i] != null) _hiddenInDataPasses[i].enabled = material == null && _hiddenWasEnabled[i];
-            for (var i = 0; i < _otherRenderers.Count; i++)
-                if (_otherRenderers[i] != null) _otherRenderers[i].enabled = material == null && _otherRenderersWereEnabled[i];
+            var otherLevels = new HashSet<Renderer>();
+            var lodZero = new HashSet<Renderer>();
+            foreach (var group in _root.GetComponentsInChildren<LODGroup>(true))
+            {
+                if (group == null || !group.enabled) continue;
+                group.ForceLOD(0);
+                var lods = group.GetLODs();
+                for (var level = 0; level < lods.Length; level++)
+                    foreach (var renderer in lods[level].renderers)
+                        if (renderer != null) (level == 0 ? lodZero : otherLevels).Add(renderer);
+            }
+            otherLevels.ExceptWith(lodZero);
+            return otherLevels;
         }
 
         static void ConfigureCamera(Camera camera, CaptureOptions options, Scene scene)
@@ -262,44 +249,10 @@ namespace NerfDatasetCreator.Editor.Capture
             if (_scene.IsValid()) EditorSceneManager.ClosePreviewScene(_scene);
             if (_root != null) Object.DestroyImmediate(_root);
             if (_cameraObject != null) Object.DestroyImmediate(_cameraObject);
-            _renderers.Clear();
-            _hiddenInDataPasses.Clear();
-            _otherRenderers.Clear();
+            _dataPassRenderers.Clear();
             Camera = null;
             _root = null;
             _cameraObject = null;
-        }
-
-        /// <summary>A copy's renderer with its own materials and, per data pass, an array of the pass material of the same length.</summary>
-        sealed class SwappableRenderer
-        {
-            readonly Renderer _renderer;
-            readonly Material[] _own;
-            readonly Dictionary<Material, Material[]> _byPass = new Dictionary<Material, Material[]>();
-
-            public SwappableRenderer(Renderer renderer)
-            {
-                _renderer = renderer;
-                _own = renderer.sharedMaterials;
-            }
-
-            public void Use(Material material)
-            {
-                if (_renderer == null) return;
-                if (material == null)
-                {
-                    _renderer.sharedMaterials = _own;
-                    return;
-                }
-                if (!_byPass.TryGetValue(material, out var array))
-                {
-                    // One entry per material slot (submesh), so that every submesh is drawn with the pass material.
-                    array = new Material[Math.Max(1, _own.Length)];
-                    for (var i = 0; i < array.Length; i++) array[i] = material;
-                    _byPass.Add(material, array);
-                }
-                _renderer.sharedMaterials = array;
-            }
         }
     }
 }
