@@ -36,12 +36,6 @@ namespace NerfDatasetCreator
         /// <summary>Steps per second instead of a count (0: unused): steps at start + k / fps up to the end.</summary>
         public double Fps;
 
-        /// <summary>
-        /// Multi-view only: also write the layout Dynamic 3D Gaussians reads (<c>dynamic3dgs/</c>: train_meta.json,
-        /// test_meta.json, ims/, seg/, init_pt_cld.npz; see <see cref="Dynamic3DGaussiansLayout"/>).
-        /// </summary>
-        public bool Dynamic3DGaussians;
-
         /// <summary>True for a dynamic capture (any mode but static).</summary>
         public bool Enabled => Mode != TimeMode.Static;
 

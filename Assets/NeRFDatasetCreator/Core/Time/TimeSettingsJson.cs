@@ -30,7 +30,6 @@ namespace NerfDatasetCreator
             else Number(w, "end", t.EndSeconds);
             w.WritePropertyName("steps"); w.WriteValue(t.Steps);
             Number(w, "fps", t.Fps);
-            w.WritePropertyName("dynamic3dGaussians"); w.WriteValue(t.Dynamic3DGaussians);
             w.WriteEndObject();
         }
 
@@ -79,7 +78,6 @@ namespace NerfDatasetCreator
                 },
                 ["steps"] = (v, p) => t.Steps = reader.Int(v, p),
                 ["fps"] = (v, p) => t.Fps = reader.Double(v, p),
-                ["dynamic3dGaussians"] = (v, p) => t.Dynamic3DGaussians = reader.Bool(v, p),
             });
         }
     }

@@ -57,10 +57,6 @@ namespace NerfDatasetCreator
                     Add(new ValidationProblem("time.steps", time.Steps.ToString(CultureInfo.InvariantCulture),
                         "differs from splits.train.count (" + train + "); a monocular capture has exactly one train view per time step.",
                         "Set time.steps to 0 (the train count decides) or to " + train + ", or set splits.train.count to " + time.Steps + "."));
-                if (time.Dynamic3DGaussians)
-                    Add(new ValidationProblem("time.dynamic3dGaussians", "true",
-                        "needs every camera at every time step, which a monocular capture does not have.",
-                        "Use time.mode \"multi-view\", or set time.dynamic3dGaussians to false."));
             }
             else if (time.Steps == 0 && !(time.Fps > 0))
                 Add(new ValidationProblem("time.steps", "0",

@@ -26,6 +26,9 @@ namespace NerfDatasetCreator.Editor.Capture
 
         public Camera Camera { get; private set; }
 
+        /// <summary>The parent of every copy in the preview scene.</summary>
+        public GameObject Root => _root;
+
         /// <summary>Renderers the data passes cannot draw (particles, lines, sprites…, terrains): hidden in mask, depth and normal.</summary>
         public int UnsupportedRendererCount { get; private set; }
 

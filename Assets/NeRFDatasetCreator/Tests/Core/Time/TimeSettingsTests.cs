@@ -21,7 +21,6 @@ namespace NerfDatasetCreator.Tests
             s.Time.StartSeconds = 0.25;
             s.Time.EndAtClipLength = true;
             s.Time.Fps = 24;
-            s.Time.Dynamic3DGaussians = true;
             var text = DatasetSettingsJson.Write(s);
             StringAssert.Contains("\"sources\": [\n      \"timeline\",\n      \"particles\"\n    ]", text.Replace("\r", ""));
             StringAssert.Contains("\"end\": \"clip\"", text);
@@ -33,7 +32,6 @@ namespace NerfDatasetCreator.Tests
             Assert.That(t.StartSeconds, Is.EqualTo(0.25));
             Assert.That(t.EndAtClipLength, Is.True);
             Assert.That(t.Fps, Is.EqualTo(24));
-            Assert.That(t.Dynamic3DGaussians, Is.True);
             Assert.That(DatasetSettingsJson.Write(read.Settings), Is.EqualTo(text));
         }
 
@@ -91,9 +89,6 @@ namespace NerfDatasetCreator.Tests
             s.Time.Steps = 0;
             s.Train.Count = 1;
             Assert.That(Fields(s), Is.EqualTo(new[] { "splits.train.count" }));
-            s.Train.Count = 10;
-            s.Time.Dynamic3DGaussians = true;
-            Assert.That(Fields(s), Is.EqualTo(new[] { "time.dynamic3dGaussians" }));
         }
 
         [Test]
