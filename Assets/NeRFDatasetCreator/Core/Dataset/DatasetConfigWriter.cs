@@ -50,9 +50,14 @@ namespace NerfDatasetCreator
                     foreach (var split in DatasetSplits.All)
                     {
                         w.WritePropertyName(DatasetSplits.Name(split));
-                        w.WriteValue(plan.Settings.Split(split).Count);
+                        w.WriteValue(TimePlanning.ViewCount(plan.Settings, plan.Time, split));
                     }
                     w.WriteEndObject();
+                    if (plan.Time != null)
+                    {
+                        w.WritePropertyName(TimeRecord.Key);
+                        TimeRecord.Write(w, plan.Time, plan.Settings.Time);
+                    }
                     if (provenance.Statistics.Count > 0)
                     {
                         w.WritePropertyName("statistics");

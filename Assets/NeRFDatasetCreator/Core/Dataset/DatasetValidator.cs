@@ -93,6 +93,7 @@ namespace NerfDatasetCreator
             foreach (var range in LoaderRangeCheck.Check(cameraCentres, 0))
                 report.Warnings.Add(new DatasetProblem("transforms_*.json", -1, null,
                     "(object size unknown here: the target is taken as a point at the origin) " + range));
+            TimeDatasetChecks.Check(folder, report);
             return report;
         }
 

@@ -23,6 +23,8 @@ namespace NerfDatasetCreator
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
+            var time = TimeDatasetChecks.ConversionWarning(datasetDir);
+            if (time != null) warnings.Add(time);
             return Export(scene, target, outDir, null, NgpWriter.DefaultSceneRadius, warnings);
         }
 

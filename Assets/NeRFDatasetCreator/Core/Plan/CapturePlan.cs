@@ -15,8 +15,9 @@ namespace NerfDatasetCreator
     public sealed class CapturePlan
     {
         CapturePlan(DatasetSettings settings, PlanTarget target, double distance, CameraIntrinsics intrinsics,
-            SceneNormalisation normalisation, IReadOnlyList<ValidationProblem> warnings, IReadOnlyList<PlannedView> views)
+            SceneNormalisation normalisation, IReadOnlyList<ValidationProblem> warnings, IReadOnlyList<PlannedView> views, TimeRange time)
         {
+            Time = time;
             Settings = settings;
             Target = target;
             Distance = distance;
@@ -54,6 +55,9 @@ namespace NerfDatasetCreator
 
         public IReadOnlyList<PlannedView> Views { get; }
 
+        /// <summary>The time span of a dynamic capture (<see cref="TimePlanning"/>); null for a static one.</summary>
+        public TimeRange Time { get; }
+
         public IEnumerable<PlannedView> ViewsOf(DatasetSplit split) => Views.Where(v => v.Split == split);
 
         /// <summary>
@@ -61,7 +65,7 @@ namespace NerfDatasetCreator
         /// Its transforms files list just those frames; settings, distance and intrinsics are the whole plan's.
         /// </summary>
         public CapturePlan Only(Func<PlannedView, bool> keep) =>
-            new CapturePlan(Settings, Target, Distance, Intrinsics, Normalisation, Warnings, Views.Where(keep).ToList());
+            new CapturePlan(Settings, Target, Distance, Intrinsics, Normalisation, Warnings, Views.Where(keep).ToList(), Time);
 
         /// <summary>nerf_synthetic's <c>rotation</c> key for a split (ignored by every loader): the formation's azimuth step.</summary>
         public double RotationOf(DatasetSplit split)
@@ -82,6 +86,7 @@ namespace NerfDatasetCreator
             if (double.IsNaN(target.BoundingRadius) || double.IsInfinity(target.BoundingRadius) || target.BoundingRadius < 0)
                 problems.Add(new ValidationProblem("target", ValidationProblem.Format(target.BoundingRadius), "has bounds that are not a finite size.", "Check the target's renderers."));
             if (problems.Count > 0) return problems;
+            problems.AddRange(TimePlanning.Check(settings, target.ClipLengthSeconds));
 
             if (settings.AutoDistance && !target.HasBounds)
             {
@@ -130,6 +135,7 @@ namespace NerfDatasetCreator
             var copy = settings.Clone();
             var distance = ResolveDistance(copy, target);
             var normalisation = SceneNormalisation.ForTarget(copy.Normalisation, target.Centre, target.BoundingRadius, distance, copy.NormalisedTargetRadius);
+            var time = TimePlanning.Resolve(copy, target.ClipLengthSeconds);
             var views = new List<PlannedView>();
             foreach (var split in DatasetSplits.All)
             {
@@ -138,15 +144,15 @@ namespace NerfDatasetCreator
                 var formation = s.Formation.ToFormation(copy.Seed, splitName);
                 var poses = CameraRig.Place(formation, s.Count, target.Centre, distance);
                 var kinds = DatasetLayout.FileKinds(s);
-                for (var i = 0; i < poses.Count; i++)
+                foreach (var slot in TimePlanning.Slots(time, split, poses.Count))
                 {
-                    var pose = poses[i];
-                    var files = kinds.Select(k => new PlannedFile(k, DatasetLayout.RelativePath(split, i, k))).ToList();
-                    views.Add(new PlannedView(split, i, pose, normalisation.ApplyToCameraToWorld(BlenderConvention.CameraToWorld(pose)), files));
+                    var pose = poses[slot.Camera];
+                    var files = kinds.Select(k => new PlannedFile(k, DatasetLayout.RelativePath(split, slot.Index, k))).ToList();
+                    views.Add(new PlannedView(split, slot.Index, pose, normalisation.ApplyToCameraToWorld(BlenderConvention.CameraToWorld(pose)), files, slot.Time));
                 }
             }
             var warnings = PlanWarnings.For(copy, target, normalisation, views.Select(v => v.Pose));
-            return new CapturePlan(copy, target, distance, copy.Intrinsics(), normalisation, warnings, views);
+            return new CapturePlan(copy, target, distance, copy.Intrinsics(), normalisation, warnings, views, time);
         }
     }
 }

@@ -92,7 +92,9 @@ namespace NerfDatasetCreator
             session.Commit();
         }
 
+        // A multi-view dynamic capture has count × steps views per split (TimePlanning.ViewCount).
         static ViewCounts CountsOf(CapturePlan plan) => new ViewCounts(
-            plan.Settings.Train.Count, plan.Settings.Val.Count, plan.Settings.Test.Count);
+            TimePlanning.ViewCount(plan.Settings, plan.Time, DatasetSplit.Train), TimePlanning.ViewCount(plan.Settings, plan.Time, DatasetSplit.Val),
+            TimePlanning.ViewCount(plan.Settings, plan.Time, DatasetSplit.Test));
     }
 }

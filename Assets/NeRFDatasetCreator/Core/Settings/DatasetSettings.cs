@@ -93,6 +93,9 @@ namespace NerfDatasetCreator
         /// <summary>Points sampled on the target's mesh surfaces into <c>points3d.ply</c> (3DGS's initial cloud); 0 writes no file.</summary>
         public int PointCloudPoints;
 
+        /// <summary>Dynamic capture: what drives time, its range and steps, and how cameras meet it (static by default).</summary>
+        public TimeSettings Time = new TimeSettings();
+
         public SplitSettings Split(DatasetSplit split)
         {
             switch (split)
@@ -113,6 +116,7 @@ namespace NerfDatasetCreator
             copy.Val = Val?.Clone();
             copy.Test = Test?.Clone();
             copy.Background = Background?.Clone();
+            copy.Time = Time?.Clone();
             return copy;
         }
 

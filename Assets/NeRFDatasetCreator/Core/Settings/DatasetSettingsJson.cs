@@ -61,6 +61,11 @@ namespace NerfDatasetCreator
             w.WritePropertyName("normalisation"); w.WriteValue(NormalisationModes.IsDefined(s.Normalisation) ? NormalisationModes.Name(s.Normalisation) : ((int)s.Normalisation).ToString(System.Globalization.CultureInfo.InvariantCulture));
             Number(w, "normalisedTargetRadius", s.NormalisedTargetRadius);
             w.WritePropertyName("pointCloudPoints"); w.WriteValue(s.PointCloudPoints);
+            if (s.Time != null && s.Time.Enabled)
+            {
+                w.WritePropertyName(TimeSettingsJson.Key);
+                TimeSettingsJson.WriteObject(w, s.Time);
+            }
             w.WritePropertyName("splits");
             w.WriteStartObject();
             foreach (var split in DatasetSplits.All)
@@ -231,6 +236,7 @@ namespace NerfDatasetCreator
                 },
                 ["normalisedTargetRadius"] = (t, p) => s.NormalisedTargetRadius = reader.Double(t, p),
                 ["pointCloudPoints"] = (t, p) => s.PointCloudPoints = reader.Int(t, p),
+                [TimeSettingsJson.Key] = (t, p) => TimeSettingsJson.Read(reader, t, p, s.Time),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),
@@ -294,7 +300,7 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>Walks a config, typing values and collecting warnings with the place they come from.</summary>
-        sealed class Reader
+        internal sealed class Reader
         {
             readonly string _source;
             public readonly List<ValidationProblem> Warnings = new List<ValidationProblem>();

@@ -57,6 +57,12 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>Use ReadPixels even where AsyncGPUReadback is supported (diagnostics; the slower, always-available path).</summary>
         public bool ForceSynchronousReadback;
 
+        /// <summary>
+        /// Called before each view is rendered with the root of the capture's copies and the view's index (a dynamic
+        /// capture poses its content there at the view's time, see ContentClock); null for a static capture.
+        /// </summary>
+        public System.Action<GameObject, int> BeforeView;
+
         public int SupersampledWidth => Width * Supersampling;
         public int SupersampledHeight => Height * Supersampling;
         public int DataWidth => DepthAndNormalAtOutputSize ? Width : SupersampledWidth;

@@ -220,6 +220,7 @@ namespace NerfDatasetCreator.Editor.Capture
             var readback = _readbacks[slot];
             if (readback.IsPending) Deliver(readback); // the oldest view in flight: its textures are about to be reused
 
+            _options.BeforeView?.Invoke(_stage.Root, index);
             var pose = _poses[index];
             var camera = _stage.Camera;
             pose.ApplyTo(camera.transform);

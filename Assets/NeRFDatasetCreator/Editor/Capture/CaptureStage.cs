@@ -26,6 +26,9 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>The copies' mesh and skinned-mesh renderers the mask, depth and normal passes draw (LOD 0 only).</summary>
         public IReadOnlyList<Renderer> DataPassRenderers => _dataPassRenderers;
 
+        /// <summary>The parent of every copy in the preview scene.</summary>
+        public GameObject Root => _root;
+
         /// <summary>Renderers the data passes cannot draw (particles, lines, sprites…, terrains): absent from mask, depth and normal.</summary>
         public int UnsupportedRendererCount { get; private set; }
 

@@ -41,11 +41,13 @@ namespace NerfDatasetCreator.Editor.Capture
         /// right for an inactive target too (Renderer.bounds is only kept up to date for active renderers). Skinned
         /// meshes are measured in their bind pose. Null when there is no mesh.
         /// </summary>
-        public static Bounds? WorldBounds(GameObject target)
+        /// <param name="includeSkinned">False leaves skinned meshes out (a dynamic capture measures them posed, see TimeMeasurement).</param>
+        public static Bounds? WorldBounds(GameObject target, bool includeSkinned = true)
         {
             Bounds? all = null;
             foreach (var pair in Of(target))
             {
+                if (!includeSkinned && pair.Key is SkinnedMeshRenderer) continue;
                 var local = pair.Value.bounds;
                 var toWorld = pair.Key.transform.localToWorldMatrix;
                 for (var corner = 0; corner < 8; corner++)

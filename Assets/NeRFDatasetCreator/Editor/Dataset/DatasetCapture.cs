@@ -64,11 +64,19 @@ namespace NerfDatasetCreator.Editor
                 problems.Add(new ValidationProblem("capture", CaptureEnvironment.RenderPipelineName, e.Message, ""));
             }
 
-            var run = DatasetRun.Prepare(settings, MeasureTarget(target), projectRoot, shard, datasetFolder);
+            var timeWarnings = new List<ValidationProblem>();
+            var measured = TimeMeasurement.Measure(target, settings, MeasureTarget(target), timeWarnings);
+            var run = DatasetRun.Prepare(settings, measured, projectRoot, shard, datasetFolder);
             problems.AddRange(run.Problems);
+            if (run.IsValid && run.Plan.Time != null)
+            {
+                var clock = new ContentClock(run.Plan.Time.Sources, settings.Seed);
+                var views = run.Plan.Views;
+                options.BeforeView = (root, index) => clock.Show(root, views[index].Time.Value.Seconds);
+            }
             // The point cloud's meshes are read when a run starts (ReadSurface), not here: the window calls Prepare as
             // the user types, and copying a large model's arrays each time would make the editor stutter.
-            var warnings = run.IsValid ? run.FullPlan.Warnings : (IReadOnlyList<ValidationProblem>)Array.Empty<ValidationProblem>();
+            var warnings = run.IsValid ? run.FullPlan.Warnings.Concat(timeWarnings).ToList() : (IReadOnlyList<ValidationProblem>)Array.Empty<ValidationProblem>();
             return new PreparedCapture(run, target, options, problems, warnings);
         }
 

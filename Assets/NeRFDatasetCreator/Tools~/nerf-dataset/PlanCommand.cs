@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Linq;
 
 namespace NerfDatasetCreator.Tool
 {
@@ -62,8 +63,9 @@ namespace NerfDatasetCreator.Tool
                 return Program.Failure;
             }
 
-            stdout.WriteLine("planned " + plan.Settings.Train.Count + " train, " + plan.Settings.Val.Count + " val, " + plan.Settings.Test.Count +
-                             " test views at distance " + ValidationProblem.Format(plan.Distance) + " into " + session.FinalFolder);
+            stdout.WriteLine("planned " + plan.ViewsOf(DatasetSplit.Train).Count() + " train, " + plan.ViewsOf(DatasetSplit.Val).Count() + " val, " +
+                             plan.ViewsOf(DatasetSplit.Test).Count() + " test views at distance " + ValidationProblem.Format(plan.Distance) + " into " + session.FinalFolder);
+            if (plan.Time != null) stdout.WriteLine(TimeSummary.Describe(plan.Time));
             stdout.WriteLine("wrote transforms_train.json, transforms_val.json, transforms_test.json, " + DatasetLayout.ConfigFileName + ", " +
                              DatasetLayout.RigPreviewFileName + " (no images: render them with the Unity plugin)");
             return Program.Success;
