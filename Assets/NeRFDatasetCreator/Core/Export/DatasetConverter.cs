@@ -23,16 +23,16 @@ namespace NerfDatasetCreator
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
-            return Export(scene, target, outDir, null, NgpWriter.DefaultSceneRadius, warnings);
+            return Export(scene, target, outDir, null, null, warnings);
         }
 
         /// <summary>
         /// Writes <paramref name="scene"/> in <paramref name="target"/>'s format: the path a fresh capture takes too.
         /// <paramref name="points"/> (output frame) fills COLMAP's points3D.txt; <paramref name="sceneRadius"/>
-        /// (output units, e.g. s·b of the target) sets instant-ngp's aabb_scale.
+        /// (output units, e.g. s·b of the target) sets instant-ngp's aabb_scale (null: the scene's own, <see cref="AabbScale.ForDataset"/>).
         /// </summary>
         public static ConversionResult Export(ExportScene scene, ExportTarget target, string outDir = null,
-            IReadOnlyList<CloudPoint> points = null, double sceneRadius = NgpWriter.DefaultSceneRadius,
+            IReadOnlyList<CloudPoint> points = null, double? sceneRadius = null,
             List<ValidationProblem> warnings = null)
         {
             warnings = warnings ?? new List<ValidationProblem>();
@@ -56,7 +56,7 @@ namespace NerfDatasetCreator
             return new ConversionResult(outDir, file, new[] { file }, warnings);
         }
 
-        static ConversionResult ToNgp(ExportScene scene, string outDir, double sceneRadius, List<ValidationProblem> warnings)
+        static ConversionResult ToNgp(ExportScene scene, string outDir, double? sceneRadius, List<ValidationProblem> warnings)
         {
             outDir = Path.GetFullPath(outDir);
             var file = Path.Combine(outDir, NgpWriter.FileName);
