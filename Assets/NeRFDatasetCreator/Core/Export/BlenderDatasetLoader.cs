@@ -13,13 +13,14 @@ namespace NerfDatasetCreator
     /// converters: <c>transforms_{train,val,test}.json</c> (train required), <c>file_path</c> resolved like the
     /// loaders do (<c>+ ".png"</c> when extensionless), W×H from each PNG's IHDR, <c>camera_angle_x</c> → a square-pixel
     /// pinhole, optional <c>cx</c>/<c>cy</c>. Picks up this plugin's extras when present for EVERY frame:
-    /// <c>&lt;image&gt;_depth_0000.png</c> (16-bit grey), <c>&lt;image&gt;_mask_0000.png</c> (8-bit grey), <c>points3d.ply</c>,
+    /// <c>&lt;image&gt;_depth_0000.png</c> (16-bit grey), <c>&lt;image&gt;_mask_0000.png</c> (8-bit grey), <c>points3d.ply</c>
+    /// when dataset_config.json records it (<see cref="PointCloudOwnership"/>; any other is a warning),
     /// <c>scene_normalisation</c>; train's <c>aabb_scale</c> and the target's reach from <c>dataset_config.json</c>
     /// (<see cref="DatasetTargetReach"/>) for instant-ngp's cube. (May later merge with the dataset module's transforms reader.)
     /// </summary>
     public static class BlenderDatasetLoader
     {
-        public const string PointCloudFileName = "points3d.ply";
+        public const string PointCloudFileName = PointCloudOwnership.FileName;
 
         public static ExportScene Load(string datasetDirectory, ICollection<ValidationProblem> warnings = null)
         {
@@ -99,7 +100,8 @@ namespace NerfDatasetCreator
             var shiftX = cx == null ? 0 : (size.Width / 2.0 - cx.Value) / size.Width;
             var shiftY = cy == null ? 0 : (cy.Value - size.Height / 2.0) / size.Height;
             var intrinsics = CameraIntrinsics.FromVerticalFov(vfov, size.Width, size.Height, shiftX, shiftY);
-            var ply = File.Exists(Path.Combine(root, PointCloudFileName)) ? PointCloudFileName : null;
+            // Only the cloud this plugin recorded is the target's surface; 3DGS writes its random cube under the same name.
+            var ply = PointCloudOwnership.IsOwn(root, warnings) ? PointCloudFileName : null;
             return new ExportScene(root, intrinsics, frames, ply, normalisation,
                 declaredAabbScale: aabbScale, targetReach: DatasetTargetReach.Read(root, warnings));
         }
