@@ -53,7 +53,7 @@ namespace NerfDatasetCreator
             warnings.AddRange(NerfstudioWriter.Warnings(scene));
             var text = ExportJson.Serialise(NerfstudioWriter.Build(scene, outDir));
             WriteNewText(file, text);
-            return new ConversionResult(outDir, file, new[] { file }, warnings);
+            return new ConversionResult(outDir, file, new[] { file }, warnings, NerfstudioTraining.Commands(file, scene.TargetReach));
         }
 
         static ConversionResult ToNgp(ExportScene scene, string outDir, double? sceneRadius, List<ValidationProblem> warnings)

@@ -52,7 +52,8 @@ namespace NerfDatasetCreator.Tool
                 if (files.Count > FilesListedPerFolder) stdout.WriteLine("  wrote " + files.Count + " files into " + folder.Key + Path.DirectorySeparatorChar);
                 else foreach (var file in files) stdout.WriteLine("  wrote " + file);
             }
-            stdout.WriteLine("train with: " + NextStep(target, result.MainFile));
+            if (result.TrainCommands.Count > 0) foreach (var command in result.TrainCommands) stdout.WriteLine("train with: " + command);
+            else stdout.WriteLine("train with: " + NextStep(target, result.MainFile));
             return Program.Success;
         }
 
@@ -61,8 +62,6 @@ namespace NerfDatasetCreator.Tool
         {
             switch (target)
             {
-                case ExportTarget.Nerfstudio:
-                    return "ns-train splatfacto nerfstudio-data --data " + Quote(main) + " --orientation-method none --center-method none --auto-scale-poses False";
                 case ExportTarget.Ngp:
                     return "./instant-ngp " + Quote(main) + "   (from the instant-ngp folder)";
                 default:
