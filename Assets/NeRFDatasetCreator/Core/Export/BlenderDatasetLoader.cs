@@ -143,7 +143,7 @@ namespace NerfDatasetCreator
             var with = frames.Count(f => path(f) != null);
             if (with > 0 && with < frames.Count)
                 warnings.Add(new ValidationProblem(what, with + " of " + frames.Count + " frames",
-                    $"only some frames have a usable {what} image; loaders need all or none, so {what} is not exported.",
+                    $"only some frames have a usable {what} image; nerfstudio needs it on all frames or none, so its export leaves {what} out (instant-ngp reads train's only; colmap --depths marks images without depth unreliable).",
                     $"Re-capture with {what} for every split."));
         }
 
