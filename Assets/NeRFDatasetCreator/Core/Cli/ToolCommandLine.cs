@@ -9,6 +9,9 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class ToolCommandLine
     {
+        /// <summary>Options that take no value (<c>--depths</c>).</summary>
+        static readonly HashSet<string> Flags = new HashSet<string>(StringComparer.Ordinal) { "depths" };
+
         public static ToolInvocation Parse(IReadOnlyList<string> args)
         {
             var result = new ToolInvocation();
@@ -43,6 +46,11 @@ namespace NerfDatasetCreator
                     {
                         name = arg.Substring(2, eq - 2);
                         value = arg.Substring(eq + 1);
+                    }
+                    else if (Flags.Contains(arg.Substring(2)))
+                    {
+                        name = arg.Substring(2);
+                        value = "true";
                     }
                     else
                     {
@@ -109,7 +117,12 @@ namespace NerfDatasetCreator
 
         static void Convert(ToolInvocation result, Dictionary<string, string> options, List<string> positionals)
         {
-            RefuseUnknownOptions(result, options, "to", "out");
+            RefuseUnknownOptions(result, options, "to", "out", "depths");
+            if (options.TryGetValue("depths", out var depths))
+            {
+                if (depths != "true") result.Errors.Add("--depths takes no value ('" + depths + "').");
+                result.Depths = true;
+            }
             if (positionals.Count != 1) result.Errors.Add("convert needs exactly one dataset folder.");
             else result.DatasetFolder = positionals[0];
             if (!options.TryGetValue("to", out var to)) result.Errors.Add("convert needs --to " + string.Join("|", ExportTargets.Names) + ".");
@@ -117,6 +130,8 @@ namespace NerfDatasetCreator
             {
                 result.Target = ExportTargets.Parse(to, out var problem);
                 if (problem != null) result.Errors.Add(problem.ToString()); // ValidationProblem formats its numbers with the invariant culture
+                else if (result.Depths && result.Target != ExportTarget.Colmap)
+                    result.Errors.Add("--depths writes 3D Gaussian Splatting's inverse-depth maps, which read a COLMAP source: use it with --to colmap (nerfstudio and ngp exports carry depth on their own).");
             }
             if (options.TryGetValue("out", out var output))
             {

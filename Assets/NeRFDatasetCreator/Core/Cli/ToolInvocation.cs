@@ -35,6 +35,9 @@ namespace NerfDatasetCreator
         /// <summary><c>convert --to nerfstudio|colmap|ngp</c>.</summary>
         public ExportTarget? Target { get; internal set; }
 
+        /// <summary><c>convert --to colmap --depths</c>: also write 3DGS's inverse-depth maps and depth_params.json.</summary>
+        public bool Depths { get; internal set; }
+
         /// <summary>Usage mistakes; the command runs only when this is empty.</summary>
         public List<string> Errors { get; } = new List<string>();
 
@@ -44,7 +47,7 @@ namespace NerfDatasetCreator
             "  plan --config <settings.json> --out <dir>               the JSON files and a rig preview, no images\n" +
             "  validate <dir>                                          check a Blender-format dataset\n" +
             "  merge --out <dir> [--files copy|move] <shard-dir>...    join the folders of a sharded capture\n" +
-            "  convert <dir> --to nerfstudio|colmap|ngp [--out <dir>]  write a dataset in another trainer's format\n" +
+            "  convert <dir> --to nerfstudio|colmap|ngp [--out <dir>] [--depths]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps)\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
     }
 }

@@ -6,11 +6,11 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class DatasetMetadataFiles
     {
-        public static void Write(DatasetWriteSession session, CapturePlan plan, Provenance provenance)
+        public static void Write(DatasetWriteSession session, CapturePlan plan, Provenance provenance, PointCloudRecord pointCloud = null)
         {
             foreach (var split in DatasetSplits.All)
                 session.WriteText(DatasetLayout.TransformsFileName(split), BlenderTransformsWriter.Write(plan, split));
-            session.WriteText(DatasetLayout.ConfigFileName, DatasetConfigWriter.Write(plan, provenance));
+            session.WriteText(DatasetLayout.ConfigFileName, DatasetConfigWriter.Write(plan, provenance, pointCloud));
         }
     }
 }

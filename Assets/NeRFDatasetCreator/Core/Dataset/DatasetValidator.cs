@@ -10,7 +10,8 @@ namespace NerfDatasetCreator
     /// transforms files parse; <c>camera_angle_x</c> is in (0, π) and the same in every split; every referenced
     /// image exists, is a complete PNG, and all share one size and channel layout (read from the PNG header);
     /// every matrix is finite, has last row 0 0 0 1 and an orthonormal rotation with |det − 1| &lt; 1e-4; extra
-    /// files named by per-frame keys exist with the documented format. Every problem is listed, one per line.
+    /// files named by per-frame keys exist with the documented format; a <c>points3d.ply</c> that dataset_config.json
+    /// does not record is a warning (<see cref="PointCloudOwnership"/>). Every problem is listed, one per line.
     /// </summary>
     public static class DatasetValidator
     {
@@ -88,6 +89,9 @@ namespace NerfDatasetCreator
                         "frames have depth_path but integer_depth_scale is " + (doc.IntegerDepthScale.HasValue ? ValidationProblem.Format(doc.IntegerDepthScale.Value) : "missing") +
                         "; instant-ngp needs it above 0 (0.001 for millimetre PNGs)."));
             }
+            var cloudWarnings = new List<ValidationProblem>();
+            PointCloudOwnership.IsOwn(folder, cloudWarnings);
+            foreach (var w in cloudWarnings) report.Warnings.Add(new DatasetProblem(w.Field, -1, null, w.Reason + " " + w.Fix));
             // The object's size is not in a Blender-format dataset, so the check is for its centre at the origin
             // (where the loaders assume it): a camera nearer than NeRF's near 2 or beyond its far 6 cannot see it.
             foreach (var range in LoaderRangeCheck.Check(cameraCentres, 0))

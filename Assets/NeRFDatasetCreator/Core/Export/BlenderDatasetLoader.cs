@@ -13,12 +13,14 @@ namespace NerfDatasetCreator
     /// converters: <c>transforms_{train,val,test}.json</c> (train required), <c>file_path</c> resolved like the
     /// loaders do (<c>+ ".png"</c> when extensionless), W×H from each PNG's IHDR, <c>camera_angle_x</c> → a square-pixel
     /// pinhole, optional <c>cx</c>/<c>cy</c>. Picks up this plugin's extras when present for EVERY frame:
-    /// <c>&lt;image&gt;_depth_0000.png</c> (16-bit grey), <c>&lt;image&gt;_mask_0000.png</c> (8-bit grey), <c>points3d.ply</c>,
-    /// <c>scene_normalisation</c>. (May later merge with the dataset module's transforms reader.)
+    /// <c>&lt;image&gt;_depth_0000.png</c> (16-bit grey), <c>&lt;image&gt;_mask_0000.png</c> (8-bit grey), <c>points3d.ply</c>
+    /// when dataset_config.json records it (<see cref="PointCloudOwnership"/>; any other is a warning),
+    /// <c>scene_normalisation</c>; train's <c>aabb_scale</c> and the target's reach from <c>dataset_config.json</c>
+    /// (<see cref="DatasetTargetReach"/>) for instant-ngp's cube. (May later merge with the dataset module's transforms reader.)
     /// </summary>
     public static class BlenderDatasetLoader
     {
-        public const string PointCloudFileName = "points3d.ply";
+        public const string PointCloudFileName = PointCloudOwnership.FileName;
 
         public static ExportScene Load(string datasetDirectory, ICollection<ValidationProblem> warnings = null)
         {
@@ -34,6 +36,7 @@ namespace NerfDatasetCreator
             double? angleX = null;
             double? cx = null, cy = null;
             SceneNormalisation normalisation = null;
+            int? aabbScale = null;
             PngInfo size = null;
             string sizeSource = null;
             foreach (var split in DatasetSplits.Names)
@@ -61,6 +64,7 @@ namespace NerfDatasetCreator
                         "must be the principal point in pixels, two numbers.", "Write cx and cy as numbers (W/2 and H/2 without lens shift), or remove both."));
                 }
                 if (normalisation == null && json["scene_normalisation"] != null) normalisation = SceneNormalisation.FromJson(json["scene_normalisation"]);
+                if (split == "train") aabbScale = AabbScale.Declared(json["aabb_scale"], Path.GetFileName(jsonPath), warnings);
 
                 if (!(json["frames"] is JArray list) || list.Count == 0)
                 {
@@ -96,8 +100,10 @@ namespace NerfDatasetCreator
             var shiftX = cx == null ? 0 : (size.Width / 2.0 - cx.Value) / size.Width;
             var shiftY = cy == null ? 0 : (cy.Value - size.Height / 2.0) / size.Height;
             var intrinsics = CameraIntrinsics.FromVerticalFov(vfov, size.Width, size.Height, shiftX, shiftY);
-            var ply = File.Exists(Path.Combine(root, PointCloudFileName)) ? PointCloudFileName : null;
-            return new ExportScene(root, intrinsics, frames, ply, normalisation);
+            // Only the cloud this plugin recorded is the target's surface; 3DGS writes its random cube under the same name.
+            var ply = PointCloudOwnership.IsOwn(root, warnings) ? PointCloudFileName : null;
+            return new ExportScene(root, intrinsics, frames, ply, normalisation,
+                declaredAabbScale: aabbScale, targetReach: DatasetTargetReach.Read(root, warnings));
         }
 
         /// <summary>The root-relative image path with extension, or null when neither the path nor path + ".png" exists.</summary>
@@ -137,7 +143,7 @@ namespace NerfDatasetCreator
             var with = frames.Count(f => path(f) != null);
             if (with > 0 && with < frames.Count)
                 warnings.Add(new ValidationProblem(what, with + " of " + frames.Count + " frames",
-                    $"only some frames have a usable {what} image; loaders need all or none, so {what} is not exported.",
+                    $"only some frames have a usable {what} image; nerfstudio needs it on all frames or none, so its export leaves {what} out (instant-ngp reads train's only; colmap --depths marks images without depth unreliable).",
                     $"Re-capture with {what} for every split."));
         }
 

@@ -18,31 +18,34 @@ namespace NerfDatasetCreator
         public const string ColmapFolderName = "colmap";
 
         /// <summary>Loads the Blender-format dataset in <paramref name="datasetDir"/> and exports it (see <see cref="Export"/>).</summary>
-        public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null)
+        /// <param name="depths">COLMAP only: also write 3DGS's inverse-depth maps and depth_params.json (<see cref="GaussianSplattingDepths"/>).</param>
+        public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null, bool depths = false)
         {
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
             var time = TimeDatasetChecks.ConversionWarning(datasetDir);
             if (time != null) warnings.Add(time);
-            return Export(scene, target, outDir, null, NgpWriter.DefaultSceneRadius, warnings);
+            return Export(scene, target, outDir, null, null, warnings, depths);
         }
 
         /// <summary>
         /// Writes <paramref name="scene"/> in <paramref name="target"/>'s format: the path a fresh capture takes too.
         /// <paramref name="points"/> (output frame) fills COLMAP's points3D.txt; <paramref name="sceneRadius"/>
-        /// (output units, e.g. s·b of the target) sets instant-ngp's aabb_scale.
+        /// (output units, e.g. s·b of the target) sets instant-ngp's aabb_scale (null: the scene's own, <see cref="AabbScale.ForDataset"/>).
         /// </summary>
         public static ConversionResult Export(ExportScene scene, ExportTarget target, string outDir = null,
-            IReadOnlyList<CloudPoint> points = null, double sceneRadius = NgpWriter.DefaultSceneRadius,
-            List<ValidationProblem> warnings = null)
+            IReadOnlyList<CloudPoint> points = null, double? sceneRadius = null,
+            List<ValidationProblem> warnings = null, bool depths = false)
         {
             warnings = warnings ?? new List<ValidationProblem>();
+            if (depths && target != ExportTarget.Colmap)
+                throw new InvalidParameterException(new[] { new ValidationProblem("--depths", ExportTargets.Name(target), "is for --to colmap (3DGS reads depth maps for COLMAP sources).", "Drop --depths, or convert to colmap.") });
             switch (target)
             {
                 case ExportTarget.Nerfstudio: return ToNerfstudio(scene, outDir ?? scene.RootDirectory, warnings);
                 case ExportTarget.Ngp: return ToNgp(scene, outDir ?? Path.Combine(scene.RootDirectory, NgpWriter.FolderName), sceneRadius, warnings);
-                case ExportTarget.Colmap: return ToColmap(scene, outDir ?? Path.Combine(scene.RootDirectory, ColmapFolderName), points, warnings);
+                case ExportTarget.Colmap: return ToColmap(scene, outDir ?? Path.Combine(scene.RootDirectory, ColmapFolderName), points, warnings, depths);
                 default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
             }
         }
@@ -55,10 +58,10 @@ namespace NerfDatasetCreator
             warnings.AddRange(NerfstudioWriter.Warnings(scene));
             var text = ExportJson.Serialise(NerfstudioWriter.Build(scene, outDir));
             WriteNewText(file, text);
-            return new ConversionResult(outDir, file, new[] { file }, warnings);
+            return new ConversionResult(outDir, file, new[] { file }, warnings, NerfstudioTraining.Commands(file, scene.TargetReach));
         }
 
-        static ConversionResult ToNgp(ExportScene scene, string outDir, double sceneRadius, List<ValidationProblem> warnings)
+        static ConversionResult ToNgp(ExportScene scene, string outDir, double? sceneRadius, List<ValidationProblem> warnings)
         {
             outDir = Path.GetFullPath(outDir);
             var file = Path.Combine(outDir, NgpWriter.FileName);
@@ -68,7 +71,7 @@ namespace NerfDatasetCreator
             return new ConversionResult(outDir, file, new[] { file }, warnings);
         }
 
-        static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings)
+        static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths)
         {
             outDir = Path.GetFullPath(outDir);
             var sparse = Path.Combine(outDir, "sparse", "0");
@@ -87,6 +90,11 @@ namespace NerfDatasetCreator
             if (testTxt != null) all.Add(testTxt);
             if (pointsPly != null) all.Add(pointsPly);
             all.AddRange(copies.Select(c => c.to));
+            if (depths)
+            {
+                InvalidParameterException.ThrowIfAny(GaussianSplattingDepths.Check(scene.Frames, names).ToArray());
+                all.AddRange(GaussianSplattingDepths.Destinations(outDir, names));
+            }
             foreach (var path in all) EnsureAbsent(path);
 
             if (points == null && scene.PointCloudPath != null)
@@ -106,6 +114,7 @@ namespace NerfDatasetCreator
             WriteNewText(pointsTxt, ColmapTextWriter.Points3DText(points));
             if (testTxt != null) WriteNewText(testTxt, string.Join("\n", testNames) + "\n");
             if (pointsPly != null) File.Copy(Path.Combine(scene.RootDirectory, scene.PointCloudPath), pointsPly, false);
+            if (depths) GaussianSplattingDepths.Write(scene, names, outDir, warnings);
             if (scene.Frames.Any(f => f.Split != "train"))
                 warnings.Add(new ValidationProblem("images.txt", scene.Frames.Count + " images",
                     "COLMAP has no splits: train, val and test views are all listed; upstream 3DGS's --eval holds out every 8th image by name (sparse/0/test.txt lists the real test views for loaders that read it).",

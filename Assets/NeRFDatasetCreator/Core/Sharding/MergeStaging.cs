@@ -63,12 +63,16 @@ namespace NerfDatasetCreator
         /// <summary>
         /// The first shard's config made to describe the whole dataset: <c>imagesRendered</c> (a boolean, see
         /// <see cref="DatasetConfigWriter"/>) true only when every shard rendered its images, and the per-shard
-        /// <c>statistics</c> dropped.
+        /// <c>statistics</c> dropped; the <c>pointCloud</c> record of the shard that wrote points3d.ply.
         /// </summary>
         static JToken MergedConfig(JToken first, List<ShardFolder> shards)
         {
             if (!(first.DeepClone() is JObject merged)) return first.DeepClone();
             merged.Remove("statistics");
+            // Only shard 0 writes points3d.ply (merge carries that file over unchanged), so its record describes the merged dataset.
+            var cloud = shards.Select(s => (s.Config as JObject)?[PointCloudRecord.Key]).FirstOrDefault(r => r != null);
+            if (cloud != null) merged[PointCloudRecord.Key] = cloud.DeepClone();
+            else merged.Remove(PointCloudRecord.Key);
             var rendered = shards.Select(s => (s.Config as JObject)?["imagesRendered"]).ToList();
             if (rendered.All(r => r != null && r.Type == JTokenType.Boolean))
                 merged["imagesRendered"] = rendered.All(r => (bool)r);

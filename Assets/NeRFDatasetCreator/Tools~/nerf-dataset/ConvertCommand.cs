@@ -5,7 +5,7 @@ using System.Linq;
 namespace NerfDatasetCreator.Tool
 {
     /// <summary>
-    /// <c>nerf-dataset convert d --to nerfstudio|colmap|ngp [--out o]</c>: <see cref="DatasetConverter.Convert"/>, then
+    /// <c>nerf-dataset convert d --to nerfstudio|colmap|ngp [--out o] [--depths]</c>: <see cref="DatasetConverter.Convert"/>, then
     /// where the files went, the warnings, and the command that trains on the result. Exit 1 when the dataset cannot
     /// be converted or a destination file exists (nothing is overwritten).
     /// </summary>
@@ -14,12 +14,12 @@ namespace NerfDatasetCreator.Tool
         /// <summary>A folder with more written files than this is summarised as a count (COLMAP's image copies).</summary>
         const int FilesListedPerFolder = 5;
 
-        public static int Run(string datasetFolder, ExportTarget target, string outputFolder, TextWriter stdout, TextWriter stderr)
+        public static int Run(string datasetFolder, ExportTarget target, string outputFolder, TextWriter stdout, TextWriter stderr, bool depths = false)
         {
             ConversionResult result;
             try
             {
-                result = DatasetConverter.Convert(datasetFolder, target, outputFolder);
+                result = DatasetConverter.Convert(datasetFolder, target, outputFolder, depths);
             }
             catch (InvalidParameterException e)
             {
@@ -52,21 +52,20 @@ namespace NerfDatasetCreator.Tool
                 if (files.Count > FilesListedPerFolder) stdout.WriteLine("  wrote " + files.Count + " files into " + folder.Key + Path.DirectorySeparatorChar);
                 else foreach (var file in files) stdout.WriteLine("  wrote " + file);
             }
-            stdout.WriteLine("train with: " + NextStep(target, result.MainFile));
+            if (result.TrainCommands.Count > 0) foreach (var command in result.TrainCommands) stdout.WriteLine("train with: " + command);
+            else stdout.WriteLine("train with: " + NextStep(target, result.MainFile, depths));
             return Program.Success;
         }
 
         /// <summary>The training command of Documentation~/exports.md for the export just written.</summary>
-        static string NextStep(ExportTarget target, string main)
+        static string NextStep(ExportTarget target, string main, bool depths)
         {
             switch (target)
             {
-                case ExportTarget.Nerfstudio:
-                    return "ns-train splatfacto nerfstudio-data --data " + Quote(main) + " --orientation-method none --center-method none --auto-scale-poses False";
                 case ExportTarget.Ngp:
                     return "./instant-ngp " + Quote(main) + "   (from the instant-ngp folder)";
                 default:
-                    return "python train.py -s " + Quote(main) + " --eval   (3D Gaussian Splatting)";
+                    return "python train.py -s " + Quote(main) + (depths ? " -d " + GaussianSplattingDepths.FolderName : "") + " --eval   (3D Gaussian Splatting)";
             }
         }
 
