@@ -37,6 +37,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(run.Out, Is.EqualTo(
                 "converted " + _dataset + " to nerfstudio:\n" +
                 "  wrote " + file + "\n" +
+                string.Concat(new[] { "train", "val", "test" }.Select(split => "  wrote " + Path.Combine(_dataset, "camera_paths", split + ".json") + "\n")) +
                 "train with: ns-train splatfacto nerfstudio-data --data " + file + " --orientation-method none --center-method none --auto-scale-poses False\n"));
             var json = Json(file);
             Assert.That((int)json["w"], Is.EqualTo(RenderedDataset.Width));

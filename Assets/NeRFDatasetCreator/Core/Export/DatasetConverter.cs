@@ -53,7 +53,7 @@ namespace NerfDatasetCreator
             warnings.AddRange(NerfstudioWriter.Warnings(scene));
             var text = ExportJson.Serialise(NerfstudioWriter.Build(scene, outDir));
             WriteNewText(file, text);
-            return new ConversionResult(outDir, file, new[] { file }, warnings);
+            return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Nerfstudio, warnings)).ToList(), warnings);
         }
 
         static ConversionResult ToNgp(ExportScene scene, string outDir, double sceneRadius, List<ValidationProblem> warnings)
@@ -63,7 +63,7 @@ namespace NerfDatasetCreator
             EnsureAbsent(file);
             var text = ExportJson.Serialise(NgpWriter.Build(scene, outDir, sceneRadius, warnings));
             WriteNewText(file, text);
-            return new ConversionResult(outDir, file, new[] { file }, warnings);
+            return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Ngp, warnings)).ToList(), warnings);
         }
 
         static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings)
