@@ -58,7 +58,8 @@ namespace NerfDatasetCreator
             warnings.AddRange(NerfstudioWriter.Warnings(scene));
             var text = ExportJson.Serialise(NerfstudioWriter.Build(scene, outDir));
             WriteNewText(file, text);
-            return new ConversionResult(outDir, file, new[] { file }, warnings, NerfstudioTraining.Commands(file, scene.TargetReach));
+            return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Nerfstudio, warnings)).ToList(), warnings,
+                NerfstudioTraining.Commands(file, scene.TargetReach));
         }
 
         static ConversionResult ToNgp(ExportScene scene, string outDir, double? sceneRadius, List<ValidationProblem> warnings)
@@ -68,7 +69,7 @@ namespace NerfDatasetCreator
             EnsureAbsent(file);
             var text = ExportJson.Serialise(NgpWriter.Build(scene, outDir, sceneRadius, warnings));
             WriteNewText(file, text);
-            return new ConversionResult(outDir, file, new[] { file }, warnings);
+            return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Ngp, warnings)).ToList(), warnings);
         }
 
         static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths)

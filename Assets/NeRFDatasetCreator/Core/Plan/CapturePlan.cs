@@ -71,7 +71,7 @@ namespace NerfDatasetCreator
         public double RotationOf(DatasetSplit split)
         {
             var s = Settings.Split(split);
-            return s.Formation.AzimuthStepRadians(s.Count);
+            return s.Source != null && s.Source.IsImported ? 0 : s.Formation.AzimuthStepRadians(s.Count);
         }
 
         /// <summary>
@@ -86,7 +86,10 @@ namespace NerfDatasetCreator
             if (double.IsNaN(target.BoundingRadius) || double.IsInfinity(target.BoundingRadius) || target.BoundingRadius < 0)
                 problems.Add(new ValidationProblem("target", ValidationProblem.Format(target.BoundingRadius), "has bounds that are not a finite size.", "Check the target's renderers."));
             if (problems.Count > 0) return problems;
+            settings = CameraSourcePlanning.Resolved(settings, out _, problems);
+            if (problems.Count > 0) return problems;
             problems.AddRange(TimePlanning.Check(settings, target.ClipLengthSeconds));
+            if (problems.Count > 0 || !CameraSourcePlanning.AnyFormation(settings)) return problems;
 
             if (settings.AutoDistance && !target.HasBounds)
             {
@@ -132,7 +135,7 @@ namespace NerfDatasetCreator
             var problems = Check(settings, target);
             if (problems.Count > 0) throw new InvalidParameterException(problems);
 
-            var copy = settings.Clone();
+            var copy = CameraSourcePlanning.Resolved(settings, out var imported);
             var distance = ResolveDistance(copy, target);
             var normalisation = SceneNormalisation.ForTarget(copy.Normalisation, target.Centre, target.BoundingRadius, distance, copy.NormalisedTargetRadius);
             var time = TimePlanning.Resolve(copy, target.ClipLengthSeconds);
@@ -141,17 +144,23 @@ namespace NerfDatasetCreator
             {
                 var s = copy.Split(split);
                 var splitName = DatasetSplits.Name(split);
-                var formation = s.Formation.ToFormation(copy.Seed, splitName);
-                var poses = CameraRig.Place(formation, s.Count, target.Centre, distance);
+                imported.TryGetValue(split, out var cameras);
+                var poses = cameras != null
+                    ? cameras.Cameras.Select(c => c.Pose).ToList()
+                    : CameraRig.Place(s.Formation.ToFormation(copy.Seed, splitName), s.Count, target.Centre, distance);
                 var kinds = DatasetLayout.FileKinds(s);
                 foreach (var slot in TimePlanning.Slots(time, split, poses.Count))
                 {
                     var pose = poses[slot.Camera];
                     var files = kinds.Select(k => new PlannedFile(k, DatasetLayout.RelativePath(split, slot.Index, k))).ToList();
-                    views.Add(new PlannedView(split, slot.Index, pose, normalisation.ApplyToCameraToWorld(BlenderConvention.CameraToWorld(pose)), files, slot.Time));
+                    var matrix = cameras != null
+                        ? PosePlacement.ToOutput(cameras.Cameras[slot.Camera].FileCameraToWorld, cameras.Poses.Normalisation, normalisation)
+                        : normalisation.ApplyToCameraToWorld(BlenderConvention.CameraToWorld(pose));
+                    views.Add(new PlannedView(split, slot.Index, pose, matrix, files, slot.Time));
                 }
             }
-            var warnings = PlanWarnings.For(copy, target, normalisation, views.Select(v => v.Pose));
+            var warnings = PlanWarnings.For(copy, target, normalisation, views.Select(v => v.Pose))
+                .Concat(CameraSourcePlanning.Warnings(copy, copy.Intrinsics(), imported)).ToList();
             return new CapturePlan(copy, target, distance, copy.Intrinsics(), normalisation, warnings, views, time);
         }
     }

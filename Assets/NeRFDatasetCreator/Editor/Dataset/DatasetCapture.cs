@@ -46,6 +46,8 @@ namespace NerfDatasetCreator.Editor
                 settings.Camera.NearClip = template.nearClipPlane;
                 settings.Camera.FarClip = template.farClipPlane;
             }
+            // Imported cameras set their splits' counts and, when asked, the field of view and size the camera renders with.
+            settings = CameraSourcePlanning.Resolved(settings, out _);
             var options = OptionsFor(settings, template);
             try
             {
