@@ -225,11 +225,19 @@ namespace NerfDatasetCreator.Editor.Capture
             pose.ApplyTo(camera.transform);
             var targets = _targets[slot];
 
-            if (targets.Color != null) Render(camera, targets.Color, null);
-            if (targets.Mask != null) Render(camera, targets.Mask, _materials.Mask);
-            if (targets.Depth != null) Render(camera, targets.Depth, _materials.Depth);
-            if (targets.Normal != null) Render(camera, targets.Normal, _materials.Normal);
+            if (targets.ColorOverBlack != null)
+            {
+                // Difference matting: the same colour pass over two clears; Core solves alpha and colour from the pair.
+                // Black and white are fixed points of the sRGB curve, so URP's conversion of the background colour
+                // to the active colour space (URP 14 UniversalRenderPipeline.cs:1333) leaves them as they are.
+                Render(camera, targets.ColorOverBlack, null, OverBlack);
+                Render(camera, targets.ColorOverWhite, null, OverWhite);
+            }
+            if (targets.Mask != null) Render(camera, targets.Mask, _materials.Mask, OverBlack);
+            if (targets.Depth != null) Render(camera, targets.Depth, _materials.Depth, OverBlack);
+            if (targets.Normal != null) Render(camera, targets.Normal, _materials.Normal, OverBlack);
             _stage.UseMaterial(null);
+            camera.backgroundColor = OverBlack;
             camera.targetTexture = null;
 
             if (UsesAsyncReadback)
@@ -252,9 +260,14 @@ namespace NerfDatasetCreator.Editor.Capture
             }
         }
 
-        void Render(Camera camera, RenderTexture target, Material passMaterial)
+        // The alpha of the clear colour is irrelevant: the matting reads RGB only, the data passes clear to 0.
+        static readonly Color OverBlack = new Color(0f, 0f, 0f, 0f);
+        static readonly Color OverWhite = new Color(1f, 1f, 1f, 0f);
+
+        void Render(Camera camera, RenderTexture target, Material passMaterial, Color clear)
         {
             _stage.UseMaterial(passMaterial);
+            camera.backgroundColor = clear;
             camera.targetTexture = target;
             camera.Render();
         }
@@ -286,7 +299,10 @@ namespace NerfDatasetCreator.Editor.Capture
 
         CapturedView NewView(int index, UnityPose pose) => new CapturedView(index, pose,
             _options.SupersampledWidth, _options.SupersampledHeight, _options.Supersampling,
-            _options.DataWidth, _options.DataHeight, _pools.ReturnCallback);
+            _options.DataWidth, _options.DataHeight, _pools.ReturnCallback)
+        {
+            ColorIsGammaEncoded = QualitySettings.activeColorSpace == ColorSpace.Gamma,
+        };
 
         void Hand(CapturedView view)
         {
