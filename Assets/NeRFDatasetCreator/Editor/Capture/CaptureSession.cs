@@ -225,20 +225,15 @@ namespace NerfDatasetCreator.Editor.Capture
             pose.ApplyTo(camera.transform);
             var targets = _targets[slot];
 
-            if (targets.ColorOverBlack != null)
+            _stage.PinLighting();
+            try
             {
-                // Difference matting: the same colour pass over two clears; Core solves alpha and colour from the pair.
-                // Black and white are fixed points of the sRGB curve, so URP's conversion of the background colour
-                // to the active colour space (URP 14 UniversalRenderPipeline.cs:1333) leaves them as they are.
-                Render(camera, targets.ColorOverBlack, null, OverBlack);
-                Render(camera, targets.ColorOverWhite, null, OverWhite);
+                RenderPasses(camera, targets);
             }
-            if (targets.Mask != null) Render(camera, targets.Mask, _materials.Mask, OverBlack);
-            if (targets.Depth != null) Render(camera, targets.Depth, _materials.Depth, OverBlack);
-            if (targets.Normal != null) Render(camera, targets.Normal, _materials.Normal, OverBlack);
-            _stage.UseMaterial(null);
-            camera.backgroundColor = OverBlack;
-            camera.targetTexture = null;
+            finally
+            {
+                _stage.UnpinLighting();
+            }
 
             if (UsesAsyncReadback)
             {
@@ -258,6 +253,24 @@ namespace NerfDatasetCreator.Editor.Capture
                 }
                 Hand(view);
             }
+        }
+
+        void RenderPasses(Camera camera, RenderTargetSet targets)
+        {
+            if (targets.ColorOverBlack != null)
+            {
+                // Difference matting: the same colour pass over two clears; Core solves alpha and colour from the pair.
+                // Black and white are fixed points of the sRGB curve, so URP's conversion of the background colour
+                // to the active colour space (URP 14 UniversalRenderPipeline.cs:1333) leaves them as they are.
+                Render(camera, targets.ColorOverBlack, null, OverBlack);
+                Render(camera, targets.ColorOverWhite, null, OverWhite);
+            }
+            if (targets.Mask != null) Render(camera, targets.Mask, _materials.Mask, OverBlack);
+            if (targets.Depth != null) Render(camera, targets.Depth, _materials.Depth, OverBlack);
+            if (targets.Normal != null) Render(camera, targets.Normal, _materials.Normal, OverBlack);
+            _stage.UseMaterial(null);
+            camera.backgroundColor = OverBlack;
+            camera.targetTexture = null;
         }
 
         // The alpha of the clear colour is irrelevant: the matting reads RGB only, the data passes clear to 0.

@@ -23,6 +23,7 @@ namespace NerfDatasetCreator.Editor.Capture
         GameObject _root;
         GameObject _cameraObject;
         Material _current;
+        SceneLighting _lighting;
 
         public Camera Camera { get; private set; }
 
@@ -36,6 +37,7 @@ namespace NerfDatasetCreator.Editor.Capture
         {
             try
             {
+                _lighting = new SceneLighting(); // the user's active scene's, read before anything changes
                 _scene = EditorSceneManager.NewPreviewScene();
                 if (!_scene.IsValid()) throw new CaptureException("Unity could not create the preview scene the capture renders in.");
 
@@ -54,6 +56,9 @@ namespace NerfDatasetCreator.Editor.Capture
                 }
                 if (options.Isolation == CaptureIsolation.TargetOnly && options.CopySceneLights)
                     CopySceneLights(target);
+                // Lights under the target and, in whole-scene mode, every light arrive through Instantiate with their
+                // bake type and last bake's output: without lightmaps in this scene they must all be realtime.
+                CaptureLights.MakeAllRealtime(_root);
 
                 CollectRenderers();
                 _root.SetActive(true);
@@ -68,6 +73,11 @@ namespace NerfDatasetCreator.Editor.Capture
                 throw;
             }
         }
+
+        /// <summary>Renders with the user's ambient, reflection and fog settings until <see cref="UnpinLighting"/> (<see cref="SceneLighting"/>).</summary>
+        public void PinLighting() => _lighting?.Pin(_scene);
+
+        public void UnpinLighting() => _lighting?.Unpin();
 
         GameObject NewHiddenObject(string name, params Type[] components)
         {
@@ -108,8 +118,9 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>
         /// A preview scene renders only what is in it, so the scene's lights are brought along as copies at the same
         /// world pose. Lights under the target are already copied with it. Lights baked into lightmaps would light
-        /// nothing on a copy (it has no lightmap in this scene), so every copy is realtime. The properties are copied
-        /// one by one (not EditorUtility.CopySerialized) so that nothing ties the copy to the user's light.
+        /// nothing on a copy (it has no lightmap in this scene), so every copy is realtime. The Light's properties are
+        /// copied one by one (not EditorUtility.CopySerialized, which would also bring its bake output); URP's
+        /// per-light component is copied whole (<see cref="CaptureLights.CopyPipelineData"/>).
         /// </summary>
         void CopySceneLights(GameObject target)
         {
@@ -125,6 +136,7 @@ namespace NerfDatasetCreator.Editor.Capture
                 try
                 {
                     CopyLight(light, go.GetComponent<Light>());
+                    CaptureLights.CopyPipelineData(light, go.GetComponent<Light>());
                 }
                 catch (Exception e)
                 {
@@ -257,6 +269,7 @@ namespace NerfDatasetCreator.Editor.Capture
 
         public void Dispose()
         {
+            UnpinLighting();
             if (Camera != null) Camera.targetTexture = null;
             // As PreviewRenderUtility does: close the scene (which destroys its objects), then make sure.
             if (_scene.IsValid()) EditorSceneManager.ClosePreviewScene(_scene);
