@@ -47,10 +47,12 @@ namespace NerfDatasetCreator.Editor.Capture
                 _root = NewHiddenObject("NeRF Dataset Creator capture");
                 _root.SetActive(false);
 
+                var copies = new List<KeyValuePair<GameObject, GameObject>>();
                 foreach (var source in Sources(target, options.Isolation))
                 {
                     var copy = Object.Instantiate(source, _root.transform, true);
                     copy.name = source.name;
+                    copies.Add(new KeyValuePair<GameObject, GameObject>(source, copy));
                     if (options.Isolation == CaptureIsolation.TargetOnly) copy.SetActive(true);
                     Neutralise(copy);
                 }
@@ -62,6 +64,8 @@ namespace NerfDatasetCreator.Editor.Capture
 
                 CollectRenderers();
                 _root.SetActive(true);
+                // After activation: an inactive particle system holds no particles.
+                foreach (var pair in copies) CopyParticles(pair.Key, pair.Value);
 
                 _cameraObject = NewHiddenObject("NeRF Dataset Creator camera", typeof(Camera));
                 Camera = _cameraObject.GetComponent<Camera>();
@@ -103,6 +107,25 @@ namespace NerfDatasetCreator.Editor.Capture
                     if ((root.hideFlags & HideFlags.DontSave) != 0 || !root.activeInHierarchy) continue;
                     yield return root;
                 }
+            }
+        }
+
+        /// <summary>
+        /// A particle system's live particles are simulation state, not serialized settings: they are carried over
+        /// explicitly (GetParticles/SetParticles), so that the copy shows what the user's system shows now. Instantiate
+        /// keeps the hierarchy, so the n-th system of the copy is the n-th of the source.
+        /// </summary>
+        static void CopyParticles(GameObject source, GameObject copy)
+        {
+            var from = source.GetComponentsInChildren<ParticleSystem>(true);
+            var to = copy.GetComponentsInChildren<ParticleSystem>(true);
+            for (var i = 0; i < from.Length && i < to.Length; i++)
+            {
+                var count = from[i].particleCount;
+                if (count == 0) continue;
+                var particles = new ParticleSystem.Particle[count];
+                count = from[i].GetParticles(particles);
+                to[i].SetParticles(particles, count);
             }
         }
 
