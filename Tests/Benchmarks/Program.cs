@@ -28,6 +28,7 @@ namespace NerfDatasetCreator.Benchmarks
 
             PostProcessing(frame, rgba, mask, depth, normals);
             PostProcessingLinearFloat();
+            MattingBenchmark.Run();
             Png("RGBA 800×800 textured sphere with grain", rgba, depth: null);
             var clean = new byte[rgba.Length];
             StraightAlpha.Resolve(SyntheticFrame.Sphere(OutputSize, Supersampling, noise: 0), clean);

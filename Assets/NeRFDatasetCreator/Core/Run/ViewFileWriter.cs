@@ -36,8 +36,8 @@ namespace NerfDatasetCreator
         public int ClampedDepthPixels => Volatile.Read(ref _clampedDepthPixels);
 
         /// <summary>
-        /// Writes <paramref name="view"/>'s files. <paramref name="colour"/> carries colour and mask at the supersampled
-        /// size; <paramref name="data"/> carries depth and normals (normals already in the output world frame), at
+        /// Writes <paramref name="view"/>'s files. <paramref name="colour"/> carries colour (the black/white pair for
+        /// <see cref="DifferenceMatting"/>, or one render whose alpha is the mask) and mask at the supersampled size; <paramref name="data"/> carries depth and normals (normals already in the output world frame), at
         /// that size or at the output size (supersampling 1). Either may be the same frame.
         /// </summary>
         public void Write(PlannedView view, RawFrame colour, RawFrame data)
@@ -46,7 +46,13 @@ namespace NerfDatasetCreator
             var wantsMask = view.Writes(DatasetFileKind.MaskPng);
             var rgba = new byte[width * height * 4];
             var mask = wantsMask ? new byte[width * height] : null;
-            StraightAlpha.Resolve(colour, rgba, _background, mask);
+            if (colour.ColorOverBlack != null)
+            {
+                // Alpha from the two colour renders; the mask file is the mask pass's geometry coverage (pixels.md §3).
+                DifferenceMatting.Resolve(colour, rgba, _background);
+                if (wantsMask) MaskEncoding.Encode(colour, mask);
+            }
+            else StraightAlpha.Resolve(colour, rgba, _background, mask);
             Save(view, DatasetFileKind.Color, PngWriter.Encode(rgba, width, height, PngPixelFormat.Rgba8));
             if (wantsMask) Save(view, DatasetFileKind.MaskPng, PngWriter.Encode(mask, width, height, PngPixelFormat.Gray8));
 

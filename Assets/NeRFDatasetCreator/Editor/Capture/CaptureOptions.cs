@@ -20,7 +20,7 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>Output image height in pixels.</summary>
         public int Height = 800;
 
-        /// <summary>k: colour and mask are rendered at k·W × k·H and box-filtered later (anti-aliased edges, true alpha).</summary>
+        /// <summary>k: colour and mask are rendered at k·W × k·H and box-filtered later (anti-aliased edges and alpha).</summary>
         public int Supersampling = 2;
 
         public CapturePasses Passes = CapturePasses.All;
@@ -106,8 +106,10 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>Throws <see cref="InvalidParameterException"/> listing every problem, if any.</summary>
         public void ThrowIfInvalid() => InvalidParameterException.ThrowIfAny(Validate().ToArray());
 
-        /// <summary>Colour always needs the mask (its alpha); the mask alone is allowed.</summary>
-        public CapturePasses EffectivePasses =>
-            (Passes & CapturePasses.Color) != 0 ? Passes | CapturePasses.Mask : Passes;
+        /// <summary>
+        /// The passes rendered. Colour no longer needs the mask: its alpha comes from rendering it over black and over
+        /// white (difference matting), so the mask pass runs only when mask images are asked for.
+        /// </summary>
+        public CapturePasses EffectivePasses => Passes;
     }
 }

@@ -226,11 +226,14 @@ namespace NerfDatasetCreator.Editor.Capture
             pose.ApplyTo(camera.transform);
             var targets = _targets[slot];
 
-            if (targets.Color != null)
+            _stage.PinLighting();
+            try
             {
-                camera.targetTexture = targets.Color;
-                camera.Render();
-                camera.targetTexture = null;
+                RenderColour(camera, targets);
+            }
+            finally
+            {
+                _stage.UnpinLighting();
             }
             // The data passes draw outside the camera's render loop, so no pipeline setting can change them.
             if (targets.Mask != null) _dataPasses.Render(camera, targets.Mask, DataPassRenderer.MaskPass);
@@ -255,6 +258,29 @@ namespace NerfDatasetCreator.Editor.Capture
                 }
                 Hand(view);
             }
+        }
+
+        static void RenderColour(Camera camera, RenderTargetSet targets)
+        {
+            if (targets.ColorOverBlack == null) return;
+            // Difference matting: the same colour pass over two clears; Core solves alpha and colour from the pair.
+            // Black and white are fixed points of the sRGB curve, so URP's conversion of the background colour
+            // to the active colour space (URP 14 UniversalRenderPipeline.cs:1333) leaves them as they are.
+            Render(camera, targets.ColorOverBlack, OverBlack);
+            Render(camera, targets.ColorOverWhite, OverWhite);
+            camera.backgroundColor = OverBlack;
+            camera.targetTexture = null;
+        }
+
+        // The alpha of the clear colour is irrelevant: the matting reads RGB only.
+        static readonly Color OverBlack = new Color(0f, 0f, 0f, 0f);
+        static readonly Color OverWhite = new Color(1f, 1f, 1f, 0f);
+
+        static void Render(Camera camera, RenderTexture target, Color clear)
+        {
+            camera.backgroundColor = clear;
+            camera.targetTexture = target;
+            camera.Render();
         }
 
         void DrainAll()
@@ -284,7 +310,10 @@ namespace NerfDatasetCreator.Editor.Capture
 
         CapturedView NewView(int index, UnityPose pose) => new CapturedView(index, pose,
             _options.SupersampledWidth, _options.SupersampledHeight, _options.Supersampling,
-            _options.DataWidth, _options.DataHeight, _pools.ReturnCallback);
+            _options.DataWidth, _options.DataHeight, _pools.ReturnCallback)
+        {
+            ColorIsGammaEncoded = QualitySettings.activeColorSpace == ColorSpace.Gamma,
+        };
 
         void Hand(CapturedView view)
         {

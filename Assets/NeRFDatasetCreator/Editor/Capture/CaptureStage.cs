@@ -20,6 +20,7 @@ namespace NerfDatasetCreator.Editor.Capture
         Scene _scene;
         GameObject _root;
         GameObject _cameraObject;
+        SceneLighting _lighting;
 
         public Camera Camera { get; private set; }
 
@@ -39,6 +40,7 @@ namespace NerfDatasetCreator.Editor.Capture
         {
             try
             {
+                _lighting = new SceneLighting(); // the user's active scene's, read before anything changes
                 _scene = EditorSceneManager.NewPreviewScene();
                 if (!_scene.IsValid()) throw new CaptureException("Unity could not create the preview scene the capture renders in.");
 
@@ -48,18 +50,25 @@ namespace NerfDatasetCreator.Editor.Capture
                 _root = NewHiddenObject("NeRF Dataset Creator capture");
                 _root.SetActive(false);
 
+                var copies = new List<KeyValuePair<GameObject, GameObject>>();
                 foreach (var source in Sources(target, options.Isolation))
                 {
                     var copy = Object.Instantiate(source, _root.transform, true);
                     copy.name = source.name;
+                    copies.Add(new KeyValuePair<GameObject, GameObject>(source, copy));
                     if (options.Isolation == CaptureIsolation.TargetOnly) copy.SetActive(true);
                     Neutralise(copy);
                 }
                 if (options.Isolation == CaptureIsolation.TargetOnly && options.CopySceneLights)
                     CopySceneLights(target);
+                // Lights under the target and, in whole-scene mode, every light arrive through Instantiate with their
+                // bake type and last bake's output: without lightmaps in this scene they must all be realtime.
+                CaptureLights.MakeAllRealtime(_root);
 
                 CollectRenderers();
                 _root.SetActive(true);
+                // After activation: an inactive particle system holds no particles.
+                foreach (var pair in copies) CopyParticles(pair.Key, pair.Value);
 
                 _cameraObject = NewHiddenObject("NeRF Dataset Creator camera", typeof(Camera));
                 Camera = _cameraObject.GetComponent<Camera>();
@@ -71,6 +80,11 @@ namespace NerfDatasetCreator.Editor.Capture
                 throw;
             }
         }
+
+        /// <summary>Renders with the user's ambient, reflection and fog settings until <see cref="UnpinLighting"/> (<see cref="SceneLighting"/>).</summary>
+        public void PinLighting() => _lighting?.Pin(_scene);
+
+        public void UnpinLighting() => _lighting?.Unpin();
 
         GameObject NewHiddenObject(string name, params Type[] components)
         {
@@ -99,6 +113,25 @@ namespace NerfDatasetCreator.Editor.Capture
             }
         }
 
+        /// <summary>
+        /// A particle system's live particles are simulation state, not serialized settings: they are carried over
+        /// explicitly (GetParticles/SetParticles), so that the copy shows what the user's system shows now. Instantiate
+        /// keeps the hierarchy, so the n-th system of the copy is the n-th of the source.
+        /// </summary>
+        static void CopyParticles(GameObject source, GameObject copy)
+        {
+            var from = source.GetComponentsInChildren<ParticleSystem>(true);
+            var to = copy.GetComponentsInChildren<ParticleSystem>(true);
+            for (var i = 0; i < from.Length && i < to.Length; i++)
+            {
+                var count = from[i].particleCount;
+                if (count == 0) continue;
+                var particles = new ParticleSystem.Particle[count];
+                count = from[i].GetParticles(particles);
+                to[i].SetParticles(particles, count);
+            }
+        }
+
         /// <summary>Copies carry the user's components; only rendering ones may act. Cameras and scripts are switched off.</summary>
         static void Neutralise(GameObject copy)
         {
@@ -111,8 +144,9 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>
         /// A preview scene renders only what is in it, so the scene's lights are brought along as copies at the same
         /// world pose. Lights under the target are already copied with it. Lights baked into lightmaps would light
-        /// nothing on a copy (it has no lightmap in this scene), so every copy is realtime. The properties are copied
-        /// one by one (not EditorUtility.CopySerialized) so that nothing ties the copy to the user's light.
+        /// nothing on a copy (it has no lightmap in this scene), so every copy is realtime. The Light's properties are
+        /// copied one by one (not EditorUtility.CopySerialized, which would also bring its bake output); URP's
+        /// per-light component is copied whole (<see cref="CaptureLights.CopyPipelineData"/>).
         /// </summary>
         void CopySceneLights(GameObject target)
         {
@@ -128,6 +162,7 @@ namespace NerfDatasetCreator.Editor.Capture
                 try
                 {
                     CopyLight(light, go.GetComponent<Light>());
+                    CaptureLights.CopyPipelineData(light, go.GetComponent<Light>());
                 }
                 catch (Exception e)
                 {
@@ -247,6 +282,7 @@ namespace NerfDatasetCreator.Editor.Capture
 
         public void Dispose()
         {
+            UnpinLighting();
             if (Camera != null) Camera.targetTexture = null;
             // As PreviewRenderUtility does: close the scene (which destroys its objects), then make sure.
             if (_scene.IsValid()) EditorSceneManager.ClosePreviewScene(_scene);

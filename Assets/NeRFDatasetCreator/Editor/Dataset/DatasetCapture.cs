@@ -221,7 +221,9 @@ namespace NerfDatasetCreator.Editor
         static CaptureOptions OptionsFor(DatasetSettings settings, Camera template)
         {
             var splits = DatasetSplits.All.Select(settings.Split).ToList();
-            var passes = CapturePasses.Color | CapturePasses.Mask;
+            // Alpha comes from the colour pair; the mask pass runs only for the mask images.
+            var passes = CapturePasses.Color;
+            if (splits.Any(s => s.Count > 0 && s.Mask)) passes |= CapturePasses.Mask;
             if (splits.Any(s => s.Count > 0 && s.Depth != ExtraOutput.None)) passes |= CapturePasses.Depth;
             if (splits.Any(s => s.Count > 0 && s.Normal != ExtraOutput.None)) passes |= CapturePasses.Normal;
             return new CaptureOptions

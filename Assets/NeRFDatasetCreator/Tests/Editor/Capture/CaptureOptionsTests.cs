@@ -31,10 +31,10 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         }
 
         [Test]
-        public void ColourAlwaysBringsTheMask()
+        public void ColourNoLongerBringsTheMaskItsAlphaComesFromMatting()
         {
             var options = new CaptureOptions { Passes = CapturePasses.Color | CapturePasses.Depth };
-            Assert.That(options.EffectivePasses, Is.EqualTo(CapturePasses.Color | CapturePasses.Mask | CapturePasses.Depth));
+            Assert.That(options.EffectivePasses, Is.EqualTo(CapturePasses.Color | CapturePasses.Depth));
         }
 
         [Test]
