@@ -11,7 +11,8 @@ namespace NerfDatasetCreator.Editor.Capture
     public sealed class CaptureOptions
     {
         public const int MaxSize = 8192;
-        public const int MaxSupersampling = 8;
+        /// <summary>Core's limit (<see cref="RawFrame.MaxSupersampling"/>): a larger k would render, then fail in the writer.</summary>
+        public const int MaxSupersampling = RawFrame.MaxSupersampling;
         public const int MaxReadbacksInFlight = 8;
 
         /// <summary>Output image width in pixels (the written PNG's width, before supersampling).</summary>
