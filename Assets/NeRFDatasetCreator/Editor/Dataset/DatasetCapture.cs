@@ -76,6 +76,7 @@ namespace NerfDatasetCreator.Editor
         public static DatasetCaptureResult RunBlocking(PreparedCapture prepared, ICaptureProgress progress = null, string tool = "unity-editor")
         {
             if (!prepared.IsValid) return Refused(prepared.Problems);
+            if (ActiveCapture.IsRunning) return Busy();
             var unreadable = ReadSurface(prepared);
             if (unreadable != null) return unreadable;
             DatasetWriteSession session;
@@ -104,14 +105,18 @@ namespace NerfDatasetCreator.Editor
 
         /// <summary>
         /// Starts the capture on editor updates (the editor stays usable; progress and Cancel in Background Tasks).
-        /// <paramref name="done"/> runs on the main thread with the result. Returns the session (its Cancel() stops the
-        /// run), or null when the capture could not start — <paramref name="done"/> has then already been called.
+        /// <paramref name="done"/> runs on the main thread with the result, which is also logged to the Console (the
+        /// run may outlive the window that started it, and Play mode, a script reload or quitting end it from inside
+        /// that editor event: the log then says why and where the partial files are). Returns the session (its
+        /// Cancel() stops the run), or null when the capture could not start — <paramref name="done"/> has then
+        /// already been called.
         /// </summary>
         public static CaptureSession StartInBackground(PreparedCapture prepared, Action<DatasetCaptureResult> done, string tool = "unity-editor")
         {
-            var refused = prepared.IsValid ? ReadSurface(prepared) : Refused(prepared.Problems);
+            var refused = !prepared.IsValid ? Refused(prepared.Problems) : ActiveCapture.IsRunning ? Busy() : ReadSurface(prepared);
             if (refused != null)
             {
+                Log(refused);
                 done?.Invoke(refused);
                 return null;
             }
@@ -129,6 +134,7 @@ namespace NerfDatasetCreator.Editor
                         ? Finish(prepared, session, files, summary, tool)
                         : Failed(prepared, session, error, written.Written);
                     written.Dispose();
+                    Log(result);
                     done?.Invoke(result);
                 });
             }
@@ -136,9 +142,19 @@ namespace NerfDatasetCreator.Editor
             {
                 var written = consumer?.Written ?? 0;
                 consumer?.Dispose();
-                done?.Invoke(Failed(prepared, session, e, written));
+                var result = Failed(prepared, session, e, written);
+                Log(result);
+                done?.Invoke(result);
                 return null;
             }
+        }
+
+        /// <summary>A result in the Console: information, a warning after a cancel or interruption, else an error.</summary>
+        public static void Log(DatasetCaptureResult result)
+        {
+            if (result.Succeeded) Debug.Log(result.Message);
+            else if (result.Cancelled) Debug.LogWarning(result.Message);
+            else Debug.LogError(result.Message);
         }
 
         static DatasetCaptureResult Finish(PreparedCapture prepared, DatasetWriteSession session, ViewFileWriter files,
@@ -178,10 +194,17 @@ namespace NerfDatasetCreator.Editor
         static DatasetCaptureResult Failed(PreparedCapture prepared, DatasetWriteSession session, Exception error, int written)
         {
             var cancelled = error is OperationCanceledException;
-            var what = cancelled ? "The capture was cancelled after " + written + " written views." : "The capture failed: " + Describe(error);
+            var interruption = (error as CaptureCancelledException)?.Interruption;
+            var what = interruption != null ? "The capture was stopped after " + written + " written views because " + interruption + "."
+                : cancelled ? "The capture was cancelled after " + written + " written views."
+                : "The capture failed: " + Describe(error);
             var where = session == null ? "" : " " + session.DescribeAbandoned();
             return new DatasetCaptureResult(false, cancelled, null, session?.PartialFolder, "NeRF Dataset Creator: " + what + where, written, 0);
         }
+
+        /// <summary>A second capture while one runs: refused before anything (a working folder) is created.</summary>
+        static DatasetCaptureResult Busy() => new DatasetCaptureResult(false, false, null, null,
+            "NeRF Dataset Creator: nothing was captured — " + ActiveCapture.BusyMessage, 0, 0);
 
         static DatasetCaptureResult Refused(IEnumerable<ValidationProblem> problems) => new DatasetCaptureResult(false, false, null, null,
             "NeRF Dataset Creator: nothing was captured —\n" + string.Join("\n", problems.Select(p => "  " + p)), 0, 0);
