@@ -86,7 +86,8 @@ namespace NerfDatasetCreator.Editor
 
         void OnUndoRedo()
         {
-            Store.SaveToProject();
+            // Raised for every undo and redo in the editor; only one that changed the plugin's settings is saved.
+            Store.SaveIfChanged();
             ResolveSceneObjects();
             checkNeeded = true;
             Repaint();
