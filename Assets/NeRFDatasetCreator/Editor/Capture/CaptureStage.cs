@@ -51,6 +51,7 @@ namespace NerfDatasetCreator.Editor.Capture
                     copy.name = source.name;
                     if (options.Isolation == CaptureIsolation.TargetOnly) copy.SetActive(true);
                     Neutralise(copy);
+                    LodZero.Apply(source, copy);
                 }
                 if (options.Isolation == CaptureIsolation.TargetOnly && options.CopySceneLights)
                     CopySceneLights(target);
