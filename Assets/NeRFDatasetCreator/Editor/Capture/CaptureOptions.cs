@@ -73,7 +73,9 @@ namespace NerfDatasetCreator.Editor.Capture
                 ValidationProblem.OutsideRange("capture.supersampling", Supersampling, 1, MaxSupersampling),
                 ValidationProblem.OutsideRange("capture.readbacksInFlight", ReadbacksInFlight, 1, MaxReadbacksInFlight),
             };
-            if (TemplateCamera == null)
+            if (TemplateCamera != null)
+                problems.Add(TemplateFraming.Problem(TemplateCamera, Width, Height, TemplateCamera.name));
+            else
             {
                 problems.Add(ValidationProblem.OutsideRange("capture.verticalFieldOfViewDegrees", VerticalFieldOfViewDegrees, 0.01, 179.0, "degrees"));
                 problems.Add(ValidationProblem.OutsideRange("capture.nearClip", NearClip, 1e-5, 1e6));

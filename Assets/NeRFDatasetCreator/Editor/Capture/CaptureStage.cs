@@ -233,6 +233,9 @@ namespace NerfDatasetCreator.Editor.Capture
             // Whatever the template says, these are what the dataset needs.
             camera.enabled = false;
             camera.usePhysicalProperties = false; // fieldOfView is then exactly the vertical FOV: no gate fit, no lens shift
+            // A physical template's framing at W × H, reproduced by that plain vertical FOV (refused where it cannot be).
+            if (options.TemplateCamera != null)
+                camera.fieldOfView = (float)TemplateFraming.VerticalFieldOfView(options.TemplateCamera, options.Width, options.Height);
             // CopyFrom also brings the template's projection mode and viewport rect: an orthographic template or a
             // split-screen rect would render something other than the pinhole images the transforms describe.
             camera.orthographic = false;

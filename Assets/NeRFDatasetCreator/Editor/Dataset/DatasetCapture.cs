@@ -38,13 +38,20 @@ namespace NerfDatasetCreator.Editor
             if (settings == null) throw new ArgumentNullException(nameof(settings));
             settings = settings.Clone();
             var problems = new List<ValidationProblem>();
+            var extraWarnings = new List<ValidationProblem>();
             var template = FindTemplateCamera(settings.Camera.CopyFromCamera, problems);
             if (template != null)
             {
-                // The written intrinsics must be those of the camera that renders.
-                settings.Camera.VerticalFovDegrees = template.fieldOfView;
+                // The written intrinsics must be those of the camera that renders: a physical template's framing at
+                // this W × H (gate fit), or a refusal when a pinhole cannot reproduce it.
+                var framing = TemplateFraming.Problem(template, settings.Width, settings.Height, settings.Camera.CopyFromCamera);
+                if (framing != null) problems.Add(framing);
+                else if (settings.Width > 0 && settings.Height > 0)
+                    settings.Camera.VerticalFovDegrees = TemplateFraming.VerticalFieldOfView(template, settings.Width, settings.Height);
+                else settings.Camera.VerticalFovDegrees = template.fieldOfView;
                 settings.Camera.NearClip = template.nearClipPlane;
                 settings.Camera.FarClip = template.farClipPlane;
+                CheckCullingMask(template, target, settings.Camera.CopyFromCamera, problems, extraWarnings);
             }
             var options = OptionsFor(settings, template);
             try
@@ -68,7 +75,8 @@ namespace NerfDatasetCreator.Editor
             problems.AddRange(run.Problems);
             // The point cloud's meshes are read when a run starts (ReadSurface), not here: the window calls Prepare as
             // the user types, and copying a large model's arrays each time would make the editor stutter.
-            var warnings = run.IsValid ? run.FullPlan.Warnings : (IReadOnlyList<ValidationProblem>)Array.Empty<ValidationProblem>();
+            var warnings = new List<ValidationProblem>(run.IsValid ? run.FullPlan.Warnings : Array.Empty<ValidationProblem>());
+            warnings.AddRange(extraWarnings);
             return new PreparedCapture(run, target, options, problems, warnings);
         }
 
@@ -248,6 +256,19 @@ namespace NerfDatasetCreator.Editor
                 FarClip = settings.Camera.FarClip,
                 TemplateCamera = template,
             };
+        }
+
+        /// <summary>
+        /// A template camera whose culling mask leaves out layers of the target's renderers: a warning when some would
+        /// be missing from every image, an error when all would (Core's <see cref="CullingMaskCheck"/>).
+        /// </summary>
+        static void CheckCullingMask(Camera template, GameObject target, string cameraName, List<ValidationProblem> errors, List<ValidationProblem> warnings)
+        {
+            if (target == null) return;
+            var layers = TargetMeshes.Of(target).Select(pair => pair.Key.gameObject.layer).ToList();
+            if (layers.Count == 0) return;
+            var problem = CullingMaskCheck.Check(template.cullingMask, layers, LayerMask.LayerToName, cameraName, out var isError);
+            if (problem != null) (isError ? errors : warnings).Add(problem);
         }
 
         /// <summary>The scene camera named by the settings (hierarchy path or name), or null for the built-in defaults.</summary>
