@@ -75,7 +75,7 @@ namespace NerfDatasetCreator.Editor.Capture
                 ended = true;
                 EditorApplication.update -= tick;
                 session.Dispose();
-                // A cancel through session.Cancel() (the window's button, entering Play mode) is a cancel, not a failure.
+                // A cancel (the window's button, Background Tasks, or Play mode / a reload / quitting) is a cancel, not a failure.
                 progress.FinalStatus = error == null ? Progress.Status.Succeeded
                     : error is OperationCanceledException ? Progress.Status.Canceled : Progress.Status.Failed;
                 progress.Close();
