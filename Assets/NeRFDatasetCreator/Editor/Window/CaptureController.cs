@@ -11,7 +11,7 @@ namespace NerfDatasetCreator.Editor
     /// <see cref="ActiveCapture"/>'s, so a window closed and reopened mid-run attaches to it (progress, Cancel) instead
     /// of starting a second one, and the last result is shared, so a reopened window shows how a run ended while no
     /// window was open. That result is also kept in SessionState, which outlives domain reloads (UnityCsReference
-    /// 2022.3 Editor/Mono/EditorGUIUtility.bindings.cs:190-214, 6000.0 :192-216): after Play mode or a script reload
+    /// 2022.3 Editor/Mono/EditorGUIUtility.bindings.cs:190-212, 6000.0 :192-215): after Play mode or a script reload
     /// stopped a run, the window still says why and where its partial files are, even if the Console was cleared.
     /// </summary>
     sealed class CaptureController
