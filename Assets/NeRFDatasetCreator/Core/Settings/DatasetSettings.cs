@@ -17,7 +17,8 @@ namespace NerfDatasetCreator
         public const int MinSize = 8;
         public const int MaxSize = 8192;
         public const int MinSupersampling = 1;
-        public const int MaxSupersampling = 4;
+        /// <summary>The one supersampling limit: the writer's (<see cref="RawFrame.MaxSupersampling"/>), so nothing the settings allow can fail there.</summary>
+        public const int MaxSupersampling = RawFrame.MaxSupersampling;
         public const int MaxViews = FormationMath.MaxViews;
 
         /// <summary>Bounds of <see cref="NormalisedTargetRadius"/> (output units).</summary>

@@ -11,7 +11,8 @@ namespace NerfDatasetCreator.Editor.Capture
     public sealed class CaptureOptions
     {
         public const int MaxSize = 8192;
-        public const int MaxSupersampling = 8;
+        /// <summary>Core's limit (<see cref="RawFrame.MaxSupersampling"/>): a larger k would render, then fail in the writer.</summary>
+        public const int MaxSupersampling = RawFrame.MaxSupersampling;
         public const int MaxReadbacksInFlight = 8;
 
         /// <summary>Output image width in pixels (the written PNG's width, before supersampling).</summary>
@@ -78,7 +79,9 @@ namespace NerfDatasetCreator.Editor.Capture
                 ValidationProblem.OutsideRange("capture.supersampling", Supersampling, 1, MaxSupersampling),
                 ValidationProblem.OutsideRange("capture.readbacksInFlight", ReadbacksInFlight, 1, MaxReadbacksInFlight),
             };
-            if (TemplateCamera == null)
+            if (TemplateCamera != null)
+                problems.Add(TemplateFraming.Problem(TemplateCamera, Width, Height, TemplateCamera.name));
+            else
             {
                 problems.Add(ValidationProblem.OutsideRange("capture.verticalFieldOfViewDegrees", VerticalFieldOfViewDegrees, 0.01, 179.0, "degrees"));
                 problems.Add(ValidationProblem.OutsideRange("capture.nearClip", NearClip, 1e-5, 1e6));

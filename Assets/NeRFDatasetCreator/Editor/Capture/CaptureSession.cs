@@ -29,10 +29,10 @@ namespace NerfDatasetCreator.Editor.Capture
         ViewReadback[] _readbacks;
         SynchronousReadback _synchronous;
         CapturePools _pools;
-        bool _reloadLocked;
-        bool _asyncShadersChanged;
-        bool _asyncShadersWereAllowed;
+        CaptureEditorState _editorState;
         bool _cancelRequested;
+        bool _stepping;
+        string _interruption;
         bool _finished;
         bool _disposed;
         int _nextView;
@@ -70,8 +70,11 @@ namespace NerfDatasetCreator.Editor.Capture
             CheckTarget(target, options.Isolation);
             if (EditorApplication.isPlayingOrWillChangePlaymode)
                 throw new CaptureException("Unity is in (or entering) Play mode. Stop Play mode, then capture.");
+            ActiveCapture.ThrowIfBusy();
 
             var session = new CaptureSession(target, poses, options, consumer, progress);
+            // From here until Dispose this is the editor's one capture, and Play mode, reloads and quitting end it.
+            ActiveCapture.Claim(session);
             try
             {
                 session.SetUp();
@@ -85,6 +88,9 @@ namespace NerfDatasetCreator.Editor.Capture
         }
 
         public int Total => _poses.Count;
+
+        /// <summary>The target's name when the capture began (for messages; the object may be gone since).</summary>
+        public string TargetName => _targetName;
         public int Delivered => _delivered;
         public bool IsFinished => _finished;
         public ThroughputMeter Meter { get; }
@@ -100,6 +106,34 @@ namespace NerfDatasetCreator.Editor.Capture
 
         /// <summary>Asks the run to stop; the next <see cref="Step"/> throws <see cref="CaptureCancelledException"/>.</summary>
         public void Cancel() => _cancelRequested = true;
+
+        /// <summary>
+        /// Set by a driver that steps the session across editor updates (<see cref="CaptureRunner.RunInBackground"/>):
+        /// called by <see cref="Interrupt"/> with the exception to end the run with; it must dispose the session.
+        /// </summary>
+        internal Action<CaptureCancelledException> Interrupted;
+
+        /// <summary>
+        /// Ends the run at once because the editor is about to enter Play mode, reload scripts or quit
+        /// (<see cref="ActiveCapture"/>). Between steps the session is disposed before this returns (through its
+        /// driver's <see cref="Interrupted"/>, which also reports the result). From inside <see cref="Step"/> (an event
+        /// raised while the blocking run draws its progress bar) it only marks the run: Step throws at its next check
+        /// and its caller disposes right after, still before control returns to the editor.
+        /// </summary>
+        internal void Interrupt(string reason)
+        {
+            if (_disposed) return;
+            if (_interruption == null) _interruption = reason;
+            if (_stepping) return;
+            try
+            {
+                Interrupted?.Invoke(new CaptureCancelledException(_interruption));
+            }
+            finally
+            {
+                Dispose(); // already done by the driver; without one, nothing else would
+            }
+        }
 
         /// <summary>The first pose that is not finite or whose rotation is not a unit quaternion, or null.</summary>
         static ValidationProblem PoseProblem(IReadOnlyList<UnityPose> poses)
@@ -133,15 +167,9 @@ namespace NerfDatasetCreator.Editor.Capture
 
         void SetUp()
         {
-            // A domain reload in the middle would orphan the preview scene and the render textures.
-            EditorApplication.LockReloadAssemblies();
-            _reloadLocked = true;
-
-            // With asynchronous shader compilation the editor draws not-yet-compiled variants with a cyan
-            // placeholder: the first views of a capture would record it. Compile synchronously instead.
-            _asyncShadersWereAllowed = ShaderUtil.allowAsyncCompilation;
-            ShaderUtil.allowAsyncCompilation = false;
-            _asyncShadersChanged = true;
+            _editorState = new CaptureEditorState();
+            _editorState.LockReload();
+            _editorState.CompileShadersSynchronously();
 
             _stage = new CaptureStage(_target, _options);
             _dataPasses = new DataPassRenderer(_stage.DataPassRenderers, _stage.Camera.cullingMask);
@@ -170,10 +198,15 @@ namespace NerfDatasetCreator.Editor.Capture
         /// </summary>
         public bool Step(double budgetSeconds)
         {
-            if (_disposed) throw new ObjectDisposedException(nameof(CaptureSession));
+            if (_disposed)
+            {
+                if (_interruption != null) throw new CaptureCancelledException(_interruption);
+                throw new ObjectDisposedException(nameof(CaptureSession));
+            }
             if (_finished) return false;
             var sliceStart = _clock.Elapsed.TotalSeconds;
             var previousActive = RenderTexture.active;
+            _stepping = true;
             try
             {
                 do
@@ -196,6 +229,7 @@ namespace NerfDatasetCreator.Editor.Capture
             }
             finally
             {
+                _stepping = false;
                 RenderTexture.active = previousActive;
             }
             if (_finished) _clock.Stop();
@@ -204,6 +238,7 @@ namespace NerfDatasetCreator.Editor.Capture
 
         void ThrowIfCancelledOrBroken()
         {
+            if (_interruption != null) throw new CaptureCancelledException(_interruption);
             if (_cancelRequested || (_progress != null && _progress.CancelRequested))
                 throw new CaptureCancelledException();
             if (_options.Isolation == CaptureIsolation.TargetOnly && _target == null)
@@ -333,33 +368,23 @@ namespace NerfDatasetCreator.Editor.Capture
             if (_disposed) return;
             _disposed = true;
             if (!_finished) Try(_consumer.Abort);
-            var anyPending = false;
             if (_readbacks != null)
                 foreach (var readback in _readbacks)
-                {
-                    if (readback == null || !readback.IsPending) continue;
-                    anyPending = true;
-                    readback.Forget();
-                }
-            // Let the GPU finish reading the textures before they are destroyed (stalls, but only after a cancel or error).
-            if (anyPending) Try(UnityEngine.Rendering.AsyncGPUReadback.WaitAllRequests);
+                    readback?.Forget();
+            // Let the GPU finish reading the textures before they are destroyed. Unconditionally: CompleteInto clears
+            // IsPending before it waits, so after an exception part-way through a view its other requests may still be
+            // in flight. WaitAllRequests (UnityCsReference 2022.3 Runtime/Export/Graphics/AsyncGPUReadback.bindings.cs:126,
+            // 6000.0 :132) returns at once when none is.
+            if (UsesAsyncReadback) Try(UnityEngine.Rendering.AsyncGPUReadback.WaitAllRequests);
             if (_targets != null)
                 foreach (var set in _targets)
                     if (set != null) Try(set.Dispose);
             if (_synchronous != null) Try(_synchronous.Dispose);
             if (_stage != null) Try(_stage.Dispose);
             if (_dataPasses != null) Try(_dataPasses.Dispose);
-            if (_asyncShadersChanged)
-            {
-                _asyncShadersChanged = false;
-                ShaderUtil.allowAsyncCompilation = _asyncShadersWereAllowed;
-            }
-            if (_reloadLocked)
-            {
-                _reloadLocked = false;
-                EditorApplication.UnlockReloadAssemblies();
-            }
+            _editorState?.Restore();
             _clock.Stop();
+            ActiveCapture.Release(this);
         }
 
         static void Try(Action action)

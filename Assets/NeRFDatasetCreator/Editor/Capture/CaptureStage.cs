@@ -58,6 +58,7 @@ namespace NerfDatasetCreator.Editor.Capture
                     copies.Add(new KeyValuePair<GameObject, GameObject>(source, copy));
                     if (options.Isolation == CaptureIsolation.TargetOnly) copy.SetActive(true);
                     Neutralise(copy);
+                    LodZero.Apply(source, copy);
                 }
                 if (options.Isolation == CaptureIsolation.TargetOnly && options.CopySceneLights)
                     CopySceneLights(target);
@@ -200,13 +201,10 @@ namespace NerfDatasetCreator.Editor.Capture
 
         void CollectRenderers()
         {
-            var otherLods = ForceLodZero();
+            // Renderers beyond LOD 0 are already disabled on the copies (LodZero.Apply), so the data passes skip them.
             foreach (var renderer in _root.GetComponentsInChildren<Renderer>(true))
             {
-                if (renderer is MeshRenderer || renderer is SkinnedMeshRenderer)
-                {
-                    if (!otherLods.Contains(renderer)) _dataPassRenderers.Add(renderer);
-                }
+                if (renderer is MeshRenderer || renderer is SkinnedMeshRenderer) _dataPassRenderers.Add(renderer);
                 else UnsupportedRendererCount++;
             }
             // Terrains draw without a Renderer. Recognised by type name: UnityEngine.Terrain lives in the Terrain
@@ -217,28 +215,6 @@ namespace NerfDatasetCreator.Editor.Capture
         }
 
         const string TerrainTypeName = "UnityEngine.Terrain";
-
-        /// <summary>
-        /// Pins every active LOD group of the copies to its most detailed level for the whole run, so that the colour
-        /// pass (where the camera would pick a level by screen size) and the data passes (which draw renderers
-        /// directly) show the same geometry in every view. Returns the renderers that belong only to other levels.
-        /// </summary>
-        HashSet<Renderer> ForceLodZero()
-        {
-            var otherLevels = new HashSet<Renderer>();
-            var lodZero = new HashSet<Renderer>();
-            foreach (var group in _root.GetComponentsInChildren<LODGroup>(true))
-            {
-                if (group == null || !group.enabled) continue;
-                group.ForceLOD(0);
-                var lods = group.GetLODs();
-                for (var level = 0; level < lods.Length; level++)
-                    foreach (var renderer in lods[level].renderers)
-                        if (renderer != null) (level == 0 ? lodZero : otherLevels).Add(renderer);
-            }
-            otherLevels.ExceptWith(lodZero);
-            return otherLevels;
-        }
 
         static void ConfigureCamera(Camera camera, CaptureOptions options, Scene scene)
         {
@@ -257,6 +233,9 @@ namespace NerfDatasetCreator.Editor.Capture
             // Whatever the template says, these are what the dataset needs.
             camera.enabled = false;
             camera.usePhysicalProperties = false; // fieldOfView is then exactly the vertical FOV: no gate fit, no lens shift
+            // A physical template's framing at W × H, reproduced by that plain vertical FOV (refused where it cannot be).
+            if (options.TemplateCamera != null)
+                camera.fieldOfView = (float)TemplateFraming.VerticalFieldOfView(options.TemplateCamera, options.Width, options.Height);
             // CopyFrom also brings the template's projection mode and viewport rect: an orthographic template or a
             // split-screen rect would render something other than the pinhole images the transforms describe.
             camera.orthographic = false;

@@ -71,8 +71,8 @@ namespace NerfDatasetCreator.Editor.Capture
 
         /// <summary>
         /// What a camera's culling would keep of the copies, except the frustum (the GPU clips that): enabled and
-        /// active, not shadows-only or forced off, on a layer the camera renders. LOD levels other than the forced
-        /// LOD 0 were already left out by <see cref="CaptureStage"/>.
+        /// active, not shadows-only or forced off, on a layer the camera renders. Renderers beyond LOD 0 are
+        /// disabled on the copies by <see cref="LodZero"/>, so this leaves them out too.
         /// </summary>
         static bool DrawnByACamera(Renderer renderer, int cullingMask) =>
             renderer != null && renderer.enabled && renderer.gameObject.activeInHierarchy && !renderer.forceRenderingOff &&

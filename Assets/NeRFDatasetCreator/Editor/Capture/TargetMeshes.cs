@@ -6,17 +6,18 @@ namespace NerfDatasetCreator.Editor.Capture
     /// <summary>
     /// The meshes a capture of a target renders — one rule for checking the target, measuring it and sampling its
     /// surface: enabled MeshRenderers with a MeshFilter mesh and SkinnedMeshRenderers with a shared mesh, on the target
-    /// and its children that are active below it (the target's own active state is ignored: its copy is activated).
-    /// Particles, lines, sprites and terrains are not among them.
+    /// and its children that are active below it (the target's own active state is ignored: its copy is activated),
+    /// at LOD 0 only (<see cref="LodZero"/>). Particles, lines, sprites and terrains are not among them.
     /// </summary>
     static class TargetMeshes
     {
         public static IEnumerable<KeyValuePair<Renderer, Mesh>> Of(GameObject target)
         {
             if (target == null) yield break;
+            var beyondLod0 = LodZero.BeyondLod0(target);
             foreach (var renderer in target.GetComponentsInChildren<Renderer>(true))
             {
-                if (!renderer.enabled || !ActiveBelow(renderer.transform, target.transform)) continue;
+                if (!renderer.enabled || !ActiveBelow(renderer.transform, target.transform) || beyondLod0.Contains(renderer)) continue;
                 Mesh mesh = null;
                 if (renderer is SkinnedMeshRenderer skinned) mesh = skinned.sharedMesh;
                 else if (renderer is MeshRenderer)
