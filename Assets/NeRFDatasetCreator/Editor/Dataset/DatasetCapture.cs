@@ -87,6 +87,7 @@ namespace NerfDatasetCreator.Editor
             {
                 return Failed(prepared, null, e, 0);
             }
+            LogEarlierRuns(session);
             var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode);
             using (var consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files)))
             {
@@ -120,6 +121,7 @@ namespace NerfDatasetCreator.Editor
             try
             {
                 session = prepared.Run.Begin();
+                LogEarlierRuns(session);
                 var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode);
                 consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files));
                 var written = consumer;
@@ -181,6 +183,14 @@ namespace NerfDatasetCreator.Editor
             var what = cancelled ? "The capture was cancelled after " + written + " written views." : "The capture failed: " + Describe(error);
             var where = session == null ? "" : " " + session.DescribeAbandoned();
             return new DatasetCaptureResult(false, cancelled, null, session?.PartialFolder, "NeRF Dataset Creator: " + what + where, written, 0);
+        }
+
+        /// <summary>What Begin found of earlier runs on this output (Core's Recovery): interrupted ones it finished or rolled back, leftovers.</summary>
+        static void LogEarlierRuns(DatasetWriteSession session)
+        {
+            foreach (var note in session.Recovered) Debug.Log("NeRF Dataset Creator: " + note);
+            foreach (var leftover in session.Leftovers)
+                Debug.LogWarning("NeRF Dataset Creator: left over: " + leftover + " Delete it, or run `nerf-dataset clean " + Path.GetDirectoryName(session.FinalFolder) + "`.");
         }
 
         static DatasetCaptureResult Refused(IEnumerable<ValidationProblem> problems) => new DatasetCaptureResult(false, false, null, null,
