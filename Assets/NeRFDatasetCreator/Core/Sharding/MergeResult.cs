@@ -7,8 +7,9 @@ namespace NerfDatasetCreator
     public sealed class MergeResult
     {
         public MergeResult(string outputFolder, IReadOnlyList<ValidationProblem> problems, IReadOnlyList<string> warnings,
-            IReadOnlyDictionary<string, int> framesPerSplit, int filesTransferred)
+            IReadOnlyDictionary<string, int> framesPerSplit, int filesTransferred, IReadOnlyList<string> notes = null)
         {
+            Notes = notes ?? new string[0];
             OutputFolder = outputFolder;
             Problems = problems;
             Warnings = warnings;
@@ -27,12 +28,16 @@ namespace NerfDatasetCreator
         /// <summary>Things left behind in the shard folders that do not stop the merge (stray files, per-shard extras).</summary>
         public IReadOnlyList<string> Warnings { get; }
 
+        /// <summary>What merge found of earlier runs on the output: interrupted merges it finished or rolled back, leftover working folders.</summary>
+        public IReadOnlyList<string> Notes { get; }
+
         public IReadOnlyDictionary<string, int> FramesPerSplit { get; }
         public int FilesTransferred { get; }
 
         /// <summary>The report as lines for a console or a log: problems first, then warnings, then a summary.</summary>
         public IEnumerable<string> Lines()
         {
+            foreach (var n in Notes) yield return "note: " + n;
             foreach (var p in Problems) yield return "error: " + p;
             foreach (var w in Warnings) yield return "warning: " + w;
             yield return Succeeded
