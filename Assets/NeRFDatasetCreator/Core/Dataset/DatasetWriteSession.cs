@@ -38,7 +38,7 @@ namespace NerfDatasetCreator
         /// What <see cref="Begin"/> found of earlier runs on this output: one sentence per interrupted operation it
         /// finished or rolled back (<see cref="Recovery"/>).
         /// </summary>
-        public IReadOnlyList<string> Recovered { get; private set; } = Array.Empty<string>();
+        public IReadOnlyList<RecoveryNote> Recovered { get; private set; } = Array.Empty<RecoveryNote>();
 
         /// <summary>Working folders of earlier runs on this output that are still there (reported, removed by <c>nerf-dataset clean</c>).</summary>
         public IReadOnlyList<Leftover> Leftovers { get; private set; } = Array.Empty<Leftover>();
@@ -50,7 +50,7 @@ namespace NerfDatasetCreator
         /// </summary>
         public static DatasetWriteSession Begin(string datasetFolder, OverwritePolicy policy, string projectRoot = null, DateTime? now = null)
         {
-            var recovered = IsUsablePath(datasetFolder) ? Recovery.Run(datasetFolder) : Array.Empty<string>();
+            var recovered = IsUsablePath(datasetFolder) ? Recovery.Run(datasetFolder) : Array.Empty<RecoveryNote>();
             var problems = SafeOutput.CheckOutputFolder(datasetFolder, projectRoot, policy);
             if (problems.Count > 0) throw new InvalidParameterException(problems);
             var full = Path.GetFullPath(datasetFolder).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);

@@ -27,7 +27,7 @@ namespace NerfDatasetCreator
             var result = new Result();
             foreach (var output in Outputs(root))
             {
-                if (!dryRun) result.Recovered.AddRange(Recovery.Run(output));
+                if (!dryRun) result.Recovered.AddRange(Recovery.Run(output).Select(n => n.Text));
                 foreach (var leftover in Leftover.Of(output))
                 {
                     if (!leftover.Removable)

@@ -14,10 +14,10 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class Recovery
     {
-        public static IReadOnlyList<string> Run(string output)
+        public static IReadOnlyList<RecoveryNote> Run(string output)
         {
             output = Path.GetFullPath(output).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
-            var notes = new List<string>();
+            var notes = new List<RecoveryNote>();
             var own = Directory.Exists(output) ? OperationJournal.Load(output) : null;
             if (own != null && own.State == OperationJournal.Committing && WorkingFolders.SamePath(own.Output, output))
             {
@@ -26,13 +26,19 @@ namespace NerfDatasetCreator
                 var removed = own.Aside != null && Directory.Exists(own.Aside);
                 if (removed) FileOps.DeleteDirectory(own.Aside);
                 OperationJournal.Delete(output);
-                notes.Add("finished the interrupted " + own.Operation + " of " + output + ": it was complete and in place" +
-                          (removed ? "; removed the dataset it replaced (" + own.Aside + ")." : "."));
+                notes.Add(new RecoveryNote(own.Operation, true, "finished the interrupted " + own.Operation + " of " + output + ": it was complete and in place" +
+                          (removed ? "; removed the dataset it replaced (" + own.Aside + ")." : ".")));
             }
 
             foreach (var working in WorkingFolders.Of(output))
             {
                 var journal = OperationJournal.Load(working);
+                if (journal == null && HoldsNothing(working))
+                {
+                    // Killed between creating the folder and writing its journal: nothing to finish, nothing to keep.
+                    FileOps.DeleteDirectory(working);
+                    continue;
+                }
                 if (journal == null || !WorkingFolders.SamePath(journal.Output, output)) continue;
                 // A journal only ever names this output's own replaced folder: never act on a path it did not create.
                 if (journal.Aside != null && !IsAsideOf(journal.Aside, output)) journal.Aside = null;
@@ -51,16 +57,22 @@ namespace NerfDatasetCreator
                 if (aside != null)
                 {
                     FileOps.MoveDirectory(aside, output);
-                    notes.Add("rolled back an interrupted replace of " + output + ": restored the previous dataset from " + aside + ".");
+                    notes.Add(new RecoveryNote("write", false, "rolled back an interrupted replace of " + output + ": restored the previous dataset from " + aside + "."));
                 }
             }
             return notes;
         }
 
+        /// <summary>True when <paramref name="folder"/> has no file but a half-written journal (a working folder killed at birth).</summary>
+        static bool HoldsNothing(string folder) =>
+            WorkingFolders.KindOf(Path.GetFileName(folder)) != "replaced" &&
+            Directory.EnumerateFiles(folder, "*", SearchOption.AllDirectories)
+                .All(f => Path.GetFileName(f).StartsWith(OperationJournal.FileName, System.StringComparison.Ordinal));
+
         static bool IsAsideOf(string aside, string output) =>
             WorkingFolders.KindOf(Path.GetFileName(aside)) == "replaced" && WorkingFolders.SamePath(WorkingFolders.OutputOf(aside), output);
 
-        static void Write(string working, OperationJournal journal, string output, List<string> notes)
+        static void Write(string working, OperationJournal journal, string output, List<RecoveryNote> notes)
         {
             if (journal.State != OperationJournal.Committing) return; // unfinished files: a leftover, reported, never deleted silently
             var asideExists = journal.Aside != null && Directory.Exists(journal.Aside);
@@ -69,7 +81,7 @@ namespace NerfDatasetCreator
                 // Killed before the old dataset was moved aside: finish only if it is still provably ours.
                 if (asideExists || journal.Aside == null || OwnDataset.WhyNotOurs(output) != null)
                 {
-                    notes.Add("could not finish the interrupted write of " + output + ": something else is under that name now; the complete new dataset stays in " + working + ".");
+                    notes.Add(new RecoveryNote("write", false, "could not finish the interrupted write of " + output + ": something else is under that name now; the complete new dataset stays in " + working + "."));
                     return;
                 }
                 FileOps.MoveDirectory(output, journal.Aside);
@@ -78,17 +90,17 @@ namespace NerfDatasetCreator
             FileOps.MoveDirectory(working, output);
             if (asideExists) FileOps.DeleteDirectory(journal.Aside);
             OperationJournal.Delete(output);
-            notes.Add("finished the interrupted write of " + output + ": moved the complete dataset from " + working + " into place" +
-                      (asideExists ? " and removed the dataset it replaced." : "."));
+            notes.Add(new RecoveryNote("write", true, "finished the interrupted write of " + output + ": moved the complete dataset from " + working + " into place" +
+                      (asideExists ? " and removed the dataset it replaced." : ".")));
         }
 
-        static void Merge(string working, OperationJournal journal, string output, List<string> notes)
+        static void Merge(string working, OperationJournal journal, string output, List<RecoveryNote> notes)
         {
             if (journal.State == OperationJournal.Committing && !Directory.Exists(output) && !File.Exists(output))
             {
                 FileOps.MoveDirectory(working, output);
                 OperationJournal.Delete(output);
-                notes.Add("finished the interrupted merge into " + output + ": it was complete in " + working + " and is now in place.");
+                notes.Add(new RecoveryNote("merge", true, "finished the interrupted merge into " + output + ": it was complete in " + working + " and is now in place."));
                 return;
             }
             // Roll back: every file the merge took from a shard goes back; copies are simply dropped with the folder.
@@ -103,11 +115,11 @@ namespace NerfDatasetCreator
                 returned++;
             }
             FileOps.DeleteDirectory(working);
-            notes.Add("rolled back the interrupted merge into " + output + ": " +
-                      (returned > 0 ? "moved " + returned + " file(s) back into the shard folders and " : "") + "removed " + working + ".");
+            notes.Add(new RecoveryNote("merge", false, "rolled back the interrupted merge into " + output + ": " +
+                      (returned > 0 ? "moved " + returned + " file(s) back into the shard folders and " : "") + "removed " + working + "."));
         }
 
-        static void Convert(string working, OperationJournal journal, string output, List<string> notes)
+        static void Convert(string working, OperationJournal journal, string output, List<RecoveryNote> notes)
         {
             if (journal.State == OperationJournal.Committing)
             {
@@ -129,17 +141,18 @@ namespace NerfDatasetCreator
                 }
                 if (conflicts.Count > 0)
                 {
-                    notes.Add("could not finish the interrupted convert into " + output + ": " + conflicts[0] + " appeared meanwhile; the remaining files stay in " + working + ".");
+                    notes.Add(new RecoveryNote("convert", false, "could not finish the interrupted convert into " + output + ": " + conflicts[0] + " appeared meanwhile; the remaining files stay in " + working + "."));
                     return;
                 }
                 FileOps.DeleteDirectory(working);
-                notes.Add("finished the interrupted convert into " + output + ": moved its remaining files into place.");
+                notes.Add(new RecoveryNote("convert", true, "finished the interrupted convert into " + output + ": moved its remaining files into place."));
                 return;
             }
             FileOps.DeleteDirectory(working);
             if (journal.CreatedOutput && Directory.Exists(output) && !Directory.EnumerateFileSystemEntries(output).Any())
                 FileOps.DeleteDirectory(output);
-            notes.Add("rolled back the interrupted convert into " + output + ": removed its partial files (" + working + ").");
+            notes.Add(new RecoveryNote("convert", false, "rolled back the interrupted convert into " + output + ": removed its partial files (" + working + ")."));
         }
     }
 }
+

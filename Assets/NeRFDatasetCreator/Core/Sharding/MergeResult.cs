@@ -17,6 +17,27 @@ namespace NerfDatasetCreator
             FilesTransferred = filesTransferred;
         }
 
+        /// <summary>
+        /// The result when this merge found an interrupted merge into the same output complete in its working folder and
+        /// finished it (<see cref="Recovery"/>): the frames are counted from the merged transforms files.
+        /// </summary>
+        public static MergeResult FinishedEarlier(string output, IReadOnlyList<string> warnings, IReadOnlyList<string> notes)
+        {
+            var perSplit = new Dictionary<string, int>();
+            foreach (var split in ViewCounts.SplitNames)
+            {
+                try
+                {
+                    if (VerbatimJson.Parse(FileOps.ReadText(System.IO.Path.Combine(output, DatasetLayout.TransformsFileName(split))))["frames"] is Newtonsoft.Json.Linq.JArray frames)
+                        perSplit[split] = frames.Count;
+                }
+                catch (System.Exception e) when (e is System.IO.IOException || e is System.UnauthorizedAccessException || e is Newtonsoft.Json.JsonException) { }
+            }
+            return new MergeResult(output, new ValidationProblem[0], warnings, perSplit, 0, notes) { _finishedEarlier = true };
+        }
+
+        bool _finishedEarlier;
+
         public bool Succeeded => Problems.Count == 0;
 
         /// <summary>The merged dataset's folder; it exists only when <see cref="Succeeded"/>.</summary>
@@ -40,6 +61,11 @@ namespace NerfDatasetCreator
             foreach (var n in Notes) yield return "note: " + n;
             foreach (var p in Problems) yield return "error: " + p;
             foreach (var w in Warnings) yield return "warning: " + w;
+            if (_finishedEarlier)
+            {
+                yield return "merged " + string.Join(", ", FramesPerSplit.Select(kv => kv.Value + " " + kv.Key)) + " frames into " + OutputFolder + " (the interrupted earlier merge, now finished)";
+                yield break;
+            }
             yield return Succeeded
                 ? "merged " + string.Join(", ", FramesPerSplit.Select(kv => kv.Value + " " + kv.Key)) + " frames (" + FilesTransferred + " files) into " + OutputFolder
                 : "merge refused: " + Problems.Count + " problem(s); no file was changed.";

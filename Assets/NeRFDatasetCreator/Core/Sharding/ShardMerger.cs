@@ -42,7 +42,10 @@ namespace NerfDatasetCreator
             var length = PathLimits.Check(output, "output", MergingSuffix);
             if (length != null) return Fail(length, warnings);
             // An earlier merge into this output that was killed is finished or rolled back first (its moved files go back).
-            var notes = new List<string>(Recovery.Run(output));
+            var recovered = Recovery.Run(output);
+            var notes = recovered.Select(n => n.Text).ToList();
+            if (recovered.Any(n => n.Operation == "merge" && n.Finished) && Directory.Exists(output))
+                return MergeResult.FinishedEarlier(output, warnings, notes);
             if (Directory.Exists(output) || File.Exists(output))
                 return Fail(new ValidationProblem("output", output, "already exists; merge never writes into or over an existing folder.",
                     "Choose a new folder name, or move the existing one away first."), warnings, notes);

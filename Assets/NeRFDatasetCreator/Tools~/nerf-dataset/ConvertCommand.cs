@@ -23,7 +23,13 @@ namespace NerfDatasetCreator.Tool
                 if (Directory.Exists(datasetFolder))
                 {
                     var output = DatasetConverter.OutputFolder(Path.GetFullPath(datasetFolder), target, outputFolder);
-                    foreach (var note in Recovery.Run(output)) stderr.WriteLine("note: " + note);
+                    var recovered = Recovery.Run(output);
+                    foreach (var note in recovered) stderr.WriteLine("note: " + note);
+                    if (recovered.Any(n => n.Operation == "convert" && n.Finished))
+                    {
+                        stdout.WriteLine("converted " + Path.GetFullPath(datasetFolder) + " to " + ExportTargets.Name(target) + " into " + output + " (the interrupted earlier convert, now finished)");
+                        return Program.Success;
+                    }
                 }
                 result = DatasetConverter.Convert(datasetFolder, target, outputFolder);
             }
