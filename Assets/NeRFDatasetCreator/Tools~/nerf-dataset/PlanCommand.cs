@@ -64,7 +64,7 @@ namespace NerfDatasetCreator.Tool
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 stderr.WriteLine("error: " + e.Message);
-                stderr.WriteLine(session.DescribeAbandoned());
+                stderr.WriteLine("note: " + session.DescribeAbandoned());
                 return Program.Failure;
             }
 
