@@ -36,7 +36,7 @@ namespace NerfDatasetCreator
                     {
                         if (!block && text[i] == '\n') { line++; column = 1; break; }
                         if (text[i] == '\n') { line++; column = 0; }
-                        if (block && text[i] == '*' && i + 1 < text.Length && text[i + 1] == '/') { i++; column++; break; }
+                        if (block && text[i] == '*' && i + 1 < text.Length && text[i + 1] == '/') { i++; column += 2; break; }
                     }
                     continue;
                 }
