@@ -9,7 +9,9 @@ namespace NerfDatasetCreator
     /// (the '~' keeps Unity from importing it even under Assets), and only <see cref="Commit"/> moves it to the
     /// final name — so a cancelled or failed run never leaves a partial dataset under the final name, and
     /// <see cref="PartialFolder"/> says where its files are. An existing dataset is replaced only under
-    /// <see cref="OverwritePolicy.Replace"/>, and only after the new one is complete.
+    /// <see cref="OverwritePolicy.Replace"/>, and only after the new one is complete. The working folder holds a journal
+    /// (<see cref="OperationJournal"/>), so the next session on the same folder finishes or rolls back a run killed
+    /// while committing (<see cref="Recovery"/>); the capture and <c>nerf-dataset plan</c> both write through this class.
     /// </summary>
     public sealed class DatasetWriteSession
     {

@@ -10,7 +10,8 @@ namespace NerfDatasetCreator
     /// included) into another loader's format without touching the source. Default output locations:
     /// nerfstudio → <c>&lt;dir&gt;/transforms.json</c>; ngp → <c>&lt;dir&gt;/ngp/transforms.json</c>; colmap →
     /// <c>&lt;dir&gt;/colmap/</c> with <c>images/</c> (copies, flattened names) and <c>sparse/0/</c>. Nothing is ever
-    /// overwritten: every destination is checked before the first byte is written.
+    /// overwritten: every destination is checked before the first byte is written, and the files are written into a
+    /// working folder inside the output and moved into place only when all are complete (<see cref="StagedOutput"/>).
     /// </summary>
     public static class DatasetConverter
     {
