@@ -1,7 +1,6 @@
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using System.Text;
 
 namespace NerfDatasetCreator
 {
@@ -15,7 +14,8 @@ namespace NerfDatasetCreator
     {
         public const string FolderName = "camera_paths";
 
-        public static IReadOnlyList<string> Write(ExportScene scene, string outDir, ExportTarget target, ICollection<ValidationProblem> warnings)
+        /// <param name="staged">The convert's working output: files go there and are moved into place with the rest.</param>
+        public static IReadOnlyList<string> Write(ExportScene scene, string outDir, ExportTarget target, ICollection<ValidationProblem> warnings, StagedOutput staged)
         {
             var written = new List<string>();
             if (target != ExportTarget.Nerfstudio && target != ExportTarget.Ngp) return written;
@@ -29,13 +29,8 @@ namespace NerfDatasetCreator
                 var json = target == ExportTarget.Nerfstudio
                     ? NerfstudioCameraPath.Build(poses, scene.Intrinsics)
                     : NgpCameraPath.Build(poses, scene.Intrinsics);
-                Directory.CreateDirectory(folder);
                 var file = Path.Combine(folder, split + ".json");
-                using (var stream = new FileStream(file, FileMode.CreateNew, FileAccess.Write))
-                {
-                    var bytes = new UTF8Encoding(false).GetBytes(ExportJson.Serialise(json));
-                    stream.Write(bytes, 0, bytes.Length);
-                }
+                staged.WriteNewText(file, ExportJson.Serialise(json));
                 written.Add(file);
             }
             return written;

@@ -38,6 +38,12 @@ namespace NerfDatasetCreator
                     result.Command = ToolInvocation.HelpCommand;
                     return result;
                 }
+                if (arg == "--" + DryRunFlag)
+                {
+                    if (options.ContainsKey(DryRunFlag)) result.Errors.Add("--" + DryRunFlag + " is given twice.");
+                    options[DryRunFlag] = "";
+                    continue;
+                }
                 if (arg.StartsWith("--", StringComparison.Ordinal))
                 {
                     string name, value;
@@ -74,6 +80,7 @@ namespace NerfDatasetCreator
                 case ToolInvocation.ValidateCommand: Validate(result, options, positionals); break;
                 case ToolInvocation.MergeCommand: Merge(result, options, positionals); break;
                 case ToolInvocation.ConvertCommand: Convert(result, options, positionals); break;
+                case ToolInvocation.CleanCommand: Clean(result, options, positionals); break;
                 default:
                     result.Errors.Add("unknown command '" + command + "'.");
                     break;
@@ -138,6 +145,17 @@ namespace NerfDatasetCreator
                 if (string.IsNullOrWhiteSpace(output)) result.Errors.Add("--out is empty; leave it out to write into the dataset folder.");
                 else result.OutputFolder = output;
             }
+        }
+
+        /// <summary>The one option without a value.</summary>
+        const string DryRunFlag = "dry-run";
+
+        static void Clean(ToolInvocation result, Dictionary<string, string> options, List<string> positionals)
+        {
+            RefuseUnknownOptions(result, options, DryRunFlag);
+            if (positionals.Count != 1) result.Errors.Add("clean needs exactly one folder: the one holding the datasets (e.g. NeRFDatasets) or a dataset.");
+            else result.DatasetFolder = positionals[0];
+            result.DryRun = options.ContainsKey(DryRunFlag);
         }
 
         static void RefuseUnknownOptions(ToolInvocation result, Dictionary<string, string> options, params string[] known)

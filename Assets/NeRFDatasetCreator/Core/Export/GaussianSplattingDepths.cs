@@ -91,9 +91,9 @@ namespace NerfDatasetCreator
 
         /// <summary>
         /// Writes <c>depths/&lt;stem&gt;.png</c> for every frame and <c>sparse/0/depth_params.json</c> under
-        /// <paramref name="outDir"/> (never overwriting), reading each frame's depth PNG from the scene.
+        /// <paramref name="outDir"/> (staged with the rest of the convert, never overwriting), reading each frame's depth PNG from the scene.
         /// </summary>
-        public static void Write(ExportScene scene, IReadOnlyList<string> names, string outDir, ICollection<ValidationProblem> warnings)
+        public static void Write(ExportScene scene, IReadOnlyList<string> names, string outDir, ICollection<ValidationProblem> warnings, StagedOutput staged)
         {
             var unit = scene.DepthUnitScale;
             // Pass 1: the nearest surface of the whole dataset sets the one shared scale.
@@ -108,7 +108,6 @@ namespace NerfDatasetCreator
             var scale = nearestStep == int.MaxValue ? 1 : ScaleFor(nearestStep * unit);
 
             var folder = Path.Combine(outDir, FolderName);
-            Directory.CreateDirectory(folder);
             var parameters = new JObject();
             var missing = new List<string>();
             for (var i = 0; i < scene.Frames.Count; i++)
@@ -129,12 +128,11 @@ namespace NerfDatasetCreator
                     encoded = new ushort[steps.Length];
                     for (var p = 0; p < steps.Length; p++) encoded[p] = Encode(steps[p] * unit, scale);
                 }
-                WriteNew(Path.Combine(folder, Stem(names[i]) + ".png"), PngWriter.EncodeGray16(encoded, width, height));
+                staged.WriteNewBytes(Path.Combine(folder, Stem(names[i]) + ".png"), PngWriter.EncodeGray16(encoded, width, height));
                 parameters[Stem(names[i])] = new JObject { ["scale"] = frame.DepthPath == null ? 0.0 : scale, ["offset"] = 0.0 };
             }
             var paramsPath = Path.Combine(outDir, "sparse", "0", ParamsFileName);
-            Directory.CreateDirectory(Path.GetDirectoryName(paramsPath));
-            WriteNew(paramsPath, new System.Text.UTF8Encoding(false).GetBytes(ExportJson.Serialise(parameters)));
+            staged.WriteNewText(paramsPath, ExportJson.Serialise(parameters));
 
             if (missing.Count > 0)
                 warnings.Add(new ValidationProblem(ParamsFileName, missing.Count + " of " + scene.Frames.Count + " images",
@@ -148,12 +146,6 @@ namespace NerfDatasetCreator
                 warnings.Add(new ValidationProblem("depth", saturated + " pixels",
                     "hold the 16-bit depth PNG's largest value (65.535 output units, clamped at capture), so their inverse depth is only an upper bound.",
                     "Use a normalisation that keeps the scene within 65 output units (e.g. nerf-synthetic)."));
-        }
-
-        static void WriteNew(string path, byte[] bytes)
-        {
-            using (var file = new FileStream(path, FileMode.CreateNew, FileAccess.Write))
-                file.Write(bytes, 0, bytes.Length);
         }
     }
 }

@@ -145,7 +145,7 @@ namespace NerfDatasetCreator
             }
         }
 
-        public static SettingsReadResult ReadFile(string path) => Read(File.ReadAllText(path), path);
+        public static SettingsReadResult ReadFile(string path) => Read(FileOps.ReadText(path), path);
 
         /// <summary>
         /// Reads a config. Throws <see cref="SettingsFormatException"/> (with line and column) when the text is not
@@ -172,6 +172,10 @@ namespace NerfDatasetCreator
             }
 
             var reader = new Reader(sourceName);
+            foreach (var (line, column, what) in JsonLeniency.Find(text))
+                reader.Warnings.Add(new ValidationProblem(sourceName + "(" + line + "," + column + ")", what,
+                    "is not JSON; this plugin accepts it, but Python's json, jq and other tools refuse the file.",
+                    "Remove it so that every tool can read the config."));
             var s = new DatasetSettings();
             reader.Object(root, "", new Dictionary<string, Action<JToken, string>>
             {
@@ -265,7 +269,7 @@ namespace NerfDatasetCreator
             var kindToken = obj["kind"];
             if (kindToken == null) throw reader.Error(token, path + ".kind", "is missing; use one of " + FormationKinds.NameList() + ".");
             if (!FormationKinds.TryParse(reader.String(kindToken, path + ".kind"), out var kind))
-                throw reader.Error(kindToken, path + ".kind", "is not a known formation; use one of " + FormationKinds.NameList() + ".");
+                throw reader.Error(kindToken, path + ".kind", Describe(kindToken) + " is not a known formation; use one of " + FormationKinds.NameList() + ".");
             f.Kind = kind;
             var handlers = new Dictionary<string, Action<JToken, string>> { ["kind"] = (t, p) => { } };
             foreach (var name in FormationSettings.ParameterNames(kind))
@@ -345,7 +349,7 @@ namespace NerfDatasetCreator
 
             public double Double(JToken t, string path, string expected = "a number")
             {
-                if (t.Type == JTokenType.Float || t.Type == JTokenType.Integer) return (double)t;
+                if (JsonValues.TryNumber(t, out var number)) return number;
                 // Validation, not the reader, reports NaN and infinity, so a file written while a field held one reads back.
                 if (t.Type == JTokenType.String && double.TryParse((string)t, System.Globalization.NumberStyles.Float,
                         System.Globalization.CultureInfo.InvariantCulture, out var special) && (double.IsNaN(special) || double.IsInfinity(special)))
@@ -356,17 +360,15 @@ namespace NerfDatasetCreator
             public long Long(JToken t, string path)
             {
                 if (t.Type != JTokenType.Integer) throw Error(t, path, "must be a whole number, not " + Describe(t) + ".");
-                try { return (long)t; }
-                catch (OverflowException) { throw Error(t, path, "is too large; use a whole number from " + long.MinValue + " to " + long.MaxValue + "."); }
+                if (!JsonValues.TryLong(t, out var value)) throw Error(t, path, "is too large; use a whole number from " + long.MinValue + " to " + long.MaxValue + ".");
+                return value;
             }
 
             public int Int(JToken t, string path)
             {
                 if (t.Type != JTokenType.Integer) throw Error(t, path, "must be a whole number, not " + Describe(t) + ".");
-                // Newtonsoft holds integers as long, or as BigInteger beyond long's range.
-                var raw = ((JValue)t).Value;
-                if (!(raw is long value) || value > int.MaxValue || value < int.MinValue) throw Error(t, path, "is far too large for this setting.");
-                return (int)value;
+                if (!JsonValues.TryInt(t, out var value)) throw Error(t, path, "is far too large for this setting.");
+                return value;
             }
 
             public bool Bool(JToken t, string path)

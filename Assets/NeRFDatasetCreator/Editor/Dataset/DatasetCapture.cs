@@ -106,6 +106,7 @@ namespace NerfDatasetCreator.Editor
             {
                 return Failed(prepared, null, e, 0);
             }
+            LogEarlierRuns(session);
             var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode);
             using (var consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files)))
             {
@@ -143,6 +144,7 @@ namespace NerfDatasetCreator.Editor
             try
             {
                 session = prepared.Run.Begin();
+                LogEarlierRuns(session);
                 var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode);
                 consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files));
                 var written = consumer;
@@ -223,6 +225,14 @@ namespace NerfDatasetCreator.Editor
         /// <summary>A second capture while one runs: refused before anything (a working folder) is created.</summary>
         static DatasetCaptureResult Busy() => new DatasetCaptureResult(false, false, null, null,
             "NeRF Dataset Creator: nothing was captured — " + ActiveCapture.BusyMessage, 0, 0);
+
+        /// <summary>What Begin found of earlier runs on this output (Core's Recovery): interrupted ones it finished or rolled back, leftovers.</summary>
+        static void LogEarlierRuns(DatasetWriteSession session)
+        {
+            foreach (var note in session.Recovered) Debug.Log("NeRF Dataset Creator: " + note);
+            foreach (var leftover in session.Leftovers)
+                Debug.LogWarning("NeRF Dataset Creator: left over: " + leftover + " Delete it, or run `nerf-dataset clean " + Path.GetDirectoryName(session.FinalFolder) + "`.");
+        }
 
         static DatasetCaptureResult Refused(IEnumerable<ValidationProblem> problems) => new DatasetCaptureResult(false, false, null, null,
             "NeRF Dataset Creator: nothing was captured —\n" + string.Join("\n", problems.Select(p => "  " + p)), 0, 0);

@@ -19,6 +19,18 @@ namespace NerfDatasetCreator.Tool
             ConversionResult result;
             try
             {
+                // An earlier convert into the same output that was killed is finished or rolled back first.
+                if (Directory.Exists(datasetFolder))
+                {
+                    var output = DatasetConverter.OutputFolder(Path.GetFullPath(datasetFolder), target, outputFolder);
+                    var recovered = Recovery.Run(output);
+                    foreach (var note in recovered) stderr.WriteLine("note: " + note);
+                    if (recovered.Any(n => n.Operation == "convert" && n.Finished))
+                    {
+                        stdout.WriteLine("converted " + Path.GetFullPath(datasetFolder) + " to " + ExportTargets.Name(target) + " into " + output + " (the interrupted earlier convert, now finished)");
+                        return Program.Success;
+                    }
+                }
                 result = DatasetConverter.Convert(datasetFolder, target, outputFolder, depths);
             }
             catch (InvalidParameterException e)
@@ -39,8 +51,8 @@ namespace NerfDatasetCreator.Tool
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 stderr.WriteLine("error: " + e.Message);
-                stderr.WriteLine("convert failed while writing; files it wrote before the failure stay where they are and convert never " +
-                                 "overwrites, so delete them (or pass another --out) before running it again.");
+                stderr.WriteLine("convert failed; it writes into a working folder and moves the files into place only when all are complete, " +
+                                 "so nothing was overwritten and running the same command again finishes or rolls back what was interrupted.");
                 return Program.Failure;
             }
 

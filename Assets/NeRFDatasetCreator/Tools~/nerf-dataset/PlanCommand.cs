@@ -30,6 +30,9 @@ namespace NerfDatasetCreator.Tool
             foreach (var warning in read.Warnings) stderr.WriteLine("warning: " + warning);
 
             var settings = read.Settings;
+            if (!string.IsNullOrWhiteSpace(settings.OutputFolder))
+                stderr.WriteLine("warning: " + new ValidationProblem("outputFolder", settings.OutputFolder,
+                    "is ignored by plan: --out names the dataset folder itself.", "Leave outputFolder empty in configs for the tool, or pass the folder as --out."));
             var problems = CapturePlan.Check(settings, PlanTarget.AtOrigin);
             if (problems.Count > 0)
             {
@@ -49,6 +52,9 @@ namespace NerfDatasetCreator.Tool
                 foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
                 return Program.UsageError;
             }
+            foreach (var note in session.Recovered) stderr.WriteLine("note: " + note);
+            foreach (var leftover in session.Leftovers)
+                stderr.WriteLine("note: left over: " + leftover + " `nerf-dataset clean " + Path.GetDirectoryName(session.FinalFolder) + "` removes it.");
 
             try
             {
@@ -59,7 +65,7 @@ namespace NerfDatasetCreator.Tool
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 stderr.WriteLine("error: " + e.Message);
-                stderr.WriteLine(session.DescribeAbandoned());
+                stderr.WriteLine("note: " + session.DescribeAbandoned());
                 return Program.Failure;
             }
 
