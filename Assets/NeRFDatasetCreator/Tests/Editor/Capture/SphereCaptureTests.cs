@@ -246,7 +246,8 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
 
         /// <summary>
         /// The threaded path end to end: every view's raw passes are encoded with ImageConversion on worker threads
-        /// and written (PNG signature, EXR magic number).
+        /// and written (PNG signature, EXR magic number): RawPassWriter's five files per view — the two colour
+        /// renders, the mask, depth and normals.
         /// </summary>
         [Test]
         public void EveryViewsFilesAreWrittenByTheWorkerThreads()
@@ -259,12 +260,12 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
                 for (var i = 0; i < 8; i++)
                 {
                     var stem = Path.Combine(folder, "view_" + i.ToString("0000"));
-                    var png = File.ReadAllBytes(stem + "_color.png");
-                    Assert.That(png.Take(8), Is.EqualTo(new byte[] { 137, 80, 78, 71, 13, 10, 26, 10 }), stem + "_color.png");
-                    foreach (var exr in new[] { stem + "_depth.exr", stem + "_normal.exr" })
+                    var png = File.ReadAllBytes(stem + "_mask.png");
+                    Assert.That(png.Take(8), Is.EqualTo(new byte[] { 137, 80, 78, 71, 13, 10, 26, 10 }), stem + "_mask.png");
+                    foreach (var exr in new[] { stem + "_color_over_black.exr", stem + "_color_over_white.exr", stem + "_depth.exr", stem + "_normal.exr" })
                         Assert.That(File.ReadAllBytes(exr).Take(4), Is.EqualTo(new byte[] { 0x76, 0x2f, 0x31, 0x01 }), exr);
                 }
-                Assert.That(Directory.GetFiles(folder), Has.Length.EqualTo(24));
+                Assert.That(Directory.GetFiles(folder), Has.Length.EqualTo(8 * 5));
             }
             finally
             {
