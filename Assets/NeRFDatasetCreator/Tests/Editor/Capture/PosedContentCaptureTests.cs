@@ -1,9 +1,11 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
 using UnityEngine;
 using UnityEngine.SceneManagement;
+using Object = UnityEngine.Object;
 
 namespace NerfDatasetCreator.Editor.Tests.Capture
 {
@@ -22,6 +24,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         const double CameraDistance = 3.0;
 
         Scene _scene;
+        readonly List<Object> _owned = new List<Object>();
 
         [SetUp]
         public void SetUp()
@@ -31,7 +34,13 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         }
 
         [TearDown]
-        public void TearDown() => TestScene.Close(_scene);
+        public void TearDown()
+        {
+            TestScene.Close(_scene);
+            foreach (var owned in _owned)
+                if (owned != null) Object.DestroyImmediate(owned);
+            _owned.Clear();
+        }
 
         static List<RecordedView> Capture(GameObject target, int views, Action<GameObject, int> beforeView)
         {
@@ -100,6 +109,54 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
             var (ax, ay) = PixelOf(0, -0.8, CameraDistance); // the anchor's centre: its silhouette's radius is 1.5 px
             Assert.That(views[1].MaskAt(ax, ay), Is.EqualTo(255), "view 1: the anchor is still there");
             Assert.That(target.transform.Find("Switched").GetComponent<Renderer>().enabled, Is.False, "the user's objects are untouched");
+        }
+
+        /// <summary>
+        /// A skinned unit cube (one bone, Unity's cube mesh, bind pose = identity) whose bone a dynamic capture moves
+        /// before each view: 0.6 to the left in view 0, 0.6 to the right in view 1, both rendered in the same editor
+        /// update. Unity skins once per update unless the renderer recalculates per render, so without that view 1
+        /// would show view 0's pose. Colour, mask, depth and normal must all show each view's own pose.
+        /// </summary>
+        [Test]
+        public void ASkinnedMeshPosedBeforeEachViewShowsThatViewsPoseInEveryPass()
+        {
+            var target = new GameObject("Skinned target");
+            var body = new GameObject("Body", typeof(SkinnedMeshRenderer));
+            body.transform.SetParent(target.transform, false);
+            var bone = new GameObject("Bone").transform;
+            bone.SetParent(body.transform, false);
+            var cube = GameObject.CreatePrimitive(PrimitiveType.Cube);
+            var mesh = Object.Instantiate(cube.GetComponent<MeshFilter>().sharedMesh);
+            _owned.Add(mesh);
+            var material = cube.GetComponent<MeshRenderer>().sharedMaterial; // the pipeline's default material (an asset)
+            Object.DestroyImmediate(cube);
+            mesh.boneWeights = Enumerable.Repeat(new BoneWeight { boneIndex0 = 0, weight0 = 1 }, mesh.vertexCount).ToArray();
+            mesh.bindposes = new[] { bone.worldToLocalMatrix * body.transform.localToWorldMatrix };
+            var skinned = body.GetComponent<SkinnedMeshRenderer>();
+            skinned.bones = new[] { bone };
+            skinned.rootBone = bone; // the bounds follow the bone
+            skinned.sharedMesh = mesh;
+            skinned.localBounds = mesh.bounds;
+            skinned.sharedMaterial = material;
+
+            const double shift = 0.6, frontDepth = CameraDistance - 0.5;
+            var views = Capture(target, 2, (root, index) =>
+                root.transform.Find("Skinned target/Body/Bone").localPosition = new Vector3(index == 0 ? -(float)shift : (float)shift, 0, 0));
+
+            for (var index = 0; index < 2; index++)
+            {
+                var side = index == 0 ? -1 : 1;
+                var (x, y) = PixelOf(side * shift, 0, frontDepth);
+                var (ex, ey) = PixelOf(-side * shift, 0, frontDepth);
+                Assert.That(views[index].AlphaAt(x, y), Is.EqualTo(1f).Within(1e-3f), $"view {index}: colour where the bone put the cube");
+                Assert.That(views[index].MaskAt(x, y), Is.EqualTo(255), $"view {index}: mask there");
+                Assert.That(views[index].DepthAt(x, y), Is.EqualTo(frontDepth).Within(1e-3), $"view {index}: depth there");
+                Assert.That(views[index].NormalAt(x, y, out _).Z, Is.LessThan(-0.99), $"view {index}: normal there");
+                Assert.That(views[index].AlphaAt(ex, ey), Is.EqualTo(0f).Within(1e-3f), $"view {index}: no colour where the other view's pose was");
+                Assert.That(views[index].MaskAt(ex, ey), Is.EqualTo(0), $"view {index}: no mask there");
+                Assert.That(views[index].DepthAt(ex, ey), Is.EqualTo(0f), $"view {index}: no depth there");
+            }
+            Assert.That(bone.localPosition, Is.EqualTo(Vector3.zero), "the user's bone is untouched");
         }
     }
 }
