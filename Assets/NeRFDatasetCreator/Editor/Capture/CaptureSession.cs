@@ -270,7 +270,9 @@ namespace NerfDatasetCreator.Editor.Capture
             {
                 _stage.UnpinLighting();
             }
-            // The data passes draw outside the camera's render loop, so no pipeline setting can change them.
+            // The data passes draw outside the camera's render loop, so no pipeline setting can change them. What they
+            // draw is decided per view, as the camera's culling decides it: BeforeView may have switched renderers.
+            if (targets.Mask != null || targets.Depth != null || targets.Normal != null) _dataPasses.PrepareView();
             if (targets.Mask != null) _dataPasses.Render(camera, targets.Mask, DataPassRenderer.MaskPass);
             if (targets.Depth != null) _dataPasses.Render(camera, targets.Depth, DataPassRenderer.DepthPass);
             if (targets.Normal != null) _dataPasses.Render(camera, targets.Normal, DataPassRenderer.NormalPass);

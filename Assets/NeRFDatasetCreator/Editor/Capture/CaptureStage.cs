@@ -59,6 +59,7 @@ namespace NerfDatasetCreator.Editor.Capture
                     if (options.Isolation == CaptureIsolation.TargetOnly) copy.SetActive(true);
                     Neutralise(copy);
                     LodZero.Apply(source, copy);
+                    RenderAsPosed(copy);
                 }
                 if (options.Isolation == CaptureIsolation.TargetOnly && options.CopySceneLights)
                     CopySceneLights(target);
@@ -140,6 +141,26 @@ namespace NerfDatasetCreator.Editor.Capture
             foreach (var camera in copy.GetComponentsInChildren<Camera>(true)) camera.enabled = false;
             foreach (var script in copy.GetComponentsInChildren<MonoBehaviour>(true))
                 if (script != null) script.enabled = false;
+        }
+
+        /// <summary>
+        /// The copies are rendered by hand, many times within one editor update (a blocking run renders every view in
+        /// one; a background slice several), and a dynamic capture poses them between those renders. Unity skins a
+        /// SkinnedMeshRenderer once per update unless <c>forceMatrixRecalculationPerRender</c> is set ("This property
+        /// must be set in cases where the user would like to manually render a skinned mesh multiple times within a
+        /// single update, an example of this would be rendering out the results of an animation to a texture",
+        /// Scripting API SkinnedMeshRenderer.forceMatrixRecalculationPerRender; public in UnityCsReference 2022.3
+        /// Runtime/Export/Graphics/GraphicsRenderers.bindings.cs:372, 6000.0 :384): without it every view of an update
+        /// would show the first view's pose. An Animator culled by visibility (Cull Update Transforms / Cull Completely,
+        /// "Animation is completely disabled when renderers are not visible", Scripting API AnimatorCullingMode) would
+        /// not pose a copy that no Scene or Game view ever shows: the copies always animate. Only copies change.
+        /// </summary>
+        static void RenderAsPosed(GameObject copy)
+        {
+            foreach (var skinned in copy.GetComponentsInChildren<SkinnedMeshRenderer>(true))
+                skinned.forceMatrixRecalculationPerRender = true;
+            foreach (var animator in copy.GetComponentsInChildren<Animator>(true))
+                animator.cullingMode = AnimatorCullingMode.AlwaysAnimate;
         }
 
         /// <summary>

@@ -32,29 +32,26 @@ namespace NerfDatasetCreator.Editor.Capture
             }
         }
 
+        readonly List<Renderer> _renderers = new List<Renderer>();
+        readonly int _cullingMask;
         readonly List<Draw> _draws = new List<Draw>();
         DataPassMaterials _materials;
         CommandBuffer _commands;
 
-        /// <param name="renderers">The mesh and skinned-mesh renderers of the capture's copies that the colour pass may draw.</param>
+        /// <param name="renderers">The mesh and skinned-mesh renderers of the capture's copies, enabled or not.</param>
         /// <param name="cullingMask">The capture camera's culling mask: a renderer on a layer it excludes is in no pass.</param>
         public DataPassRenderer(IEnumerable<Renderer> renderers, int cullingMask)
         {
             try
             {
+                _cullingMask = cullingMask;
                 _materials = new DataPassMaterials();
                 _commands = new CommandBuffer { name = "NeRF Dataset Creator data pass" };
                 foreach (var renderer in renderers)
-                {
-                    if (!DrawnByACamera(renderer, cullingMask)) continue;
-                    var materials = renderer.sharedMaterials;
-                    var mesh = MeshOf(renderer);
-                    if (mesh == null) continue;
-                    // A camera draws submesh i with material i; submeshes without a material are not drawn, and extra
-                    // materials draw the last submesh again (same coverage), so min(submeshes, materials) draws suffice.
-                    var count = Math.Min(mesh.subMeshCount, materials.Length);
-                    for (var i = 0; i < count; i++) _draws.Add(new Draw(renderer, _materials.For(materials[i]), i));
-                }
+                    if (renderer != null) _renderers.Add(renderer);
+                // The data materials of what is drawn now are made (and approximated shaders warned about) before the
+                // first view; a renderer switched on later gets its own when it first appears.
+                PrepareView();
             }
             catch
             {
@@ -63,11 +60,34 @@ namespace NerfDatasetCreator.Editor.Capture
             }
         }
 
-        /// <summary>Draw calls per pass (renderer × submesh).</summary>
+        /// <summary>Draw calls per pass (renderer × submesh) of the current view, as of the last <see cref="PrepareView"/>.</summary>
         public int DrawCount => _draws.Count;
 
         /// <summary>Shaders the data passes draw only approximately (each warned about once in the Console).</summary>
         public IReadOnlyCollection<string> ApproximatedShaders => _materials.ApproximatedShaders;
+
+        /// <summary>
+        /// Decides, for the view about to be drawn, what the camera's culling decides for its colour pass: called once
+        /// per view, after the content is posed for it. A dynamic capture's <c>ContentClock</c> poses the copies
+        /// before each view, and an Animator or a Timeline activation track may switch renderers and objects on and off
+        /// (or swap meshes and materials) from one view to the next: a decision taken once per run would leave the data
+        /// passes showing what the first view, or the scene before any view, showed.
+        /// </summary>
+        public void PrepareView()
+        {
+            _draws.Clear();
+            foreach (var renderer in _renderers)
+            {
+                if (!DrawnByACamera(renderer, _cullingMask)) continue;
+                var mesh = MeshOf(renderer);
+                if (mesh == null) continue;
+                // A camera draws submesh i with material i; submeshes without a material are not drawn, and extra
+                // materials draw the last submesh again (same coverage), so min(submeshes, materials) draws suffice.
+                var materials = renderer.sharedMaterials;
+                var count = Math.Min(mesh.subMeshCount, materials.Length);
+                for (var i = 0; i < count; i++) _draws.Add(new Draw(renderer, _materials.For(materials[i]), i));
+            }
+        }
 
         /// <summary>
         /// What a camera's culling would keep of the copies, except the frustum (the GPU clips that): enabled and
@@ -87,7 +107,8 @@ namespace NerfDatasetCreator.Editor.Capture
         }
 
         /// <summary>
-        /// Renders one data pass of the camera's current view into <paramref name="target"/>, cleared to 0 first.
+        /// Renders one data pass of the camera's current view into <paramref name="target"/>, cleared to 0 first, with
+        /// the renderers chosen by the last <see cref="PrepareView"/>.
         /// The render target is set before the matrices, so that Unity applies the render-into-texture projection flip
         /// (and the matching winding) exactly as it does for a camera rendering into a texture.
         /// </summary>
@@ -108,6 +129,7 @@ namespace NerfDatasetCreator.Editor.Capture
         public void Dispose()
         {
             _draws.Clear();
+            _renderers.Clear();
             _commands?.Release();
             _commands = null;
             _materials?.Dispose();

@@ -85,6 +85,9 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
             // would reach 0.25, 69 %. Pixel 51 is 61 % out.
             Assert.That(view.MaskAt(32, 32), Is.EqualTo(255), "the LOD 0 sphere is drawn");
             Assert.That(view.MaskAt(32 + 19, 32), Is.EqualTo(0), "at 60 % of the half-width only the LOD 1 cube would cover the pixel");
+            // The colour pass too: the camera, not the data-pass command buffer, decides what it draws.
+            Assert.That(view.AlphaAt(32, 32), Is.EqualTo(1f).Within(1e-3f), "the LOD 0 sphere is in the colour pass");
+            Assert.That(view.AlphaAt(32 + 19, 32), Is.EqualTo(0f).Within(1e-3f), "and the LOD 1 cube is not");
             Assert.That(target.GetComponentsInChildren<Renderer>().All(r => r.enabled), Is.True, "the user's renderers are untouched");
         }
 

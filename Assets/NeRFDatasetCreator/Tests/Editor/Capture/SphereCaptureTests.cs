@@ -154,7 +154,8 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         /// <summary>
         /// The images agree with the plan's matrices: a small sphere away from the look-at point appears where the
         /// output camera-to-world matrix (BlenderConvention) and the intrinsics (CameraIntrinsics) project it, using
-        /// NeRF's camera model (OpenGL axes, image rows downwards).
+        /// NeRF's camera model (OpenGL axes, image rows downwards) — in the mask (drawn by the data-pass command
+        /// buffer) and in the colour's alpha (drawn by the camera) alike, so a flip or shift of either shows.
         /// </summary>
         [Test]
         public void TheSphereAppearsWhereThePlansMatrixAndIntrinsicsProjectIt()
@@ -174,18 +175,25 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
                 var expectedX = intrinsics.Cx + intrinsics.FlX * p.X / -p.Z;
                 var expectedRowFromTop = intrinsics.Cy - intrinsics.FlY * p.Y / -p.Z;
 
-                double sumX = 0, sumY = 0, count = 0;
+                double sumX = 0, sumY = 0, count = 0, alphaX = 0, alphaY = 0, alphaSum = 0;
                 for (var y = 0; y < w; y++)
                 for (var x = 0; x < w; x++)
                 {
+                    var alpha = Math.Max(0, Math.Min(1, view.AlphaAt(x, y)));
+                    alphaX += alpha * (x + 0.5);
+                    alphaY += alpha * (w - (y + 0.5)); // rows are bottom-up
+                    alphaSum += alpha;
                     if (view.MaskAt(x, y) == 0) continue;
                     sumX += x + 0.5;
-                    sumY += w - (y + 0.5); // mask rows are bottom-up
+                    sumY += w - (y + 0.5);
                     count++;
                 }
                 Assert.That(count, Is.GreaterThan(10), $"view {view.ViewIndex} sees the sphere");
-                Assert.That(sumX / count, Is.EqualTo(expectedX).Within(1.0), $"view {view.ViewIndex} column");
-                Assert.That(sumY / count, Is.EqualTo(expectedRowFromTop).Within(1.0), $"view {view.ViewIndex} row");
+                Assert.That(sumX / count, Is.EqualTo(expectedX).Within(1.0), $"view {view.ViewIndex} mask column");
+                Assert.That(sumY / count, Is.EqualTo(expectedRowFromTop).Within(1.0), $"view {view.ViewIndex} mask row");
+                Assert.That(alphaSum, Is.GreaterThan(10), $"view {view.ViewIndex} colour sees the sphere");
+                Assert.That(alphaX / alphaSum, Is.EqualTo(expectedX).Within(1.0), $"view {view.ViewIndex} colour column");
+                Assert.That(alphaY / alphaSum, Is.EqualTo(expectedRowFromTop).Within(1.0), $"view {view.ViewIndex} colour row");
             }
         }
 
@@ -246,7 +254,8 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
 
         /// <summary>
         /// The threaded path end to end: every view's raw passes are encoded with ImageConversion on worker threads
-        /// and written (PNG signature, EXR magic number).
+        /// and written (PNG signature, EXR magic number): RawPassWriter's five files per view — the two colour
+        /// renders, the mask, depth and normals.
         /// </summary>
         [Test]
         public void EveryViewsFilesAreWrittenByTheWorkerThreads()
@@ -259,12 +268,12 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
                 for (var i = 0; i < 8; i++)
                 {
                     var stem = Path.Combine(folder, "view_" + i.ToString("0000"));
-                    var png = File.ReadAllBytes(stem + "_color.png");
-                    Assert.That(png.Take(8), Is.EqualTo(new byte[] { 137, 80, 78, 71, 13, 10, 26, 10 }), stem + "_color.png");
-                    foreach (var exr in new[] { stem + "_depth.exr", stem + "_normal.exr" })
+                    var png = File.ReadAllBytes(stem + "_mask.png");
+                    Assert.That(png.Take(8), Is.EqualTo(new byte[] { 137, 80, 78, 71, 13, 10, 26, 10 }), stem + "_mask.png");
+                    foreach (var exr in new[] { stem + "_color_over_black.exr", stem + "_color_over_white.exr", stem + "_depth.exr", stem + "_normal.exr" })
                         Assert.That(File.ReadAllBytes(exr).Take(4), Is.EqualTo(new byte[] { 0x76, 0x2f, 0x31, 0x01 }), exr);
                 }
-                Assert.That(Directory.GetFiles(folder), Has.Length.EqualTo(24));
+                Assert.That(Directory.GetFiles(folder), Has.Length.EqualTo(8 * 5));
             }
             finally
             {
