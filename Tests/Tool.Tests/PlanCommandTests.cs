@@ -30,7 +30,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(run.Out, Does.Contain("planned 12 train, 4 val, 6 test views at distance 4"));
             Assert.That(Directory.GetFiles(output).Select(Path.GetFileName).OrderBy(n => n, System.StringComparer.Ordinal), Is.EqualTo(new[]
             {
-                "dataset_config.json", "rig_preview.ply", "transforms_test.json", "transforms_train.json", "transforms_val.json",
+                "dataset_config.json", "rig_preview.ply", "rig_preview.png", "transforms_test.json", "transforms_train.json", "transforms_val.json",
             }));
             Assert.That(Directory.GetDirectories(output), Is.Empty, "no image folders");
             Assert.That(Directory.GetDirectories(_scratch.PathOf("out")), Is.EqualTo(new[] { output }), "no partial folder left beside it");
@@ -64,8 +64,8 @@ namespace NerfDatasetCreator.Tool.Tests
             var config = _scratch.WriteText("lego.json", SmallConfig);
             ToolRun.Of("plan", "--config", config, "--out", _scratch.PathOf("a"));
             ToolRun.Of("plan", "--config", config, "--out", _scratch.PathOf("b"));
-            foreach (var name in new[] { "transforms_train.json", "transforms_val.json", "transforms_test.json", "rig_preview.ply" })
-                Assert.That(File.ReadAllText(_scratch.PathOf("b", name)), Is.EqualTo(File.ReadAllText(_scratch.PathOf("a", name))), name);
+            foreach (var name in new[] { "transforms_train.json", "transforms_val.json", "transforms_test.json", "rig_preview.ply", "rig_preview.png" })
+                Assert.That(File.ReadAllBytes(_scratch.PathOf("b", name)), Is.EqualTo(File.ReadAllBytes(_scratch.PathOf("a", name))), name);
         }
 
         [Test]

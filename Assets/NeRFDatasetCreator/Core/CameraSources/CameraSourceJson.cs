@@ -7,8 +7,12 @@ namespace NerfDatasetCreator
 {
     /// <summary>
     /// A split's <c>"source"</c> object in a config file, written only when it is not the formation (so configs
-    /// without imported cameras stay as they were): <c>{"kind": "imported", "path": …, "fileSplit": …, "useFileIntrinsics": …}</c>.
-    /// Reading goes through <see cref="DatasetSettingsJson"/>'s reader, so errors and unknown keys are reported alike.
+    /// without other sources stay as they were), with the keys of its kind:
+    /// <c>{"kind": "imported", "path", "fileSplit", "useFileIntrinsics"}</c>,
+    /// <c>{"kind": "sceneCameras", "parent", "useCameraIntrinsics"}</c>,
+    /// <c>{"kind": "animatedCamera", "camera", "useCameraIntrinsics", "samples", "frameStep", "frameRate", "start", "end"}</c>.
+    /// Reading accepts every key whatever the kind (they are ignored by other kinds) and goes through
+    /// <see cref="DatasetSettingsJson"/>'s reader, so errors and unknown keys are reported alike.
     /// </summary>
     static class CameraSourceJson
     {
@@ -17,14 +21,31 @@ namespace NerfDatasetCreator
             w.WritePropertyName("source");
             w.WriteStartObject();
             w.WritePropertyName("kind"); w.WriteValue(CameraSourceSettings.KindName(s.Kind));
-            w.WritePropertyName("path"); w.WriteValue(s.Path ?? "");
-            w.WritePropertyName("fileSplit"); w.WriteValue(s.FileSplit ?? "");
-            w.WritePropertyName("useFileIntrinsics"); w.WriteValue(s.UseFileIntrinsics);
+            if (s.IsImported)
+            {
+                w.WritePropertyName("path"); w.WriteValue(s.Path ?? "");
+                w.WritePropertyName("fileSplit"); w.WriteValue(s.FileSplit ?? "");
+                w.WritePropertyName("useFileIntrinsics"); w.WriteValue(s.UseFileIntrinsics);
+            }
+            else if (s.IsFromScene)
+            {
+                w.WritePropertyName(s.Kind == CameraSourceKind.SceneCameras ? "parent" : "camera"); w.WriteValue(s.ObjectPath ?? "");
+                w.WritePropertyName("useCameraIntrinsics"); w.WriteValue(s.UseCameraIntrinsics);
+                if (s.Kind == CameraSourceKind.AnimatedCamera)
+                {
+                    w.WritePropertyName("samples"); w.WriteValue(s.Samples);
+                    w.WritePropertyName("frameStep"); w.WriteValue(s.FrameStep);
+                    w.WritePropertyName("frameRate"); JsonNumbers.Write(w, s.FrameRate);
+                    w.WritePropertyName("start"); JsonNumbers.Write(w, s.Start);
+                    w.WritePropertyName("end"); JsonNumbers.Write(w, s.End);
+                }
+            }
             w.WriteEndObject();
         }
 
         public static void Read(JToken token, string path, CameraSourceSettings s,
             Func<JToken, string, string> readString, Func<JToken, string, bool> readBool,
+            Func<JToken, string, int> readInt, Func<JToken, string, double> readDouble,
             Func<JToken, string, string, SettingsFormatException> error,
             Action<JToken, string, Dictionary<string, Action<JToken, string>>, string> readObject)
         {
@@ -33,12 +54,20 @@ namespace NerfDatasetCreator
                 ["kind"] = (t, p) =>
                 {
                     if (!CameraSourceSettings.TryParseKind(readString(t, p), out var kind))
-                        throw error(t, p, "must be \"formation\" or \"imported\", not \"" + (string)t + "\".");
+                        throw error(t, p, "must be \"formation\", \"imported\", \"sceneCameras\" or \"animatedCamera\", not \"" + (string)t + "\".");
                     s.Kind = kind;
                 },
                 ["path"] = (t, p) => s.Path = readString(t, p),
                 ["fileSplit"] = (t, p) => s.FileSplit = readString(t, p),
                 ["useFileIntrinsics"] = (t, p) => s.UseFileIntrinsics = readBool(t, p),
+                ["parent"] = (t, p) => s.ObjectPath = readString(t, p),
+                ["camera"] = (t, p) => s.ObjectPath = readString(t, p),
+                ["useCameraIntrinsics"] = (t, p) => s.UseCameraIntrinsics = readBool(t, p),
+                ["samples"] = (t, p) => s.Samples = readInt(t, p),
+                ["frameStep"] = (t, p) => s.FrameStep = readInt(t, p),
+                ["frameRate"] = (t, p) => s.FrameRate = readDouble(t, p),
+                ["start"] = (t, p) => s.Start = readDouble(t, p),
+                ["end"] = (t, p) => s.End = readDouble(t, p),
             }, "");
         }
     }

@@ -13,7 +13,7 @@ namespace NerfDatasetCreator
     {
         /// <summary>Whether any split places cameras with a formation (so the distance and its clip checks matter).</summary>
         public static bool AnyFormation(DatasetSettings settings) =>
-            DatasetSplits.All.Any(s => settings.Split(s)?.Source == null || !settings.Split(s).Source.IsImported);
+            DatasetSplits.All.Any(s => settings.Split(s)?.Source == null || settings.Split(s).Source.IsFormation);
 
         /// <summary>
         /// A copy of <paramref name="settings"/> as the capture uses them: each imported split's count is its number of
@@ -44,8 +44,14 @@ namespace NerfDatasetCreator
             foreach (var split in DatasetSplits.All)
             {
                 var source = settings.Split(split)?.Source;
-                if (source == null || !source.IsImported || string.IsNullOrWhiteSpace(source.Path)) continue;
                 var field = "splits." + DatasetSplits.Name(split) + ".source";
+                if (source != null && source.IsFromScene)
+                {
+                    var fromScene = SceneCameraPlanning.Resolve(source, field, settings.Width, settings.Height, problems);
+                    if (fromScene != null) result[split] = fromScene;
+                    continue;
+                }
+                if (source == null || !source.IsImported || string.IsNullOrWhiteSpace(source.Path)) continue;
                 ImportedPoses poses;
                 try
                 {
@@ -94,16 +100,19 @@ namespace NerfDatasetCreator
             string chosenField = null;
             foreach (var pair in imported)
             {
-                if (!settings.Split(pair.Key).Source.UseFileIntrinsics) continue;
-                var field = pair.Value.Field + ".useFileIntrinsics";
+                var source = settings.Split(pair.Key).Source;
+                if (!source.UsesSourceIntrinsics) continue;
+                var field = pair.Value.Field + (source.IsImported ? ".useFileIntrinsics" : ".useCameraIntrinsics");
+                var what = source.IsImported ? "the file's cameras have" : "the scene's cameras have";
                 var shared = ImportedPoses.SharedIntrinsics(pair.Value.Cameras);
                 if (shared == null)
-                    problems.Add(new ValidationProblem(field, "true", "needs one camera for the whole split, but the file's cameras have different intrinsics.",
-                        "Turn it off and set the camera by hand, or import a file with one camera."));
+                    problems.Add(new ValidationProblem(field, "true", "needs one camera for the whole split, but " + what + " different intrinsics" +
+                        (source.IsImported ? "." : " (" + SceneCameraPlanning.DescribeFovs(pair.Value.Cameras) + "); the Blender-format files hold one camera_angle_x per split."),
+                        source.IsImported ? "Turn it off and set the camera by hand, or import a file with one camera." : "Give the cameras one field of view, or turn it off to render them all with the Camera step's."));
                 else if (!string.IsNullOrWhiteSpace(settings.Camera.CopyFromCamera))
                     problems.Add(new ValidationProblem(field, "true", "and camera.copyFromCamera both set the field of view.", "Use one of them."));
                 else if (chosen != null && !chosen.SameAs(shared))
-                    problems.Add(new ValidationProblem(field, "true", "takes other intrinsics than " + chosenField + "; a dataset has one camera.", "Use the file's intrinsics in one split only."));
+                    problems.Add(new ValidationProblem(field, "true", "takes other intrinsics than " + chosenField + "; a dataset has one camera.", "Use the source's own intrinsics in one split only, or give the cameras one field of view."));
                 else
                 {
                     chosen = shared;
@@ -148,7 +157,7 @@ namespace NerfDatasetCreator
                     yield return new ValidationProblem(pair.Value.Field, pair.Value.Poses.Source,
                         "has camera_angle_x " + ValidationProblem.Format(angleX) + (k.HasSize ? " at " + k.Width + "×" + k.Height : "") + ", the dataset " +
                         ValidationProblem.Format(intrinsics.CameraAngleX) + " at " + intrinsics.Width + "×" + intrinsics.Height + ": same poses, other pictures.",
-                        "Turn on useFileIntrinsics to render the file's views exactly.");
+                        pair.Value.Poses.Format == SceneCameraPlanning.Format ? "Turn on useCameraIntrinsics to render with the cameras' own field of view." : "Turn on useFileIntrinsics to render the file's views exactly.");
                 else if (k.HasSize && (Math.Abs(k.Cx - intrinsics.Cx) > 1e-6 || Math.Abs(k.Cy - intrinsics.Cy) > 1e-6 || Math.Abs(k.FlX - k.FlY) > 1e-6 * k.FlX))
                     yield return new ValidationProblem(pair.Value.Field, pair.Value.Poses.Source,
                         "has a principal point off the image centre or non-square pixels (cx " + ValidationProblem.Format(k.Cx) + ", cy " + ValidationProblem.Format(k.Cy) +

@@ -11,12 +11,18 @@ namespace NerfDatasetCreator
 
         /// <summary>The cameras of an existing transforms file or COLMAP text model (<see cref="CameraSourceSettings.Path"/>).</summary>
         ImportedPoses,
+
+        /// <summary>Every camera under a scene object (<see cref="CameraSourceSettings.ObjectPath"/>), one view each.</summary>
+        SceneCameras,
+
+        /// <summary>One scene camera driven by an Animator, Animation or Timeline, sampled over its time range (<see cref="AnimatedCameraSampling"/>).</summary>
+        AnimatedCamera,
     }
 
     /// <summary>
-    /// A split's camera source. With <see cref="CameraSourceKind.ImportedPoses"/> the split has one view per camera
-    /// of the file (its count and formation are not used) and the written matrices are the file's own whenever the
-    /// dataset's normalisation is the file's (<see cref="PosePlacement.ToOutput"/>).
+    /// A split's camera source. With any source but the formation the split has one view per source camera (its
+    /// count and formation are not used). Imported cameras are read by Core; scene and animated cameras are read by
+    /// the Unity editor into <see cref="SceneCameras"/> before planning.
     /// </summary>
     [Serializable]
     public sealed class CameraSourceSettings
@@ -38,33 +44,92 @@ namespace NerfDatasetCreator
         /// </summary>
         public bool UseFileIntrinsics;
 
+        /// <summary>
+        /// Scene and animated cameras: the hierarchy path of the parent whose cameras are used (config
+        /// <c>"parent"</c>) or of the animated camera (config <c>"camera"</c>).
+        /// </summary>
+        public string ObjectPath = "";
+
+        /// <summary>
+        /// Scene and animated cameras: render with the cameras' own field of view (a physical camera's framing at the
+        /// dataset's image size) instead of the Camera step's. They must agree: a dataset has one camera.
+        /// </summary>
+        public bool UseCameraIntrinsics = true;
+
+        /// <summary>Animated camera: views spread evenly over the time range, ends included (used when <see cref="FrameStep"/> is 0).</summary>
+        public int Samples = 100;
+
+        /// <summary>Animated camera: every k-th frame of the range instead of <see cref="Samples"/>; 0 for even samples.</summary>
+        public int FrameStep;
+
+        /// <summary>Animated camera: frames per second for <see cref="FrameStep"/>; 0 for the clip's own (a Timeline's, or 60).</summary>
+        public double FrameRate;
+
+        /// <summary>Animated camera: the sampled range in seconds; <see cref="End"/> ≤ 0 means the end of the longest clip or Timeline.</summary>
+        public double Start;
+        public double End;
+
+        /// <summary>
+        /// The cameras the Unity editor found for a scene or animated source, in order; null until it looked (the
+        /// headless tool never does, and refuses such a split). Not saved: the scene is read again at every plan.
+        /// </summary>
+        [NonSerialized] public IReadOnlyList<SceneCamera> SceneCameras;
+
+        /// <summary>Why the Unity editor could not read the source's cameras (an object not found…), reported instead of them; null when it could.</summary>
+        [NonSerialized] public ValidationProblem SceneProblem;
+
         public bool IsImported => Kind == CameraSourceKind.ImportedPoses;
+
+        public bool IsFormation => Kind == CameraSourceKind.Formation;
+
+        /// <summary>Cameras the Unity editor reads from the scene (scene cameras, an animated camera).</summary>
+        public bool IsFromScene => Kind == CameraSourceKind.SceneCameras || Kind == CameraSourceKind.AnimatedCamera;
+
+        /// <summary>Whether the source's own intrinsics replace the Camera step's.</summary>
+        public bool UsesSourceIntrinsics => IsImported ? UseFileIntrinsics : IsFromScene && UseCameraIntrinsics;
 
         public CameraSourceSettings Clone() => (CameraSourceSettings)MemberwiseClone();
 
+        static readonly string[] Names = { "formation", "imported", "sceneCameras", "animatedCamera" };
+
         /// <summary>The config-file names of the kinds.</summary>
-        public static string KindName(CameraSourceKind kind) => kind == CameraSourceKind.ImportedPoses ? "imported" : "formation";
+        public static string KindName(CameraSourceKind kind) => Names[(int)kind];
 
         public static bool TryParseKind(string name, out CameraSourceKind kind)
         {
+            for (var i = 0; i < Names.Length; i++)
+                if (string.Equals(name, Names[i], StringComparison.OrdinalIgnoreCase))
+                {
+                    kind = (CameraSourceKind)i;
+                    return true;
+                }
             kind = CameraSourceKind.Formation;
-            if (string.Equals(name, "formation", StringComparison.OrdinalIgnoreCase)) return true;
-            if (!string.Equals(name, "imported", StringComparison.OrdinalIgnoreCase)) return false;
-            kind = CameraSourceKind.ImportedPoses;
-            return true;
+            return false;
         }
 
-        /// <summary>Problems of the settings alone (the file itself is checked when planning).</summary>
+        /// <summary>Problems of the settings alone (the file or the scene is checked when planning).</summary>
         public IReadOnlyList<ValidationProblem> Validate(string fieldPrefix)
         {
             var problems = new List<ValidationProblem>();
-            if (!IsImported) return problems;
-            if (string.IsNullOrWhiteSpace(Path))
-                problems.Add(new ValidationProblem(fieldPrefix + ".path", "\"\"", "is empty; imported cameras need a file.",
-                    "Give a transforms JSON file (e.g. nerf_synthetic's transforms_test.json) or a COLMAP model folder (sparse/0)."));
-            if (!string.IsNullOrEmpty(FileSplit) && !((IList<string>)DatasetSplits.Names).Contains(FileSplit))
-                problems.Add(new ValidationProblem(fieldPrefix + ".fileSplit", "\"" + FileSplit + "\"", "is not a split name.",
-                    "Use \"train\", \"val\", \"test\", or \"\" for every camera of the file."));
+            if (IsImported)
+            {
+                if (string.IsNullOrWhiteSpace(Path))
+                    problems.Add(new ValidationProblem(fieldPrefix + ".path", "\"\"", "is empty; imported cameras need a file.",
+                        "Give a transforms JSON file (e.g. nerf_synthetic's transforms_test.json) or a COLMAP model folder (sparse/0)."));
+                if (!string.IsNullOrEmpty(FileSplit) && !((IList<string>)DatasetSplits.Names).Contains(FileSplit))
+                    problems.Add(new ValidationProblem(fieldPrefix + ".fileSplit", "\"" + FileSplit + "\"", "is not a split name.",
+                        "Use \"train\", \"val\", \"test\", or \"\" for every camera of the file."));
+            }
+            else if (Kind == CameraSourceKind.SceneCameras && string.IsNullOrWhiteSpace(ObjectPath))
+                problems.Add(new ValidationProblem(fieldPrefix + ".parent", "\"\"", "is empty; scene cameras need the object they are under.",
+                    "Give the hierarchy path of the parent of your cameras, e.g. \"Shots\" or \"Set/Shots\"."));
+            else if (Kind == CameraSourceKind.AnimatedCamera)
+            {
+                if (string.IsNullOrWhiteSpace(ObjectPath))
+                    problems.Add(new ValidationProblem(fieldPrefix + ".camera", "\"\"", "is empty; an animated camera source needs its camera.",
+                        "Give the hierarchy path of the animated camera, e.g. \"Flythrough/Camera\"."));
+                problems.AddRange(AnimatedCameraSampling.Validate(fieldPrefix, Samples, FrameStep, FrameRate, Start, End));
+            }
             return problems;
         }
     }

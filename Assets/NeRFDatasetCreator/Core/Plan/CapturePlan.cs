@@ -71,7 +71,7 @@ namespace NerfDatasetCreator
         public double RotationOf(DatasetSplit split)
         {
             var s = Settings.Split(split);
-            return s.Source != null && s.Source.IsImported ? 0 : s.Formation.AzimuthStepRadians(s.Count);
+            return s.Source != null && !s.Source.IsFormation ? 0 : s.Formation.AzimuthStepRadians(s.Count);
         }
 
         /// <summary>

@@ -98,7 +98,7 @@ namespace NerfDatasetCreator
             w.WritePropertyName("depth"); w.WriteValue(ExtraOutputs.Name(split.Depth));
             w.WritePropertyName("normal"); w.WriteValue(ExtraOutputs.Name(split.Normal));
             w.WritePropertyName("mask"); w.WriteValue(split.Mask);
-            if (split.Source != null && split.Source.IsImported) CameraSourceJson.Write(w, split.Source);
+            if (split.Source != null && !split.Source.IsFormation) CameraSourceJson.Write(w, split.Source);
             w.WriteEndObject();
         }
 
@@ -258,7 +258,7 @@ namespace NerfDatasetCreator
                 ["depth"] = (t, p) => split.Depth = reader.Extra(t, p),
                 ["normal"] = (t, p) => split.Normal = reader.Extra(t, p),
                 ["mask"] = (t, p) => split.Mask = reader.Bool(t, p),
-                ["source"] = (t, p) => CameraSourceJson.Read(t, p, split.Source, reader.String, reader.Bool, reader.Error, reader.Object),
+                ["source"] = (t, p) => CameraSourceJson.Read(t, p, split.Source, reader.String, reader.Bool, reader.Int, (jt, jp) => reader.Double(jt, jp), reader.Error, reader.Object),
             });
         }
 

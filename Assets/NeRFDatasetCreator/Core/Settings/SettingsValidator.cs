@@ -114,9 +114,9 @@ namespace NerfDatasetCreator
                 problems.Add(new ValidationProblem(prefix, "null", "is missing.", "Give every split a count and a formation."));
                 return;
             }
-            if (s.Source != null && s.Source.IsImported)
+            if (s.Source != null && !s.Source.IsFormation)
             {
-                problems.AddRange(s.Source.Validate(prefix + ".source")); // the file sets the count; no formation is used
+                problems.AddRange(s.Source.Validate(prefix + ".source")); // the source sets the count; no formation is used
                 return;
             }
             var count = ValidationProblem.OutsideRange(prefix + ".count", s.Count, 0, DatasetSettings.MaxViews);

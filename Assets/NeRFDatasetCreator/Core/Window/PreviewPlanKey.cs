@@ -38,8 +38,27 @@ namespace NerfDatasetCreator
                        target.Centre.X.ToString("R", CultureInfo.InvariantCulture) + "," +
                        target.Centre.Y.ToString("R", CultureInfo.InvariantCulture) + "," +
                        target.Centre.Z.ToString("R", CultureInfo.InvariantCulture) + "," +
-                       target.BoundingRadius.ToString("R", CultureInfo.InvariantCulture);
+                       target.BoundingRadius.ToString("R", CultureInfo.InvariantCulture) + SceneCamerasText(settings);
             return new PreviewPlanKey(text);
+        }
+
+        /// <summary>The poses and fields of view read from the scene: moving a scene camera changes the key.</summary>
+        static string SceneCamerasText(DatasetSettings settings)
+        {
+            var text = new System.Text.StringBuilder();
+            foreach (var split in DatasetSplits.All)
+            {
+                var cameras = settings.Split(split)?.Source?.SceneCameras;
+                if (cameras == null) continue;
+                text.Append('|').Append(DatasetSplits.Name(split));
+                foreach (var c in cameras)
+                    text.Append(';').Append(c.Pose.Position.X.ToString("R", CultureInfo.InvariantCulture)).Append(',')
+                        .Append(c.Pose.Position.Y.ToString("R", CultureInfo.InvariantCulture)).Append(',')
+                        .Append(c.Pose.Position.Z.ToString("R", CultureInfo.InvariantCulture)).Append(',')
+                        .Append(c.Pose.Rotation.ToString()).Append(',')
+                        .Append(c.VerticalFovDegrees.ToString("R", CultureInfo.InvariantCulture));
+            }
+            return text.ToString();
         }
 
         public bool Equals(PreviewPlanKey other) => other != null && string.Equals(_text, other._text, StringComparison.Ordinal);

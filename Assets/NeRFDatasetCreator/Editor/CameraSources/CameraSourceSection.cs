@@ -1,29 +1,51 @@
 using System.IO;
 using UnityEditor;
 using UnityEngine;
+using Object = UnityEngine.Object;
 
 namespace NerfDatasetCreator.Editor
 {
     /// <summary>
-    /// A split's camera source in the Rig step: its formation, or the cameras of an existing dataset (a transforms
-    /// JSON file or a COLMAP text model folder), re-rendered in this scene (see <see cref="CameraSourceSettings"/>).
+    /// A split's camera source in the Rig step: its formation, the cameras of an existing dataset (a transforms JSON
+    /// file or a COLMAP text model folder), the cameras under a scene object, or an animated scene camera sampled over
+    /// its clip (see <see cref="CameraSourceSettings"/>). Scene objects are stored by hierarchy path, like the target.
     /// </summary>
     static class CameraSourceSection
     {
-        static readonly string[] KindLabels = { "Formation", "Imported cameras" };
+        static readonly string[] KindLabels = { "Formation", "Imported cameras", "Scene cameras", "Animated camera" };
         static readonly string[] FileSplitLabels = { "All cameras", "train", "val", "test" };
         static readonly string[] FileSplitValues = { "", "train", "val", "test" };
+        static readonly string[] SamplingLabels = { "Views spread evenly", "Every k-th frame" };
 
-        /// <summary>Draws the source; true when the split's cameras are imported (then count and formation are not used).</summary>
+        /// <summary>Draws the source; true when the split's cameras do not come from its formation (then count and formation are not used).</summary>
         public static bool Draw(WindowContext c, DatasetSplit split)
         {
             var settings = c.Settings.Split(split);
             var source = settings.Source ?? (settings.Source = new CameraSourceSettings());
             var field = WindowFields.SplitField(split, "source");
-            var kind = EditorGUILayout.Popup("Cameras", source.IsImported ? 1 : 0, KindLabels);
-            source.Kind = kind == 1 ? CameraSourceKind.ImportedPoses : CameraSourceKind.Formation;
-            if (!source.IsImported) return false;
+            source.Kind = (CameraSourceKind)EditorGUILayout.Popup("Cameras", (int)source.Kind, KindLabels);
+            switch (source.Kind)
+            {
+                case CameraSourceKind.ImportedPoses:
+                    DrawImported(c, source);
+                    break;
+                case CameraSourceKind.SceneCameras:
+                    source.ObjectPath = PickObject(c, "Parent of the cameras", "Every active camera at and below this object is one view, in hierarchy order.", source.ObjectPath, typeof(GameObject));
+                    ValidationMessages.For(c, field + ".parent");
+                    DrawUseCameraIntrinsics(source);
+                    break;
+                case CameraSourceKind.AnimatedCamera:
+                    DrawAnimated(c, source, field);
+                    break;
+                default:
+                    return false;
+            }
+            ValidationMessages.For(c, field);
+            return true;
+        }
 
+        static void DrawImported(WindowContext c, CameraSourceSettings source)
+        {
             EditorGUILayout.BeginHorizontal();
             source.Path = EditorGUILayout.TextField(new GUIContent("File or model folder", "A transforms JSON (Blender, nerfstudio, instant-ngp, this plugin) or a COLMAP text model folder such as sparse/0; relative to the project folder."), source.Path ?? "");
             if (GUILayout.Button("File…", GUILayout.Width(48))) c.Later(() => Pick(source, folder: false));
@@ -33,8 +55,55 @@ namespace NerfDatasetCreator.Editor
             index = EditorGUILayout.Popup("Cameras of the file", index < 0 ? 0 : index, FileSplitLabels);
             source.FileSplit = FileSplitValues[index];
             source.UseFileIntrinsics = EditorGUILayout.Toggle(new GUIContent("Use the file's camera", "Render with the file's field of view and image size instead of the Camera step's."), source.UseFileIntrinsics);
-            ValidationMessages.For(c, field);
-            return true;
+        }
+
+        static void DrawAnimated(WindowContext c, CameraSourceSettings source, string field)
+        {
+            source.ObjectPath = PickObject(c, "Animated camera", "A camera moved by an Animator, an Animation or a Timeline under its root object; sampled on a copy, your scene does not move.", source.ObjectPath, typeof(Camera));
+            ValidationMessages.For(c, field + ".camera");
+            var stepped = EditorGUILayout.Popup("Sampling", source.FrameStep > 0 ? 1 : 0, SamplingLabels) == 1;
+            if (stepped)
+            {
+                source.FrameStep = Mathf.Max(1, EditorGUILayout.IntField(new GUIContent("Frame step", "Every k-th frame from the start."), Mathf.Max(1, source.FrameStep)));
+                source.FrameRate = EditorGUILayout.DoubleField(new GUIContent("Frame rate", "Frames per second; 0 for the clip's (a Timeline's, else 60)."), source.FrameRate);
+                ValidationMessages.For(c, field + ".frameStep");
+                ValidationMessages.For(c, field + ".frameRate");
+            }
+            else
+            {
+                source.FrameStep = 0;
+                source.Samples = EditorGUILayout.IntField(new GUIContent("Views", "Spread evenly over the range, both ends included."), source.Samples);
+                ValidationMessages.For(c, field + ".samples");
+            }
+            source.Start = EditorGUILayout.DoubleField(new GUIContent("Start (s)", "Time of the first sample."), source.Start);
+            source.End = EditorGUILayout.DoubleField(new GUIContent("End (s)", "0 for the end of the longest clip or Timeline."), source.End);
+            ValidationMessages.For(c, field + ".start");
+            ValidationMessages.For(c, field + ".end");
+            DrawUseCameraIntrinsics(source);
+        }
+
+        static void DrawUseCameraIntrinsics(CameraSourceSettings source) =>
+            source.UseCameraIntrinsics = EditorGUILayout.Toggle(new GUIContent("Use the cameras' lens", "Render with the cameras' own field of view (a physical camera's framing at the image size) instead of the Camera step's; they must share it."), source.UseCameraIntrinsics);
+
+        /// <summary>An object field for a scene object stored by hierarchy path; the path stays when its scene is closed.</summary>
+        static string PickObject(WindowContext c, string label, string tooltip, string path, System.Type type)
+        {
+            var found = SceneObjects.Find(path);
+            Object current = found == null ? null : type == typeof(GameObject) ? (Object)found : found.GetComponent(type);
+            EditorGUI.BeginChangeCheck();
+            var picked = EditorGUILayout.ObjectField(new GUIContent(label, tooltip), current, type, true);
+            if (EditorGUI.EndChangeCheck())
+            {
+                if (picked != null && EditorUtility.IsPersistent(picked))
+                    c.PickNotice = "'" + picked.name + "' is in an asset, not in the scene. Pick an object of the open scene.";
+                else
+                {
+                    var go = picked is Component component ? component.gameObject : picked as GameObject;
+                    return go == null ? "" : SceneObjectPath.Of(go);
+                }
+            }
+            if (found == null && !string.IsNullOrWhiteSpace(path)) EditorGUILayout.LabelField(" ", "Not in the open scenes: " + path, EditorStyles.miniLabel);
+            return path ?? "";
         }
 
         static void Pick(CameraSourceSettings source, bool folder)

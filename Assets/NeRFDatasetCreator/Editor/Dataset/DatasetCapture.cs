@@ -53,7 +53,9 @@ namespace NerfDatasetCreator.Editor
                 settings.Camera.FarClip = template.farClipPlane;
                 CheckCullingMask(template, target, settings.Camera.CopyFromCamera, problems, extraWarnings);
             }
-            // Imported cameras set their splits' counts and, when asked, the field of view and size the camera renders with.
+            // Scene and animated cameras are read from the scene first; then every source sets its split's count and, when
+            // asked, the field of view (and an imported file's size) the camera renders with.
+            SceneCameraSources.Resolve(settings);
             settings = CameraSourcePlanning.Resolved(settings, out _);
             var options = OptionsFor(settings, template);
             try

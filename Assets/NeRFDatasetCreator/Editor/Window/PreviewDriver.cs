@@ -60,6 +60,8 @@ namespace NerfDatasetCreator.Editor
                 Clear(target == null ? "Pick a target to see the rig." : "The target has no renderers to aim at.");
                 return;
             }
+            settings = settings.Clone();
+            SceneCameraSources.Resolve(settings); // moving a scene camera changes the key (PreviewPlanKey)
             var key = PreviewPlanKey.Of(settings, target.Measure);
             // The plan ignores the target's rotation, but its renderers' box turns with it: compare that too.
             if (key.Equals(_key) && target.Bounds == _bounds) return;
@@ -78,7 +80,7 @@ namespace NerfDatasetCreator.Editor
             var poses = DatasetSplits.All.Select(split => (IReadOnlyList<UnityPose>)plan.ViewsOf(split).Select(v => v.Pose).ToList()).ToList();
             for (var i = 0; i < 3; i++) Counts[i] = poses[i].Count;
             var bounds = target.Bounds;
-            _preview.SetPlan(poses[0], poses[1], poses[2], settings.Camera.VerticalFovDegrees, (double)settings.Width / settings.Height,
+            _preview.SetPlan(poses[0], poses[1], poses[2], plan.Settings.Camera.VerticalFovDegrees, (double)plan.Settings.Width / plan.Settings.Height,
                 new Vector3d(bounds.center.x, bounds.center.y, bounds.center.z), new Vector3d(bounds.size.x, bounds.size.y, bounds.size.z), plan.Distance);
             Status = "";
         }

@@ -6,7 +6,7 @@ namespace NerfDatasetCreator.Tool
 {
     /// <summary>
     /// <c>nerf-dataset plan --config f --out d</c>: plans the views of a settings file (target at the origin,
-    /// unknown bounds) and writes the dataset's JSON files and a rig preview PLY, but no images.
+    /// unknown bounds) and writes the dataset's JSON files, a rig preview PLY and its picture (top and side views), but no images.
     /// </summary>
     public static class PlanCommand
     {
@@ -60,6 +60,7 @@ namespace NerfDatasetCreator.Tool
             {
                 DatasetMetadataFiles.Write(session, plan, new Provenance(DateTime.UtcNow, null, "nerf-dataset plan", imagesRendered: false));
                 session.WriteText(DatasetLayout.RigPreviewFileName, RigPreviewPly.Write(plan));
+                File.WriteAllBytes(session.PathOf(RigPreviewPicture.FileName), RigPreviewPicture.Encode(plan));
                 session.Commit();
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
@@ -73,7 +74,7 @@ namespace NerfDatasetCreator.Tool
                              plan.ViewsOf(DatasetSplit.Test).Count() + " test views at distance " + ValidationProblem.Format(plan.Distance) + " into " + session.FinalFolder);
             if (plan.Time != null) stdout.WriteLine(TimeSummary.Describe(plan.Time));
             stdout.WriteLine("wrote transforms_train.json, transforms_val.json, transforms_test.json, " + DatasetLayout.ConfigFileName + ", " +
-                             DatasetLayout.RigPreviewFileName + " (no images: render them with the Unity plugin)");
+                             DatasetLayout.RigPreviewFileName + ", " + RigPreviewPicture.FileName + " (no images: render them with the Unity plugin)");
             return Program.Success;
         }
     }

@@ -1,0 +1,179 @@
+using System;
+using System.Collections.Generic;
+using System.Reflection;
+using UnityEditor;
+using UnityEditor.SceneManagement;
+using UnityEngine;
+using UnityEngine.Playables;
+using UnityEngine.SceneManagement;
+using Object = UnityEngine.Object;
+
+namespace NerfDatasetCreator.Editor
+{
+    /// <summary>
+    /// The poses of an animated scene camera at the times of Core's <see cref="AnimatedCameraSampling"/>, evaluated
+    /// on a copy of the camera's root object in a preview scene, never by moving the user's scene. The copy is posed
+    /// at each time by <see cref="ContentClock"/> — the dynamic capture's evaluator: Animators stepped from
+    /// <c>Rebind()</c>, legacy clips by <c>AnimationClip.SampleAnimation(go, t)</c> (UnityCsReference 2022.3
+    /// Modules/Animation/ScriptBindings/AnimationClip.bindings.cs:25), PlayableDirectors by <c>time = t</c> then
+    /// <c>Evaluate()</c> (Modules/Director/ScriptBindings/PlayableDirector.bindings.cs:78, 84). The root
+    /// (<c>Transform.root</c>, Runtime/Transform/ScriptBindings/Transform.bindings.cs:392) is copied whole so that
+    /// whatever animates the camera — an Animator on a parent, a Timeline whose track binds the camera — is copied with
+    /// it; Object.Instantiate remaps references inside the copied hierarchy to the copies, so the copied director
+    /// drives the copied camera.
+    /// <para>
+    /// Samples are cached until anything in the editor changes (<c>ObjectChangeEvents.changesPublished</c>,
+    /// Editor/Mono/Undo/EditorObjectChangeEvents.cs:58): the window plans on every edit, and an Animator is stepped
+    /// from the start for every sample.
+    /// </para>
+    /// </summary>
+    public static class AnimatedCameraSampler
+    {
+        /// <summary>What may animate the camera (particles never do).</summary>
+        public const TimeSources Drivers = TimeSources.Timeline | TimeSources.Animator | TimeSources.Animation;
+
+        static readonly Dictionary<string, List<SceneCamera>> Cache = new Dictionary<string, List<SceneCamera>>();
+        static bool _listening;
+
+        public static List<SceneCamera> Sample(CameraSourceSettings source, int width, int height, string field, out ValidationProblem problem)
+        {
+            problem = null;
+            if (string.IsNullOrWhiteSpace(source.ObjectPath)) return new List<SceneCamera>(); // Core reports the empty path
+            var found = SceneObjects.Find(source.ObjectPath);
+            var camera = found == null ? null : found.GetComponent<Camera>();
+            if (camera == null)
+            {
+                problem = new ValidationProblem(field + ".camera", source.ObjectPath,
+                    found == null ? "names no object in the open scenes." : "names an object without a Camera.",
+                    "Give the hierarchy path of the animated camera, with its scene open.");
+                return null;
+            }
+            var root = camera.transform.root.gameObject;
+            var length = ContentClock.ClipLength(root, Drivers);
+            if (!(length > 0))
+            {
+                problem = new ValidationProblem(field + ".camera", source.ObjectPath,
+                    "is not animated: no Animator, Animation or PlayableDirector with a clip on its root object \"" + root.name + "\" or below it.",
+                    "Animate the camera or a parent with an Animation clip or a Timeline whose PlayableDirector is under the same root object.");
+                return null;
+            }
+            double[] times;
+            try
+            {
+                var rate = source.FrameRate > 0 ? source.FrameRate : FrameRate(root);
+                times = AnimatedCameraSampling.Times(source.Start, AnimatedCameraSampling.ResolveEnd(source.End, length), source.Samples, source.FrameStep, rate, field);
+            }
+            catch (InvalidParameterException e)
+            {
+                problem = e.Problems[0];
+                return null;
+            }
+
+            Listen();
+            var key = string.Join("|", camera.GetInstanceID(), source.Start, source.End, source.Samples, source.FrameStep, source.FrameRate, width, height);
+            if (Cache.TryGetValue(key, out var cached)) return cached;
+            var sampled = SampleOnCopy(camera, root, times, width, height, field, out problem);
+            if (problem == null) Cache[key] = sampled;
+            return sampled;
+        }
+
+        /// <summary>The camera's pose and field of view at each time, read from a posed copy. The user's objects are only read.</summary>
+        public static List<SceneCamera> SampleOnCopy(Camera camera, GameObject root, IReadOnlyList<double> times, int width, int height, string field,
+            out ValidationProblem problem)
+        {
+            problem = null;
+            var relative = RelativePath(root.transform, camera.transform);
+            var name = SceneObjectPath.Of(camera.gameObject);
+            var scene = EditorSceneManager.NewPreviewScene();
+            GameObject holder = null;
+            try
+            {
+                // As TimeMeasurement and CaptureStage: copied under an inactive holder, scripts off before it is activated.
+                holder = EditorUtility.CreateGameObjectWithHideFlags("NeRF Dataset Creator animated camera", HideFlags.HideAndDontSave);
+                SceneManager.MoveGameObjectToScene(holder, scene);
+                holder.SetActive(false);
+                var copy = Object.Instantiate(root, holder.transform, true);
+                foreach (var t in copy.GetComponentsInChildren<Transform>(true)) t.gameObject.hideFlags = HideFlags.HideAndDontSave;
+                foreach (var script in copy.GetComponentsInChildren<MonoBehaviour>(true))
+                    if (script != null) script.enabled = false;
+                copy.SetActive(true);
+                holder.SetActive(true);
+                var copiedTransform = relative.Length == 0 ? copy.transform : copy.transform.Find(relative);
+                var copied = copiedTransform == null ? null : copiedTransform.GetComponent<Camera>();
+                if (copied == null) throw new InvalidOperationException("The copy of " + name + " was not found at " + relative + ".");
+                var clock = new ContentClock(Drivers, 0);
+                var result = new List<SceneCamera>(times.Count);
+                foreach (var time in times)
+                {
+                    clock.Show(copy, time);
+                    var read = SceneCameraSources.Read(copied, width, height, field + ".camera", out problem);
+                    if (problem != null) return null;
+                    result.Add(new SceneCamera(name + " @ " + time.ToString("0.####", System.Globalization.CultureInfo.InvariantCulture) + " s", read.Pose, read.VerticalFovDegrees));
+                }
+                return result;
+            }
+            finally
+            {
+                EditorSceneManager.ClosePreviewScene(scene);
+                if (holder != null) Object.DestroyImmediate(holder);
+            }
+        }
+
+        /// <summary>
+        /// Frames per second of what drives the camera: the longest clip's <c>AnimationClip.frameRate</c>
+        /// (AnimationClip.bindings.cs:48), else a Timeline's, read by name (<c>TimelineAsset.editorSettings.frameRate</c>:
+        /// this package does not reference the Timeline package), else <see cref="AnimatedCameraSampling.DefaultFrameRate"/>.
+        /// </summary>
+        public static double FrameRate(GameObject root)
+        {
+            AnimationClip longest = null;
+            foreach (var animator in root.GetComponentsInChildren<Animator>(true))
+                if (animator.runtimeAnimatorController != null)
+                    foreach (var clip in animator.runtimeAnimatorController.animationClips)
+                        if (clip != null && (longest == null || clip.length > longest.length)) longest = clip;
+            foreach (var animation in root.GetComponentsInChildren<Animation>(true))
+                if (animation.clip != null && (longest == null || animation.clip.length > longest.length)) longest = animation.clip;
+            if (longest != null && longest.frameRate > 0) return longest.frameRate;
+            foreach (var director in root.GetComponentsInChildren<PlayableDirector>(true))
+            {
+                var asset = director.playableAsset;
+                if (asset == null) continue;
+                var settings = Member(asset, "editorSettings");
+                var rate = settings == null ? null : Member(settings, "frameRate") ?? Member(settings, "fps");
+                if (rate is IConvertible convertible)
+                {
+                    var value = convertible.ToDouble(System.Globalization.CultureInfo.InvariantCulture);
+                    if (value > 0) return value;
+                }
+            }
+            return AnimatedCameraSampling.DefaultFrameRate;
+        }
+
+        static object Member(object o, string name)
+        {
+            const BindingFlags flags = BindingFlags.Public | BindingFlags.Instance;
+            var type = o.GetType();
+            var property = type.GetProperty(name, flags);
+            if (property != null) return property.GetValue(o);
+            return type.GetField(name, flags)?.GetValue(o);
+        }
+
+        static string RelativePath(Transform root, Transform t)
+        {
+            var names = new List<string>();
+            for (var at = t; at != null && at != root; at = at.parent) names.Add(at.name);
+            names.Reverse();
+            return string.Join("/", names);
+        }
+
+        static void Listen()
+        {
+            if (_listening) return;
+            _listening = true;
+            ObjectChangeEvents.changesPublished += (ref ObjectChangeEventStream stream) => Cache.Clear();
+        }
+
+        /// <summary>Forgets every cached sample (tests, or a change the events do not report).</summary>
+        public static void ClearCache() => Cache.Clear();
+    }
+}
