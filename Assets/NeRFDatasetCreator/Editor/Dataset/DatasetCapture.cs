@@ -58,6 +58,14 @@ namespace NerfDatasetCreator.Editor
             SceneCameraSources.Resolve(settings);
             settings = CameraSourcePlanning.Resolved(settings, out _);
             var options = OptionsFor(settings, template);
+            if (settings.Background != null && settings.Background.Sky)
+            {
+                options.Skybox = SkyboxOf(template);
+                if (options.Skybox == null)
+                    problems.Add(new ValidationProblem("background", "\"sky\"", "needs a skybox material, but " +
+                        (template != null ? "the template camera has no Skybox component and " : "") + "the active scene has none.",
+                        "Assign a Skybox Material in the Lighting window (Environment), or use \"transparent\" or a colour."));
+            }
             try
             {
                 CaptureSession.CheckTarget(target, options.Isolation);
@@ -261,6 +269,17 @@ namespace NerfDatasetCreator.Editor
 
         static IReadOnlyList<UnityPose> Poses(PreparedCapture prepared) => prepared.Run.Plan.Views.Select(v => v.Pose).ToList();
 
+        /// <summary>
+        /// The sky an environment capture draws: the template camera's own enabled Skybox component, which is what that
+        /// camera draws (Manual: class-Skybox), else the active scene's <c>RenderSettings.skybox</c> (read here, outside
+        /// any lighting override, so it is the user's scene's).
+        /// </summary>
+        static Material SkyboxOf(Camera template)
+        {
+            if (template != null && template.TryGetComponent<Skybox>(out var own) && own.enabled && own.material != null) return own.material;
+            return RenderSettings.skybox;
+        }
+
         static CaptureOptions OptionsFor(DatasetSettings settings, Camera template)
         {
             var splits = DatasetSplits.All.Select(settings.Split).ToList();
@@ -279,6 +298,9 @@ namespace NerfDatasetCreator.Editor
                 NearClip = settings.Camera.NearClip,
                 FarClip = settings.Camera.FarClip,
                 TemplateCamera = template,
+                // Inside-out views need the surroundings: a dataset with a volume split copies every root object of the
+                // loaded scenes (the mask then covers all geometry), not just the target.
+                Isolation = splits.Any(s => s.Count > 0 && s.Source != null && s.Source.IsVolume) ? CaptureIsolation.WholeScene : CaptureIsolation.TargetOnly,
             };
         }
 
