@@ -118,6 +118,24 @@ namespace NerfDatasetCreator
             return new ImportedSplit(new ImportedPoses(source.ObjectPath, Format, cameras, null, warnings), cameras, field);
         }
 
+        /// <summary>
+        /// For NeRF's Blender loaders, when a split with views is an inside-out volume: they sample every ray only
+        /// between near 2 and far 6 (<see cref="LoaderRangeCheck"/>), which an environment seen from inside does not
+        /// fit; null otherwise.
+        /// </summary>
+        public static ValidationProblem InsideOutWarning(DatasetSettings settings)
+        {
+            foreach (var split in DatasetSplits.All)
+            {
+                var s = settings.Split(split);
+                if (s?.Source == null || !s.Source.IsVolume || s.Count == 0) continue;
+                return new ValidationProblem("splits." + DatasetSplits.Name(split) + ".source", "\"volume\"",
+                    "places cameras inside the scene looking out. NeRF's Blender loaders (bmild/nerf, nerf-pytorch) sample every ray only between 2 and 6 units from the camera, so nearer walls and farther scenery are lost: they cannot train this dataset.",
+                    "Train with the other exports: nerfstudio (nerfacto's scene contraction), instant-ngp (aabb_scale up to 128) or 3DGS (COLMAP); or leave \"nerf\" out of loaders.");
+            }
+            return null;
+        }
+
         /// <summary>"Walls/North 120, Props/Crate 3" — the obstacles that rejected most, for messages.</summary>
         static string Worst(VolumeSample sample) =>
             string.Join(", ", sample.RejectedBy.OrderByDescending(p => p.Value).ThenBy(p => p.Key, StringComparer.Ordinal).Take(3)

@@ -255,7 +255,10 @@ namespace NerfDatasetCreator.Editor
         {
             if (!prepared.Run.WritesPointCloud) return null;
             var warnings = new List<ValidationProblem>();
-            prepared.Surface = TargetSurface.Collect(prepared.Target, warnings);
+            // A whole-scene capture (an inside-out volume) samples every mesh it renders, not only the target's.
+            prepared.Surface = prepared.Options.Isolation == CaptureIsolation.WholeScene
+                ? TargetSurface.CollectScene(warnings)
+                : TargetSurface.Collect(prepared.Target, warnings);
             foreach (var warning in warnings) Debug.LogWarning("NeRF Dataset Creator: " + warning);
             var problems = TargetPointCloud.Check(prepared.Run.Plan.Settings, prepared.Surface);
             return problems.Count == 0 ? null : Refused(problems);

@@ -52,6 +52,23 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void NerfBlenderLoadersGetOnePlainWarningInsteadOfTargetNearFar()
+        {
+            var s = WithVolume();
+            s.Loaders = TargetLoaders.All;
+            var plan = CapturePlan.Build(s, PlanTarget.AtOrigin);
+            var warnings = plan.Warnings;
+            Assume.That(LoaderRangeCheck.ForCapture(plan.Views.Select(v => v.Pose), plan.Normalisation, Vector3d.Zero, 0).Select(p => p.Field),
+                Does.Contain("normalisation.near"), "measured from the target, these cameras break NeRF's near 2");
+            var plain = warnings.Single(w => w.Field == "splits.train.source");
+            Assert.That(plain.Reason, Does.Contain("between 2 and 6 units"));
+            Assert.That(plain.Fix, Does.StartWith("Train with the other exports: nerfstudio"));
+            Assert.That(warnings.Where(w => w.Field == "normalisation.near" || w.Field == "normalisation.far"), Is.Empty);
+            s.Loaders = TargetLoaders.All & ~TargetLoaders.Nerf;
+            Assert.That(CapturePlan.Build(s, PlanTarget.AtOrigin).Warnings.Where(w => w.Field == "splits.train.source"), Is.Empty);
+        }
+
+        [Test]
         public void ABoxFullOfObstaclesStopsThePlanWithTheCounts()
         {
             var block = OrientedBox.AxisAligned("Block", new Vector3d(0, 1, 0), new Vector3d(11, 3, 11));

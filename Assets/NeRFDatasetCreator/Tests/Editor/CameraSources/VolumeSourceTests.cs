@@ -1,7 +1,9 @@
+using System.Collections.Generic;
 using System.Linq;
 using NerfDatasetCreator.Editor.Tests.Capture;
 using NUnit.Framework;
 using UnityEngine;
+using UnityEngine.SceneManagement;
 
 namespace NerfDatasetCreator.Editor.Tests.CameraSources
 {
@@ -24,6 +26,7 @@ namespace NerfDatasetCreator.Editor.Tests.CameraSources
             var scene = TestScene.Open();
             try
             {
+                Assume.That(SceneManager.sceneCount, Is.EqualTo(1), "colliders of other open scenes would be obstacles too");
                 var volume = new GameObject("CaptureVolume").transform;
                 volume.position = new Vector3(0, 1, 0);
                 volume.localScale = new Vector3(10, 2, 10);
@@ -59,6 +62,37 @@ namespace NerfDatasetCreator.Editor.Tests.CameraSources
                     Assert.That(Mathf.Abs(p.x) <= 5 && p.y >= 0 && p.y <= 2 && Mathf.Abs(p.z) <= 5, Is.True, "inside the capture box: " + p);
                 }
                 Assert.That(plan.Warnings.Single(w => w.Field == "splits.train.source.box").Reason, Does.Contain("Wall"));
+            }
+            finally
+            {
+                TestScene.Close(scene);
+            }
+        }
+
+        [Test]
+        public void AnEnvironmentsSurfaceIsEveryActiveRootsMeshes()
+        {
+            var scene = TestScene.Open();
+            try
+            {
+                Assume.That(SceneManager.sceneCount, Is.EqualTo(1), "meshes of other open scenes would be sampled too");
+                var floor = GameObject.CreatePrimitive(PrimitiveType.Cube);
+                floor.name = "Floor";
+                floor.transform.position = new Vector3(0, -1, 0);
+                var crate = GameObject.CreatePrimitive(PrimitiveType.Cube);
+                crate.name = "Crate";
+                crate.transform.position = new Vector3(3, 0, 0);
+                var hidden = GameObject.CreatePrimitive(PrimitiveType.Cube);
+                hidden.SetActive(false); // inactive roots are neither rendered nor sampled
+
+                var warnings = new List<ValidationProblem>();
+                var meshes = TargetSurface.CollectScene(warnings);
+                Assert.That(warnings, Is.Empty);
+                // Each cube: 12 triangles; world positions, so the crate's vertices are around x = 3.
+                Assert.That(meshes, Has.Count.EqualTo(2));
+                Assert.That(meshes.Sum(m => m.TriangleCount), Is.EqualTo(24));
+                Assert.That(meshes.SelectMany(m => m.Vertices).Max(v => v.X), Is.EqualTo(3.5).Within(1e-6));
+                Assert.That(meshes.SelectMany(m => m.Vertices).Min(v => v.Y), Is.EqualTo(-1.5).Within(1e-6));
             }
             finally
             {
