@@ -7,10 +7,11 @@ using System.Text;
 namespace NerfDatasetCreator
 {
     /// <summary>
-    /// <c>nerf-dataset convert &lt;dir&gt; --to nerfstudio|colmap|ngp</c>: turns any Blender-format dataset (nerf_synthetic
+    /// <c>nerf-dataset convert &lt;dir&gt; --to nerfstudio|colmap|ngp|dynamic3dgs</c>: turns any Blender-format dataset (nerf_synthetic
     /// included) into another loader's format without touching the source. Default output locations:
     /// nerfstudio → <c>&lt;dir&gt;/transforms.json</c>; ngp → <c>&lt;dir&gt;/ngp/transforms.json</c>; colmap →
-    /// <c>&lt;dir&gt;/colmap/</c> with <c>images/</c> (copies, flattened names) and <c>sparse/0/</c>. Nothing is ever
+    /// <c>&lt;dir&gt;/colmap/</c> with <c>images/</c> (copies, flattened names) and <c>sparse/0/</c>; dynamic3dgs →
+    /// <c>&lt;dir&gt;/dynamic3dgs/</c> (multi-view dynamic captures only). Nothing is ever
     /// overwritten: every destination is checked before the first byte is written.
     /// </summary>
     public static class DatasetConverter
@@ -24,7 +25,7 @@ namespace NerfDatasetCreator
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
-            var time = TimeDatasetChecks.ConversionWarning(datasetDir);
+            var time = target == ExportTarget.Dynamic3dgs ? null : TimeDatasetChecks.ConversionWarning(datasetDir);
             if (time != null) warnings.Add(time);
             return Export(scene, target, outDir, null, null, warnings, depths);
         }
@@ -46,6 +47,7 @@ namespace NerfDatasetCreator
                 case ExportTarget.Nerfstudio: return ToNerfstudio(scene, outDir ?? scene.RootDirectory, warnings);
                 case ExportTarget.Ngp: return ToNgp(scene, outDir ?? Path.Combine(scene.RootDirectory, NgpWriter.FolderName), sceneRadius, warnings);
                 case ExportTarget.Colmap: return ToColmap(scene, outDir ?? Path.Combine(scene.RootDirectory, ColmapFolderName), points, warnings, depths);
+                case ExportTarget.Dynamic3dgs: return Dynamic3DGaussiansExport.Write(scene, outDir ?? Path.Combine(scene.RootDirectory, Dynamic3DGaussians.FolderName), warnings);
                 default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
             }
         }
