@@ -247,7 +247,10 @@ namespace NerfDatasetCreator.Editor
         {
             if (!prepared.Run.WritesPointCloud) return null;
             var warnings = new List<ValidationProblem>();
-            prepared.Surface = TargetSurface.Collect(prepared.Target, warnings);
+            // A dynamic capture's cloud is the surface at its first time step (the user's target is only read).
+            var plan = prepared.Run.Plan;
+            prepared.Surface = TimeMeasurement.SurfaceAtStart(prepared.Target, plan.Time, plan.Settings.Seed, warnings)
+                               ?? TargetSurface.Collect(prepared.Target, warnings);
             foreach (var warning in warnings) Debug.LogWarning("NeRF Dataset Creator: " + warning);
             var problems = TargetPointCloud.Check(prepared.Run.Plan.Settings, prepared.Surface);
             return problems.Count == 0 ? null : Refused(problems);
