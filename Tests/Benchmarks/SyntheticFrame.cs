@@ -8,6 +8,24 @@ namespace NerfDatasetCreator.Benchmarks
     /// </summary>
     static class SyntheticFrame
     {
+        /// <summary>
+        /// The same scene in the capture's own layout: colour at k× the output size with a 1-byte (R8) mask, depth
+        /// and Unity world normals rendered at the output size (supersampling 1), as DatasetViewWriter wraps them.
+        /// </summary>
+        public static (RawFrame Colour, RawFrame Data) CaptureLayout(int outputSize, int k, double noise = 0.02)
+        {
+            var colour = Sphere(outputSize, k, noise: noise);
+            var r8 = new byte[colour.Width * colour.Height];
+            for (int i = 0; i < r8.Length; i++) r8[i] = colour.Mask[4 * i];
+            colour.Mask = r8;
+            colour.MaskBytesPerPixel = 1;
+            var atOutput = Sphere(outputSize, 1, noise: noise);
+            var data = new RawFrame(outputSize, outputSize, 1) { Depth = atOutput.Depth, Normals = atOutput.Normals, NormalsInUnityWorld = true };
+            colour.Depth = null;
+            colour.Normals = null;
+            return (colour, data);
+        }
+
         public static RawFrame Sphere(int outputSize, int k, bool linearFloatColour = false, double noise = 0.02)
         {
             int size = outputSize * k;

@@ -9,7 +9,12 @@ namespace NerfDatasetCreator
         public static void Write(DatasetWriteSession session, CapturePlan plan, Provenance provenance)
         {
             foreach (var split in DatasetSplits.All)
-                session.WriteText(DatasetLayout.TransformsFileName(split), BlenderTransformsWriter.Write(plan, split));
+            {
+                // Streamed: the text of a large plan's file is never held in memory whole.
+                var path = session.PathOf(DatasetLayout.TransformsFileName(split));
+                System.IO.Directory.CreateDirectory(System.IO.Path.GetDirectoryName(path));
+                using (var file = JsonNumbers.CreateFile(path)) BlenderTransformsWriter.Write(plan, split, file);
+            }
             session.WriteText(DatasetLayout.ConfigFileName, DatasetConfigWriter.Write(plan, provenance));
         }
     }

@@ -61,7 +61,7 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>A writer over <paramref name="text"/> with the dataset's formatting.</summary>
-        public static JsonTextWriter CreateWriter(StringWriter text, int indentation = 2)
+        public static JsonTextWriter CreateWriter(TextWriter text, int indentation = 2)
         {
             text.NewLine = "\n";
             return new JsonTextWriter(text)
@@ -75,5 +75,18 @@ namespace NerfDatasetCreator
         }
 
         public static StringWriter CreateText() => new StringWriter(new StringBuilder(), CultureInfo.InvariantCulture) { NewLine = "\n" };
+
+        /// <summary>
+        /// A UTF-8 (no BOM) file writer with the same invariant culture and "\n" line ends as <see cref="CreateText"/>,
+        /// for files too large to build as one string first (a transforms file of 300 000 views is 250 MB of text).
+        /// </summary>
+        public static StreamWriter CreateFile(string path) => new InvariantStreamWriter(path);
+
+        sealed class InvariantStreamWriter : StreamWriter
+        {
+            public InvariantStreamWriter(string path) : base(path, false, new UTF8Encoding(false), 1 << 16) => NewLine = "\n";
+
+            public override IFormatProvider FormatProvider => CultureInfo.InvariantCulture;
+        }
     }
 }
