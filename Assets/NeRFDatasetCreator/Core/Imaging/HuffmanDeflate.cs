@@ -34,11 +34,30 @@ namespace NerfDatasetCreator
         static readonly short[] LengthExtraValue = new short[MaxMatch + 1];
         static readonly byte[] SymbolExtraBits = new byte[LiteralLengthSymbols];
 
+        // Per word: one bit per byte (bit 0 of each byte), gathered into one byte by a multiplication, then the
+        // zero bits (repeats) at its bottom and top from these tables; LowBytes[n] masks the lowest n bytes.
+        const ulong OneBitPerByte = 0x0101010101010101UL;
+        const ulong GatherBits = 0x0102040810204080UL;
+        static readonly byte[] TrailingZeroBits = new byte[256];
+        static readonly byte[] LeadingZeroBits = new byte[256];
+        static readonly ulong[] LowBytes = new ulong[9];
+
         // The order in which code-length code lengths are sent (RFC 1951 §3.2.7).
         static readonly byte[] CodeLengthOrder = { 16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15 };
 
         static HuffmanDeflate()
         {
+            for (int bitsSet = 1; bitsSet < 256; bitsSet++)
+            {
+                int low = 0, high = 0;
+                while ((bitsSet & (1 << low)) == 0) low++;
+                while ((bitsSet & (0x80 >> high)) == 0) high++;
+                TrailingZeroBits[bitsSet] = (byte)low;
+                LeadingZeroBits[bitsSet] = (byte)high;
+            }
+            for (int n = 0; n < 8; n++) LowBytes[n] = (1UL << (8 * n)) - 1;
+            LowBytes[8] = ulong.MaxValue;
+
             int[] baseLength = { 3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 15, 17, 19, 23, 27, 31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258 };
             int[] extra = { 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0 };
             for (int i = 0; i < baseLength.Length; i++)
@@ -71,6 +90,10 @@ namespace NerfDatasetCreator
         readonly int[] _literal = new int[256];
         readonly int[] _match = new int[MaxMatch + 1];
         readonly CodeLengthHeader _header = new CodeLengthHeader();
+        // Literals from which a table of literal pairs (65 536 entries) pays for its construction.
+        const long PairTableFrom = 1 << 17;
+        ulong[] _pairs;
+        long _literalCount;
         bool _stored;
         long _payloadBits;
         int _size;
@@ -107,13 +130,14 @@ namespace NerfDatasetCreator
             ulong previous = 0; // the 8 stream bytes before the current position, the latest in the top byte
             ulong s1 = 1, s2 = 0, laneEven = 0, laneOdd = 0;
             int lanes = 0;
-            int repeats = 0, pending = 0;
+            int repeats = 0;
+            ulong pending = 0; // the bytes of a run still too short for a match, the first in the lowest byte
             for (int y = 0; y < _height; y++)
             {
                 int t = types[y];
                 if (y > 0 && t == (int)((previous >> typeShift) & 0xFF))
                 {
-                    if (repeats < MinRepeats) pending |= t << (8 * repeats);
+                    if (repeats < MinRepeats) pending |= (ulong)t << (8 * repeats);
                     repeats++;
                 }
                 else
@@ -121,7 +145,7 @@ namespace NerfDatasetCreator
                     if (repeats != 0)
                     {
                         if (repeats < MinRepeats)
-                            for (int r = 0; r < repeats; r++) counts[(pending >> (8 * r)) & 0xFF]++;
+                            for (int r = 0; r < repeats; r++) counts[(int)(pending >> (8 * r)) & 0xFF]++;
                         else CountMatches(counts, repeats);
                         repeats = 0;
                         pending = 0;
@@ -169,26 +193,27 @@ namespace NerfDatasetCreator
                             s2 += s1;
                         }
                         previous = (previous >> (8 * n)) | (w << (64 - 8 * n));
+                        equal |= ~0UL << (8 * n); // bytes past the row's end are never sent
                     }
-                    for (int k = 0; k < 8 * n; k += 8)
+                    // Which bytes differ from the byte a pixel earlier, one bit each: the repeats at the bottom of the
+                    // word end the current run, those at the top start the next one, everything between is sent as
+                    // literals (a short run inside one word is not worth a branch per byte).
+                    ulong differs = equal | (equal >> 4);
+                    differs |= differs >> 2;
+                    differs |= differs >> 1;
+                    int nonzero = (int)(((differs & OneBitPerByte) * GatherBits) >> 56);
+                    int low = TrailingZeroBits[nonzero], top = n == 8 ? LeadingZeroBits[nonzero] : 0, end = n - top;
+                    if (repeats < MinRepeats) pending |= (w & LowBytes[low]) << (8 * repeats);
+                    repeats += low;
+                    if (repeats != 0)
                     {
-                        int b = (int)(w >> k) & 0xFF;
-                        if (((equal >> k) & 0xFF) == 0)
-                        {
-                            if (repeats < MinRepeats) pending |= b << (8 * repeats);
-                            repeats++;
-                            continue;
-                        }
-                        if (repeats != 0)
-                        {
-                            if (repeats < MinRepeats)
-                                for (int r = 0; r < repeats; r++) counts[(pending >> (8 * r)) & 0xFF]++;
-                            else CountMatches(counts, repeats);
-                            repeats = 0;
-                            pending = 0;
-                        }
-                        counts[b]++;
+                        if (repeats < MinRepeats)
+                            for (int r = 0; r < repeats; r++) counts[(int)(pending >> (8 * r)) & 0xFF]++;
+                        else CountMatches(counts, repeats);
                     }
+                    for (int k = 8 * low; k < 8 * end; k += 8) counts[(int)(w >> k) & 0xFF]++;
+                    repeats = top;
+                    pending = top == 0 ? 0 : w >> (8 * end);
                 }
                 s2 += Weighted(laneEven, laneOdd);
                 laneEven = laneOdd = 0;
@@ -199,7 +224,7 @@ namespace NerfDatasetCreator
             if (repeats != 0)
             {
                 if (repeats < MinRepeats)
-                    for (int r = 0; r < repeats; r++) counts[(pending >> (8 * r)) & 0xFF]++;
+                    for (int r = 0; r < repeats; r++) counts[(int)(pending >> (8 * r)) & 0xFF]++;
                 else CountMatches(counts, repeats);
             }
             adler = (uint)((s2 << 16) | s1);
@@ -209,6 +234,8 @@ namespace NerfDatasetCreator
             HuffmanCode.BuildCodes(_lengths, LiteralLengthSymbols, _codes);
             long matches = 0;
             long bits = 0;
+            _literalCount = 0;
+            for (int b = 0; b < 256; b++) _literalCount += counts[b];
             for (int s = 0; s < LiteralLengthSymbols; s++)
             {
                 bits += (long)counts[s] * (_lengths[s] + SymbolExtraBits[s]);
@@ -285,19 +312,21 @@ namespace NerfDatasetCreator
 
             int[] literal = _literal;
             int[] match = _match;
+            ulong[] pairs = _literalCount >= PairTableFrom ? BuildPairs() : null;
             ulong[] words = Words;
             byte[] types = Types;
             int rowWords = RowWords, lastWord = rowWords - 1, lastBytes = _rowBytes - 8 * lastWord;
             int shift = 8 * _bytesPerPixel, back = 64 - shift, typeShift = 64 - shift;
             ulong firstRowForbid = FirstRowForbid(_bytesPerPixel);
             ulong previous = 0;
-            int repeats = 0, pending = 0;
+            int repeats = 0;
+            ulong pending = 0;
             for (int y = 0; y < _height; y++)
             {
                 int t = types[y];
                 if (y > 0 && t == (int)((previous >> typeShift) & 0xFF))
                 {
-                    if (repeats < MinRepeats) pending |= t << (8 * repeats);
+                    if (repeats < MinRepeats) pending |= (ulong)t << (8 * repeats);
                     repeats++;
                 }
                 else
@@ -328,63 +357,87 @@ namespace NerfDatasetCreator
                             continue;
                         }
                     }
-                    else previous = (previous >> (8 * n)) | (w << (64 - 8 * n));
-                    for (int k = 0; k < 8 * n; k += 8)
+                    else
                     {
-                        int b = (int)(w >> k) & 0xFF;
-                        if (((equal >> k) & 0xFF) == 0)
+                        previous = (previous >> (8 * n)) | (w << (64 - 8 * n));
+                        equal |= ~0UL << (8 * n);
+                    }
+                    // The same cut as in Measure.
+                    ulong differs = equal | (equal >> 4);
+                    differs |= differs >> 2;
+                    differs |= differs >> 1;
+                    int nonzero = (int)(((differs & OneBitPerByte) * GatherBits) >> 56);
+                    int low = TrailingZeroBits[nonzero], top = n == 8 ? LeadingZeroBits[nonzero] : 0, end = n - top;
+                    if (repeats < MinRepeats) pending |= (w & LowBytes[low]) << (8 * repeats);
+                    repeats += low;
+                    if (repeats != 0)
+                    {
+                        if (repeats < MinRepeats)
                         {
-                            if (repeats < MinRepeats) pending |= b << (8 * repeats);
-                            repeats++;
-                            continue;
-                        }
-                        if (repeats != 0)
-                        {
-                            if (repeats < MinRepeats)
+                            for (int r = 0; r < repeats; r++)
                             {
-                                for (int r = 0; r < repeats; r++)
+                                int e = literal[(int)(pending >> (8 * r)) & 0xFF];
+                                bits |= (ulong)(e & 0xFFFF) << count;
+                                count += e >> 16;
+                                if (count >= 32)
                                 {
-                                    int e = literal[(pending >> (8 * r)) & 0xFF];
-                                    bits |= (ulong)(e & 0xFFFF) << count;
-                                    count += e >> 16;
-                                    if (count >= 32)
-                                    {
-                                        output[o] = (byte)bits;
-                                        output[o + 1] = (byte)(bits >> 8);
-                                        output[o + 2] = (byte)(bits >> 16);
-                                        output[o + 3] = (byte)(bits >> 24);
-                                        o += 4;
-                                        bits >>= 32;
-                                        count -= 32;
-                                    }
+                                    output[o] = (byte)bits;
+                                    output[o + 1] = (byte)(bits >> 8);
+                                    output[o + 2] = (byte)(bits >> 16);
+                                    output[o + 3] = (byte)(bits >> 24);
+                                    o += 4;
+                                    bits >>= 32;
+                                    count -= 32;
                                 }
                             }
-                            else
+                        }
+                        else
+                        {
+                            while (repeats > 0)
                             {
-                                while (repeats > 0)
+                                int m = repeats > MaxMatch ? MaxMatch : repeats;
+                                if (repeats - m > 0 && repeats - m < 3) m = repeats - 3;
+                                repeats -= m;
+                                int e = match[m];
+                                bits |= (ulong)(e & 0xFFFFFF) << count;
+                                count += e >> 24;
+                                if (count >= 32)
                                 {
-                                    int m = repeats > MaxMatch ? MaxMatch : repeats;
-                                    if (repeats - m > 0 && repeats - m < 3) m = repeats - 3;
-                                    repeats -= m;
-                                    int e = match[m];
-                                    bits |= (ulong)(e & 0xFFFFFF) << count;
-                                    count += e >> 24;
-                                    if (count >= 32)
-                                    {
-                                        output[o] = (byte)bits;
-                                        output[o + 1] = (byte)(bits >> 8);
-                                        output[o + 2] = (byte)(bits >> 16);
-                                        output[o + 3] = (byte)(bits >> 24);
-                                        o += 4;
-                                        bits >>= 32;
-                                        count -= 32;
-                                    }
+                                    output[o] = (byte)bits;
+                                    output[o + 1] = (byte)(bits >> 8);
+                                    output[o + 2] = (byte)(bits >> 16);
+                                    output[o + 3] = (byte)(bits >> 24);
+                                    o += 4;
+                                    bits >>= 32;
+                                    count -= 32;
                                 }
                             }
-                            repeats = 0;
-                            pending = 0;
                         }
-                        int entry = literal[b];
+                    }
+                    int k = 8 * low, stop = 8 * end;
+                    if (pairs != null)
+                    {
+                        // Two literals per lookup: their codes joined (at most 30 bits) with the total length above.
+                        for (; k + 16 <= stop; k += 16)
+                        {
+                            ulong pair = pairs[(int)(w >> k) & 0xFFFF];
+                            bits |= (pair & 0xFFFFFFFF) << count;
+                            count += (int)(pair >> 32);
+                            if (count >= 32)
+                            {
+                                output[o] = (byte)bits;
+                                output[o + 1] = (byte)(bits >> 8);
+                                output[o + 2] = (byte)(bits >> 16);
+                                output[o + 3] = (byte)(bits >> 24);
+                                o += 4;
+                                bits >>= 32;
+                                count -= 32;
+                            }
+                        }
+                    }
+                    for (; k < stop; k += 8)
+                    {
+                        int entry = literal[(int)(w >> k) & 0xFF];
                         bits |= (ulong)(entry & 0xFFFF) << count;
                         count += entry >> 16;
                         if (count >= 32)
@@ -398,6 +451,8 @@ namespace NerfDatasetCreator
                             count -= 32;
                         }
                     }
+                    repeats = top;
+                    pending = top == 0 ? 0 : w >> (8 * end);
                 }
             }
             if (repeats != 0) FlushRepeats(repeats, pending, ref bits, ref count, output, ref o);
@@ -411,13 +466,32 @@ namespace NerfDatasetCreator
             if (o - at != _size) throw new InvalidOperationException($"DEFLATE stream is {o - at} bytes; {_size} were measured.");
         }
 
-        void FlushRepeats(int repeats, int pending, ref ulong bits, ref int count, byte[] output, ref int o)
+        /// <summary>The codes of every two literals (the first in the low byte of the index), for <see cref="Write"/>.</summary>
+        ulong[] BuildPairs()
+        {
+            ulong[] pairs = _pairs ?? (_pairs = new ulong[65536]);
+            int[] literal = _literal;
+            for (int first = 0; first < 256; first++)
+            {
+                int a = literal[first], aBits = a >> 16;
+                if (aBits == 0) continue; // never sent: its pairs are never looked up
+                ulong aCode = (ulong)(a & 0xFFFF);
+                for (int second = 0; second < 256; second++)
+                {
+                    int b = literal[second];
+                    pairs[(second << 8) | first] = (aCode | ((ulong)(b & 0xFFFF) << aBits)) | ((ulong)(aBits + (b >> 16)) << 32);
+                }
+            }
+            return pairs;
+        }
+
+        void FlushRepeats(int repeats, ulong pending, ref ulong bits, ref int count, byte[] output, ref int o)
         {
             if (repeats < MinRepeats)
             {
                 for (int r = 0; r < repeats; r++)
                 {
-                    int e = _literal[(pending >> (8 * r)) & 0xFF];
+                    int e = _literal[(int)(pending >> (8 * r)) & 0xFF];
                     Put(e & 0xFFFF, e >> 16, ref bits, ref count, output, ref o);
                 }
                 return;

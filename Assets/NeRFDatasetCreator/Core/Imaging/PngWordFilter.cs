@@ -16,8 +16,8 @@ namespace NerfDatasetCreator
         const ulong NotLowBits = 0xFEFEFEFEFEFEFEFEUL;
         const ulong LaneSum = 0x0001000100010001UL;
 
-        /// <summary>Words sampled per row by <see cref="Choose"/>: every this-many-th word.</summary>
-        internal const int SampleEvery = 2;
+        /// <summary>Words per pair of adjacent words that <see cref="Choose"/> samples.</summary>
+        internal const int SampleEvery = 4;
 
         /// <summary>
         /// Writes the residuals of filter <paramref name="type"/> (0–3) for the row <paramref name="row"/>[0…words)
@@ -69,46 +69,28 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>
-        /// The filter among None, Sub, Up and Average whose residuals have the smallest sum of |signed byte| over every
-        /// <see cref="SampleEvery"/>-th word of the row (the heuristic the PNG specification recommends, sampled; Paeth
-        /// is left out because it cannot be computed on words). Ties go to the lower type, so an all-zero row gets None,
-        /// whose type byte 0 lets a run of zeros go on into the next row. The padding bytes of a row's last word take
-        /// part in its sums, which only sways the choice on rows a few words long.
+        /// The filter among None, Sub, Up and Average that leaves the least to code, estimated on pairs of adjacent
+        /// words, one pair in every <see cref="SampleEvery"/> words: the sum of |signed residual| (the heuristic the
+        /// PNG specification recommends) over the second word's bytes, leaving out the bytes that equal the residual
+        /// a pixel earlier, because <see cref="HuffmanDeflate"/> sends runs of those as matches that cost next to
+        /// nothing (this is what makes Up win on normal maps). Paeth is left out: it cannot be computed on words.
+        /// Ties go to the lower type, so an all-zero row gets None, whose type byte 0 lets a run of zeros go on into
+        /// the next row.
         /// </summary>
         internal static int Choose(ulong[] row, ulong[] up, int words, int shift)
         {
             int back = 64 - shift;
             long none = 0, sub = 0, upSum = 0, average = 0;
-            for (int j = 0; j < words; j += SampleEvery)
+            for (int j = 0; j + 1 < words; j += SampleEvery)
             {
-                ulong x = row[j], b = up[j];
-                ulong a = (x << shift) | ((j == 0 ? 0 : row[j - 1]) >> back);
-                ulong avg = (a & b) + (((a ^ b) & NotLowBits) >> 1);
+                ulong x0 = row[j], x1 = row[j + 1], b0 = up[j], b1 = up[j + 1];
+                ulong a0 = (x0 << shift) | ((j == 0 ? 0 : row[j - 1]) >> back), a1 = (x1 << shift) | (x0 >> back);
 
-                // |r| per byte: negate the bytes whose top bit is set (~r + 1 cannot carry out of a byte here).
-                ulong r = x;
-                ulong negative = (r & High) >> 7;
-                ulong m = (r ^ (negative * 0xFF)) + negative;
-                ulong lanes = (m & EvenBytes) + ((m >> 8) & EvenBytes);
-                none += (long)((lanes * LaneSum) >> 48);
-
-                r = ((x | High) - (a & Low7)) ^ ((x ^ ~a) & High);
-                negative = (r & High) >> 7;
-                m = (r ^ (negative * 0xFF)) + negative;
-                lanes = (m & EvenBytes) + ((m >> 8) & EvenBytes);
-                sub += (long)((lanes * LaneSum) >> 48);
-
-                r = ((x | High) - (b & Low7)) ^ ((x ^ ~b) & High);
-                negative = (r & High) >> 7;
-                m = (r ^ (negative * 0xFF)) + negative;
-                lanes = (m & EvenBytes) + ((m >> 8) & EvenBytes);
-                upSum += (long)((lanes * LaneSum) >> 48);
-
-                r = ((x | High) - (avg & Low7)) ^ ((x ^ ~avg) & High);
-                negative = (r & High) >> 7;
-                m = (r ^ (negative * 0xFF)) + negative;
-                lanes = (m & EvenBytes) + ((m >> 8) & EvenBytes);
-                average += (long)((lanes * LaneSum) >> 48);
+                none += Cost(x0, x1, shift, back);
+                sub += Cost(Subtract(x0, a0), Subtract(x1, a1), shift, back);
+                upSum += Cost(Subtract(x0, b0), Subtract(x1, b1), shift, back);
+                average += Cost(Subtract(x0, (a0 & b0) + (((a0 ^ b0) & NotLowBits) >> 1)),
+                    Subtract(x1, (a1 & b1) + (((a1 ^ b1) & NotLowBits) >> 1)), shift, back);
             }
             int best = 0;
             long bestSum = none;
@@ -116,6 +98,24 @@ namespace NerfDatasetCreator
             if (upSum < bestSum) { best = 2; bestSum = upSum; }
             if (average < bestSum) best = 3;
             return best;
+        }
+
+        // Per-row helpers, called a few hundred times a row rather than per byte, so Mono's not inlining them costs little.
+        static ulong Subtract(ulong x, ulong y) => ((x | High) - (y & Low7)) ^ ((x ^ ~y) & High);
+
+        /// <summary>Σ |signed byte| of <paramref name="r1"/> over the bytes that differ from the byte a pixel earlier (in r0, r1).</summary>
+        static long Cost(ulong r0, ulong r1, int shift, int back)
+        {
+            ulong equal = r1 ^ ((r1 << shift) | (r0 >> back));
+            ulong differs = equal | (equal >> 4);
+            differs |= differs >> 2;
+            differs |= differs >> 1;
+            differs = (differs & 0x0101010101010101UL) * 0xFF;
+            // |r| per byte: negate the bytes whose top bit is set (~r + 1 cannot carry out of a byte here).
+            ulong negative = (r1 & High) >> 7;
+            ulong magnitude = ((r1 ^ (negative * 0xFF)) + negative) & differs;
+            ulong lanes = (magnitude & EvenBytes) + ((magnitude >> 8) & EvenBytes);
+            return (long)((lanes * LaneSum) >> 48);
         }
 
         /// <summary>Swaps the two bytes of every 16-bit lane: little-endian ushorts become PNG's big-endian samples.</summary>
