@@ -11,7 +11,7 @@ namespace NerfDatasetCreator.Benchmarks
     /// Unity's editor runs (Tests/Benchmarks/run-all builds both, runs both and prints them side by side with
     /// Pillow's PNG encoder as an anchor).
     /// Options: --only post|png|view|plan (one section), --tsv FILE (figures as "key TAB value" lines for run-all),
-    /// --dump DIR (the raw images the PNG figures use, for the Pillow anchor), --rounds N.
+    /// --dump DIR (the raw images the PNG figures use, for the Pillow anchor), --batches N.
     /// </summary>
     static class Program
     {
@@ -19,18 +19,19 @@ namespace NerfDatasetCreator.Benchmarks
         const int Supersampling = 2;
 
         static readonly List<KeyValuePair<string, double>> Figures = new List<KeyValuePair<string, double>>();
-        static int rounds = 15;
+        static int batches = 3;
 
         static void Main(string[] args)
         {
             string only = Option(args, "--only"), tsv = Option(args, "--tsv"), dump = Option(args, "--dump");
-            if (Option(args, "--rounds") != null) rounds = int.Parse(Option(args, "--rounds"), System.Globalization.CultureInfo.InvariantCulture);
+            if (Option(args, "--batches") != null) batches = int.Parse(Option(args, "--batches"), System.Globalization.CultureInfo.InvariantCulture);
             Console.WriteLine($"NeRF Dataset Creator benchmarks — {Environment.ProcessorCount} logical cores, {Runtime}, {System.Runtime.InteropServices.RuntimeInformation.OSDescription}");
-            Console.WriteLine($"Every figure is the fastest of {rounds} interleaved rounds, single thread unless said otherwise.");
+            Console.WriteLine($"Times are CPU time of this process per run, the cheapest of {batches} interleaved batches of ≥ {BatchCpuMs} ms; single thread unless said otherwise.");
             Console.WriteLine();
 
             if (only == null || only == "post") PostProcessing();
-            if (only == null || only == "png" || dump != null) Png(dump);
+            if (dump != null) Dump(Images.Make(), dump);
+            if (only == null || only == "png") Png();
             if (only == null || only == "view") WholeView();
             if (only == null || only == "plan") TransformsBenchmark.Run(Record);
 
@@ -115,10 +116,9 @@ namespace NerfDatasetCreator.Benchmarks
             }
         }
 
-        static void Png(string dump)
+        static void Png()
         {
             var images = Images.Make();
-            if (dump != null) Dump(images, dump);
             Console.WriteLine($"PNG encode of {OutputSize}×{OutputSize} images; size in KB, ms, MB/s of raw pixels:");
             Console.WriteLine("  image                     encoder                          KB      ms    MB/s");
             var encoders = new (string Key, string Name, PngCompression Compression, PngFilter Filter)[]
@@ -201,22 +201,16 @@ namespace NerfDatasetCreator.Benchmarks
                 int workers = Environment.ProcessorCount;
                 Console.WriteLine($"Whole view: ViewFileWriter.Write of one {OutputSize}×{OutputSize} view (colour, mask, 16-bit depth, normal PNGs, written to disk):");
                 writer.Write(plan.Views[0], colour, data);
-                double best = double.MaxValue;
-                int viewsPerRound = 4;
-                for (int round = 0; round < rounds; round++)
-                {
-                    var watch = Stopwatch.StartNew();
-                    for (int v = 0; v < viewsPerRound; v++) writer.Write(plan.Views[v], colour, data);
-                    best = Math.Min(best, watch.Elapsed.TotalMilliseconds / viewsPerRound);
-                }
+                int view = 0;
+                double best = Interleaved(false, ("view", () => writer.Write(plan.Views[view++ % plan.Views.Count], colour, data)))[0];
                 double share = writer.PngEncodeSeconds / writer.WriteSeconds;
-                Console.WriteLine($"  1 thread:  {best,6:F1} ms per view = {1000 / best,5:F1} views/s; PNG encoding {100 * share:F0} % of it");
+                Console.WriteLine($"  1 thread:  {best,6:F1} ms CPU per view = {1000 / best,5:F1} views/s per core; PNG encoding {100 * share:F0} % of the writer's time");
                 Record("view.1.ms", best);
                 Record("view.1.vps", 1000 / best);
                 Record("view.png-share", share);
 
                 double bestRate = 0;
-                for (int round = 0; round < Math.Max(3, rounds / 3); round++)
+                for (int round = 0; round < 3 * batches; round++)
                 {
                     var threads = new Thread[workers];
                     int perThread = 4;
@@ -233,7 +227,7 @@ namespace NerfDatasetCreator.Benchmarks
                     foreach (var thread in threads) thread.Join();
                     bestRate = Math.Max(bestRate, workers * perThread / watch.Elapsed.TotalSeconds);
                 }
-                Console.WriteLine($"  {workers} threads: {bestRate,5:F1} views/s ({bestRate / (1000 / best):F2}× one thread)");
+                Console.WriteLine($"  {workers} threads: {bestRate,5:F1} views/s, wall clock, best of {3 * batches} rounds ({bestRate / (1000 / best):F2}× one thread's CPU-time rate; a shared machine lowers it)");
                 Record("view.n.vps", bestRate);
                 Record("view.n.workers", workers);
             }
@@ -248,8 +242,11 @@ namespace NerfDatasetCreator.Benchmarks
         static double[] Interleaved(params (string Name, Action Run)[] steps) => Interleaved(true, steps);
 
         /// <summary>
-        /// Runs every step once per round, in turn, so that load from other processes on a shared machine hits all
-        /// of them alike; returns each step's fastest round in ms, the least disturbed estimate.
+        /// Each step's cost in ms of CPU time per run. The machine this was written on is shared (2 cores, often
+        /// dozens of runnable processes), so wall time mostly measures the queue; the process's CPU time excludes
+        /// the time others held the core. It is read with 10 ms resolution, so each step runs in batches of at
+        /// least <see cref="BatchCpuMs"/>; batches of all steps take turns (load hits them alike) and the cheapest
+        /// of <see cref="batches"/> batches counts. Includes the runtime's own threads (JIT, GC), as a user pays them.
         /// </summary>
         static double[] Interleaved(bool print, params (string Name, Action Run)[] steps)
         {
@@ -257,18 +254,31 @@ namespace NerfDatasetCreator.Benchmarks
             for (int i = 0; i < steps.Length; i++)
             {
                 steps[i].Run();
+                steps[i].Run();
                 best[i] = double.MaxValue;
             }
-            for (int round = 0; round < rounds; round++)
+            var process = Process.GetCurrentProcess();
+            for (int batch = 0; batch < batches; batch++)
                 for (int i = 0; i < steps.Length; i++)
                 {
-                    var watch = Stopwatch.StartNew();
-                    steps[i].Run();
-                    best[i] = Math.Min(best[i], watch.Elapsed.TotalMilliseconds);
+                    process.Refresh();
+                    var start = process.TotalProcessorTime;
+                    int runs = 0;
+                    double used;
+                    do
+                    {
+                        steps[i].Run();
+                        runs++;
+                        process.Refresh();
+                        used = (process.TotalProcessorTime - start).TotalMilliseconds;
+                    } while (used < BatchCpuMs);
+                    best[i] = Math.Min(best[i], used / runs);
                 }
             if (print)
                 for (int i = 0; i < steps.Length; i++) Console.WriteLine($"  {steps[i].Name,-52} {best[i],7:F2}");
             return best;
         }
+
+        const double BatchCpuMs = 250;
     }
 }
