@@ -27,6 +27,16 @@ namespace NerfDatasetCreator.Repository.Tests
         }
 
         [Test]
+        public void TheSampleConfigPlansWithoutWarnings_SoEveryExportGetsDepthInEverySplit()
+        {
+            // nerfstudio needs depth_file_path / mask_path on all frames or none: the sample must not make its export drop them.
+            var settings = DatasetSettingsJson.ReadFile(ConfigPath).Settings;
+            var plan = CapturePlan.Build(settings, new PlanTarget(new Vector3d(0, 0, 0), 1));
+            Assert.That(plan.Warnings.Select(w => w.ToString()), Is.Empty);
+            Assert.That(DatasetSplits.All.Select(s => ExtraOutputs.HasPng(settings.Split(s).Depth)), Is.All.True);
+        }
+
+        [Test]
         public void TheSampleConfigsSceneExistsAndHoldsItsTarget()
         {
             var settings = DatasetSettingsJson.ReadFile(ConfigPath).Settings;

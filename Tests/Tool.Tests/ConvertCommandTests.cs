@@ -37,7 +37,11 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(run.Out, Is.EqualTo(
                 "converted " + _dataset + " to nerfstudio:\n" +
                 "  wrote " + file + "\n" +
-                "train with: ns-train splatfacto nerfstudio-data --data " + file + " --orientation-method none --center-method none --auto-scale-poses False\n"));
+                string.Concat(new[] { "train", "val", "test" }.Select(split => "  wrote " + Path.Combine(_dataset, "camera_paths", split + ".json") + "\n")) +
+                // No dataset_config.json here: the target counts as nerf_synthetic's ±1.5 box, 1/1.5 → 0.666.
+                "train with: ns-train nerfacto --data " + file + " nerfstudio-data --orientation-method none --center-method none --auto-scale-poses False --scale-factor 0.666\n" +
+                "train with: ns-train splatfacto --data " + file + " nerfstudio-data --orientation-method none --center-method none\n" +
+                "train with: ns-train instant-ngp --data " + file + " nerfstudio-data --orientation-method none --center-method none --auto-scale-poses False --scale-factor 0.666\n"));
             var json = Json(file);
             Assert.That((int)json["w"], Is.EqualTo(RenderedDataset.Width));
             Assert.That((int)json["h"], Is.EqualTo(RenderedDataset.Height));

@@ -86,11 +86,27 @@ namespace NerfDatasetCreator.Tool.Tests
         {
             var config = _scratch.WriteText("lego.json", SmallConfig.Replace("\"seed\": 5,", "\"seed\": 5, \"overwrite\": \"replace\","));
             var output = _scratch.PathOf("lego");
-            Directory.CreateDirectory(output);
+            Assert.That(ToolRun.Of("plan", "--config", config, "--out", output).ExitCode, Is.EqualTo(0));
             File.WriteAllText(Path.Combine(output, "transforms_train.json"), "old");
             var run = ToolRun.Of("plan", "--config", config, "--out", output);
             Assert.That(run.ExitCode, Is.EqualTo(0), run.ToString());
             Assert.That(File.ReadAllText(Path.Combine(output, "transforms_train.json")), Does.StartWith("{"));
+            Assert.That(Directory.GetFileSystemEntries(_scratch.Root).Select(Path.GetFileName), Is.EquivalentTo(new[] { "lego.json", "lego" }), "no working folder left");
+        }
+
+        [Test]
+        public void ReplaceNeverDeletesAFolderThatOnlyLooksLikeADataset()
+        {
+            var config = _scratch.WriteText("lego.json", SmallConfig.Replace("\"seed\": 5,", "\"seed\": 5, \"overwrite\": \"replace\","));
+            var output = _scratch.PathOf("lego");
+            Directory.CreateDirectory(output);
+            File.WriteAllText(Path.Combine(output, "transforms_train.json"), "stray");
+            File.WriteAllText(Path.Combine(output, "thesis.tex"), "precious");
+            var run = ToolRun.Of("plan", "--config", config, "--out", output);
+            Assert.That(run.ExitCode, Is.EqualTo(2), run.ToString());
+            Assert.That(run.Err, Does.Contain("error: overwrite = replace: would delete " + output));
+            Assert.That(File.ReadAllText(Path.Combine(output, "thesis.tex")), Is.EqualTo("precious"));
+            Assert.That(File.ReadAllText(Path.Combine(output, "transforms_train.json")), Is.EqualTo("stray"));
         }
 
         [Test]

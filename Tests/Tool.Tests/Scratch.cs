@@ -12,6 +12,17 @@ namespace NerfDatasetCreator.Tool.Tests
             Directory.CreateDirectory(Root);
         }
 
+        Scratch(string root, bool owned)
+        {
+            Root = root;
+            _owned = owned;
+        }
+
+        readonly bool _owned = true;
+
+        /// <summary>A view of an existing folder (inside another scratch folder, which deletes it).</summary>
+        public static Scratch In(string root) => new Scratch(root, false);
+
         public string Root { get; }
 
         public string PathOf(params string[] parts) => Path.Combine(Root, Path.Combine(parts));
@@ -25,7 +36,7 @@ namespace NerfDatasetCreator.Tool.Tests
 
         public void Dispose()
         {
-            if (Directory.Exists(Root)) Directory.Delete(Root, true);
+            if (_owned && Directory.Exists(Root)) Directory.Delete(Root, true);
         }
     }
 }

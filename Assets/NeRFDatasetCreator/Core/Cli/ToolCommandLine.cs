@@ -9,6 +9,9 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class ToolCommandLine
     {
+        /// <summary>Options that take no value (<c>--depths</c>).</summary>
+        static readonly HashSet<string> Flags = new HashSet<string>(StringComparer.Ordinal) { "depths" };
+
         public static ToolInvocation Parse(IReadOnlyList<string> args)
         {
             var result = new ToolInvocation();
@@ -35,6 +38,12 @@ namespace NerfDatasetCreator
                     result.Command = ToolInvocation.HelpCommand;
                     return result;
                 }
+                if (arg == "--" + DryRunFlag)
+                {
+                    if (options.ContainsKey(DryRunFlag)) result.Errors.Add("--" + DryRunFlag + " is given twice.");
+                    options[DryRunFlag] = "";
+                    continue;
+                }
                 if (arg.StartsWith("--", StringComparison.Ordinal))
                 {
                     string name, value;
@@ -43,6 +52,11 @@ namespace NerfDatasetCreator
                     {
                         name = arg.Substring(2, eq - 2);
                         value = arg.Substring(eq + 1);
+                    }
+                    else if (Flags.Contains(arg.Substring(2)))
+                    {
+                        name = arg.Substring(2);
+                        value = "true";
                     }
                     else
                     {
@@ -66,6 +80,7 @@ namespace NerfDatasetCreator
                 case ToolInvocation.ValidateCommand: Validate(result, options, positionals); break;
                 case ToolInvocation.MergeCommand: Merge(result, options, positionals); break;
                 case ToolInvocation.ConvertCommand: Convert(result, options, positionals); break;
+                case ToolInvocation.CleanCommand: Clean(result, options, positionals); break;
                 default:
                     result.Errors.Add("unknown command '" + command + "'.");
                     break;
@@ -109,7 +124,12 @@ namespace NerfDatasetCreator
 
         static void Convert(ToolInvocation result, Dictionary<string, string> options, List<string> positionals)
         {
-            RefuseUnknownOptions(result, options, "to", "out");
+            RefuseUnknownOptions(result, options, "to", "out", "depths");
+            if (options.TryGetValue("depths", out var depths))
+            {
+                if (depths != "true") result.Errors.Add("--depths takes no value ('" + depths + "').");
+                result.Depths = true;
+            }
             if (positionals.Count != 1) result.Errors.Add("convert needs exactly one dataset folder.");
             else result.DatasetFolder = positionals[0];
             if (!options.TryGetValue("to", out var to)) result.Errors.Add("convert needs --to " + string.Join("|", ExportTargets.Names) + ".");
@@ -117,12 +137,25 @@ namespace NerfDatasetCreator
             {
                 result.Target = ExportTargets.Parse(to, out var problem);
                 if (problem != null) result.Errors.Add(problem.ToString()); // ValidationProblem formats its numbers with the invariant culture
+                else if (result.Depths && result.Target != ExportTarget.Colmap)
+                    result.Errors.Add("--depths writes 3D Gaussian Splatting's inverse-depth maps, which read a COLMAP source: use it with --to colmap (nerfstudio and ngp exports carry depth on their own).");
             }
             if (options.TryGetValue("out", out var output))
             {
                 if (string.IsNullOrWhiteSpace(output)) result.Errors.Add("--out is empty; leave it out to write into the dataset folder.");
                 else result.OutputFolder = output;
             }
+        }
+
+        /// <summary>The one option without a value.</summary>
+        const string DryRunFlag = "dry-run";
+
+        static void Clean(ToolInvocation result, Dictionary<string, string> options, List<string> positionals)
+        {
+            RefuseUnknownOptions(result, options, DryRunFlag);
+            if (positionals.Count != 1) result.Errors.Add("clean needs exactly one folder: the one holding the datasets (e.g. NeRFDatasets) or a dataset.");
+            else result.DatasetFolder = positionals[0];
+            result.DryRun = options.ContainsKey(DryRunFlag);
         }
 
         static void RefuseUnknownOptions(ToolInvocation result, Dictionary<string, string> options, params string[] known)

@@ -9,9 +9,10 @@ namespace NerfDatasetCreator
         public const string ValidateCommand = "validate";
         public const string MergeCommand = "merge";
         public const string ConvertCommand = "convert";
+        public const string CleanCommand = "clean";
         public const string HelpCommand = "help";
 
-        /// <summary>"plan", "validate", "merge", "convert" or "help".</summary>
+        /// <summary>"plan", "validate", "merge", "convert", "clean" or "help".</summary>
         public string Command { get; internal set; }
 
         /// <summary><c>plan --config &lt;file&gt;</c>.</summary>
@@ -23,7 +24,7 @@ namespace NerfDatasetCreator
         /// </summary>
         public string OutputFolder { get; internal set; }
 
-        /// <summary><c>validate &lt;dir&gt;</c> and <c>convert &lt;dir&gt;</c>: the Blender-format dataset to read.</summary>
+        /// <summary><c>validate &lt;dir&gt;</c> and <c>convert &lt;dir&gt;</c>: the Blender-format dataset to read; <c>clean &lt;dir&gt;</c>: the folder to clean.</summary>
         public string DatasetFolder { get; internal set; }
 
         /// <summary><c>merge … &lt;shard-dir&gt;…</c>: the shard folders, in the order given.</summary>
@@ -32,8 +33,14 @@ namespace NerfDatasetCreator
         /// <summary><c>merge --files move</c>: move the images out of the shard folders instead of copying them.</summary>
         public bool MoveFiles { get; internal set; }
 
+        /// <summary><c>clean --dry-run</c>: list the leftovers without changing anything.</summary>
+        public bool DryRun { get; internal set; }
+
         /// <summary><c>convert --to nerfstudio|colmap|ngp</c>.</summary>
         public ExportTarget? Target { get; internal set; }
+
+        /// <summary><c>convert --to colmap --depths</c>: also write 3DGS's inverse-depth maps and depth_params.json.</summary>
+        public bool Depths { get; internal set; }
 
         /// <summary>Usage mistakes; the command runs only when this is empty.</summary>
         public List<string> Errors { get; } = new List<string>();
@@ -44,7 +51,8 @@ namespace NerfDatasetCreator
             "  plan --config <settings.json> --out <dir>               the JSON files and a rig preview, no images\n" +
             "  validate <dir>                                          check a Blender-format dataset\n" +
             "  merge --out <dir> [--files copy|move] <shard-dir>...    join the folders of a sharded capture\n" +
-            "  convert <dir> --to nerfstudio|colmap|ngp [--out <dir>]  write a dataset in another trainer's format\n" +
+            "  convert <dir> --to nerfstudio|colmap|ngp [--out <dir>] [--depths]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps)\n" +
+            "  clean <dir> [--dry-run]                                 finish or roll back interrupted runs, remove their leftover folders\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
     }
 }

@@ -102,6 +102,7 @@ namespace NerfDatasetCreator
             Number(w, "rotation", rotation);
             w.WritePropertyName("transform_matrix");
             WriteMatrix(w, v.TransformMatrix);
+            if (v.Time.HasValue) TimeKeys.Write(w, v.Time.Value);
             if (v.Writes(DatasetFileKind.DepthPng))
             {
                 var depth = DatasetLayout.FrameKeyPath(v.Split, v.Index, DatasetFileKind.DepthPng);

@@ -7,11 +7,12 @@ namespace NerfDatasetCreator
     /// <c>dataset_config.json</c>: enough to regenerate the dataset — the full settings (the same object a config
     /// file holds, so it can be used as one), the seed, the resolved distance, the target and how output poses
     /// relate to the Unity world (<c>scene_normalisation</c>, as in the transforms files), the plugin and Unity versions
-    /// and the UTC date.
+    /// and the UTC date; with a point cloud, its <see cref="PointCloudRecord"/> (file, point count, SHA-256).
     /// </summary>
     public static class DatasetConfigWriter
     {
-        public static string Write(CapturePlan plan, Provenance provenance)
+        /// <param name="pointCloud">The record of the <c>points3d.ply</c> this run wrote, or null when it wrote none.</param>
+        public static string Write(CapturePlan plan, Provenance provenance, PointCloudRecord pointCloud = null)
         {
             using (var text = JsonNumbers.CreateText())
             {
@@ -50,9 +51,19 @@ namespace NerfDatasetCreator
                     foreach (var split in DatasetSplits.All)
                     {
                         w.WritePropertyName(DatasetSplits.Name(split));
-                        w.WriteValue(plan.Settings.Split(split).Count);
+                        w.WriteValue(TimePlanning.ViewCount(plan.Settings, plan.Time, split));
                     }
                     w.WriteEndObject();
+                    if (plan.Time != null)
+                    {
+                        w.WritePropertyName(TimeRecord.Key);
+                        TimeRecord.Write(w, plan.Time, plan.Settings.Time);
+                    }
+                    if (pointCloud != null)
+                    {
+                        w.WritePropertyName(PointCloudRecord.Key);
+                        JsonNumbers.WriteToken(w, pointCloud.ToJson());
+                    }
                     if (provenance.Statistics.Count > 0)
                     {
                         w.WritePropertyName("statistics");

@@ -6,16 +6,15 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class DatasetMetadataFiles
     {
-        public static void Write(DatasetWriteSession session, CapturePlan plan, Provenance provenance)
+        public static void Write(DatasetWriteSession session, CapturePlan plan, Provenance provenance, PointCloudRecord pointCloud = null)
         {
             foreach (var split in DatasetSplits.All)
             {
                 // Streamed: the text of a large plan's file is never held in memory whole.
-                var path = session.PathOf(DatasetLayout.TransformsFileName(split));
-                System.IO.Directory.CreateDirectory(System.IO.Path.GetDirectoryName(path));
-                using (var file = JsonNumbers.CreateFile(path)) BlenderTransformsWriter.Write(plan, split, file);
+                var s = split;
+                session.WriteText(DatasetLayout.TransformsFileName(split), text => BlenderTransformsWriter.Write(plan, s, text));
             }
-            session.WriteText(DatasetLayout.ConfigFileName, DatasetConfigWriter.Write(plan, provenance));
+            session.WriteText(DatasetLayout.ConfigFileName, DatasetConfigWriter.Write(plan, provenance, pointCloud));
         }
     }
 }

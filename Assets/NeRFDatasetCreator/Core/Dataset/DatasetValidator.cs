@@ -10,7 +10,8 @@ namespace NerfDatasetCreator
     /// transforms files parse; <c>camera_angle_x</c> is in (0, π) and the same in every split; every referenced
     /// image exists, is a complete PNG, and all share one size and channel layout (read from the PNG header);
     /// every matrix is finite, has last row 0 0 0 1 and an orthonormal rotation with |det − 1| &lt; 1e-4; extra
-    /// files named by per-frame keys exist with the documented format. Every problem is listed, one per line.
+    /// files named by per-frame keys exist with the documented format; a <c>points3d.ply</c> that dataset_config.json
+    /// does not record is a warning (<see cref="PointCloudOwnership"/>). Every problem is listed, one per line.
     /// </summary>
     public static class DatasetValidator
     {
@@ -24,6 +25,9 @@ namespace NerfDatasetCreator
                 report.Problems.Add(new DatasetProblem(folder, -1, null, "the dataset folder does not exist."));
                 return report;
             }
+            var unreadableConfig = UnreadableConfig(folder);
+            if (unreadableConfig != null)
+                report.Problems.Add(new DatasetProblem(DatasetLayout.ConfigFileName, -1, null, "cannot be read: " + unreadableConfig + " (check the file's permissions)."));
             var state = new ImageState { SkipFiles = IsPlanOnly(folder) };
             if (state.SkipFiles)
                 report.Warnings.Add(new DatasetProblem(DatasetLayout.ConfigFileName, -1, null,
@@ -51,6 +55,11 @@ namespace NerfDatasetCreator
                     report.Problems.Add(new DatasetProblem(file, -1, null, "line " + e.Line + ", column " + e.Column + ": " + e.Detail));
                     continue;
                 }
+                catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+                {
+                    report.Problems.Add(new DatasetProblem(file, -1, null, "cannot be read: " + e.Message + " (check the file's permissions)."));
+                    continue;
+                }
                 foreach (var p in doc.Problems) report.Problems.Add(new DatasetProblem(file, -1, null, p));
                 report.FrameCounts[DatasetSplits.Name(split)] = doc.Frames.Count;
 
@@ -70,11 +79,21 @@ namespace NerfDatasetCreator
                             "camera_angle_x = " + ValidationProblem.Format(angle) + " differs from " + firstAngleFile + "'s " + ValidationProblem.Format(firstAngle.Value) +
                             "; bmild/nerf uses the last file's value for every split."));
                 }
-                if (doc.Frames.Count == 0)
+                if (doc.Frames.Count == 0 && split == DatasetSplit.Train)
+                    report.Problems.Add(new DatasetProblem(file, -1, null, "has no frames; every loader trains on the train split, so a dataset needs train views."));
+                else if (doc.Frames.Count == 0)
                     report.Warnings.Add(new DatasetProblem(file, -1, null, "has no frames; " + LoadersNeeding(split) + " need frames in this split."));
                 var needsDepthScale = false;
                 foreach (var frame in doc.Frames)
                 {
+                    if (frame.FilePath != null)
+                    {
+                        var key = ExportPaths.Normalise(frame.FilePath);
+                        if (state.FilePaths.TryGetValue(key, out var first))
+                            report.Problems.Add(new DatasetProblem(file, frame.Index, frame.FilePath,
+                                "file_path is also " + first + "'s; two frames of one image train on it twice and exports write it twice (give every frame its own image)."));
+                        else state.FilePaths[key] = file + " frame " + frame.Index;
+                    }
                     if (frame.TransformMatrix.HasValue && frame.TransformMatrix.Value.IsFinite) cameraCentres.Add(frame.TransformMatrix.Value.Translation);
                     CheckFrame(folder, file, frame, state, report);
                     if (frame.ExtraFiles.ContainsKey("depth_path")) needsDepthScale = true;
@@ -88,11 +107,23 @@ namespace NerfDatasetCreator
                         "frames have depth_path but integer_depth_scale is " + (doc.IntegerDepthScale.HasValue ? ValidationProblem.Format(doc.IntegerDepthScale.Value) : "missing") +
                         "; instant-ngp needs it above 0 (0.001 for millimetre PNGs)."));
             }
+            var cloudWarnings = new List<ValidationProblem>();
+            PointCloudOwnership.IsOwn(folder, cloudWarnings);
+            foreach (var w in cloudWarnings) report.Warnings.Add(new DatasetProblem(w.Field, -1, null, w.Reason + " " + w.Fix));
+            if (!state.SkipFiles)
+            {
+                if (state.First != null && state.ColourImages > 0 && state.SixteenBitColour == state.ColourImages)
+                    report.Warnings.Add(new DatasetProblem(state.FirstPath, -1, null,
+                        "every colour image is 16-bit; loaders that divide by 255 (bmild/nerf, nerf-pytorch) read them up to 257 times too bright (write 8-bit PNGs, as Blender and this plugin do)."));
+                foreach (var unreferenced in UnreferencedImages(folder, state.Referenced))
+                    report.Warnings.Add(unreferenced);
+            }
             // The object's size is not in a Blender-format dataset, so the check is for its centre at the origin
             // (where the loaders assume it): a camera nearer than NeRF's near 2 or beyond its far 6 cannot see it.
             foreach (var range in LoaderRangeCheck.Check(cameraCentres, 0))
                 report.Warnings.Add(new DatasetProblem("transforms_*.json", -1, null,
                     "(object size unknown here: the target is taken as a point at the origin) " + range));
+            TimeDatasetChecks.Check(folder, report);
             return report;
         }
 
@@ -108,26 +139,85 @@ namespace NerfDatasetCreator
             }
         }
 
-        /// <summary>True when dataset_config.json marks the folder as a plan without images.</summary>
+        /// <summary>True when dataset_config.json marks the folder as a plan without images (false when it cannot be read).</summary>
         public static bool IsPlanOnly(string folder)
         {
             var path = Path.Combine(folder, DatasetLayout.ConfigFileName);
             if (!File.Exists(path)) return false;
             try
             {
-                var config = Newtonsoft.Json.Linq.JObject.Parse(File.ReadAllText(path));
+                var config = Newtonsoft.Json.Linq.JObject.Parse(FileOps.ReadText(path));
                 var rendered = config["imagesRendered"];
                 return rendered != null && rendered.Type == Newtonsoft.Json.Linq.JTokenType.Boolean && !(bool)rendered;
             }
-            catch (Newtonsoft.Json.JsonException)
+            catch (Exception e) when (e is Newtonsoft.Json.JsonException || e is IOException || e is UnauthorizedAccessException)
             {
                 return false;
             }
         }
 
+        /// <summary>Why dataset_config.json cannot be read, or null (also when there is none).</summary>
+        static string UnreadableConfig(string folder)
+        {
+            var path = Path.Combine(folder, DatasetLayout.ConfigFileName);
+            if (!File.Exists(path)) return null;
+            try
+            {
+                FileOps.ReadText(path);
+                return null;
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                return e.Message;
+            }
+        }
+
+        /// <summary>
+        /// Image files in the split folders that no frame names — neither as its image or extra file, nor as a
+        /// companion of one (<c>r_3_depth_0000.png</c> beside a referenced <c>r_3.png</c>, as nerf_synthetic's test
+        /// split has): one warning per folder, because a loader never sees them.
+        /// </summary>
+        static IEnumerable<DatasetProblem> UnreferencedImages(string folder, HashSet<string> referenced)
+        {
+            var stems = new HashSet<string>(referenced.Select(r => r.Substring(0, r.Length - Path.GetExtension(r).Length)), StringComparer.OrdinalIgnoreCase);
+            foreach (var split in DatasetSplits.Names)
+            {
+                var dir = Path.Combine(folder, split);
+                if (!Directory.Exists(dir)) continue;
+                var stray = Directory.EnumerateFiles(dir)
+                    .Select(f => split + "/" + Path.GetFileName(f))
+                    .Where(f => IsImage(f) && !referenced.Contains(f) && !IsCompanion(f, stems))
+                    .OrderBy(f => f, StringComparer.Ordinal).ToList();
+                if (stray.Count == 0) continue;
+                yield return new DatasetProblem(split + "/", -1, null,
+                    stray.Count + " image(s) no frame names (" + string.Join(", ", stray.Take(3)) + (stray.Count > 3 ? ", …" : "") +
+                    "); loaders never see them — a frame may be missing from " + DatasetLayout.TransformsFileName(split) + ".");
+            }
+        }
+
+        static bool IsImage(string path)
+        {
+            var ext = Path.GetExtension(path);
+            return string.Equals(ext, ".png", StringComparison.OrdinalIgnoreCase) || string.Equals(ext, ".exr", StringComparison.OrdinalIgnoreCase)
+                || string.Equals(ext, ".jpg", StringComparison.OrdinalIgnoreCase) || string.Equals(ext, ".jpeg", StringComparison.OrdinalIgnoreCase);
+        }
+
+        static bool IsCompanion(string path, HashSet<string> stems)
+        {
+            var stem = path.Substring(0, path.Length - Path.GetExtension(path).Length);
+            for (var cut = stem.IndexOf('_', stem.LastIndexOf('/') + 1); cut > 0; cut = stem.IndexOf('_', cut + 1))
+                if (stems.Contains(stem.Substring(0, cut))) return true;
+            return false;
+        }
+
         sealed class ImageState
         {
             public bool SkipFiles;
+            public readonly Dictionary<string, string> FilePaths = new Dictionary<string, string>(StringComparer.OrdinalIgnoreCase);
+            /// <summary>Dataset-relative paths (forward slashes) of every image a frame names.</summary>
+            public readonly HashSet<string> Referenced = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
+            public int ColourImages;
+            public int SixteenBitColour;
             public PngInfo First;
             public string FirstPath;
         }
@@ -153,10 +243,13 @@ namespace NerfDatasetCreator
                 else if (!File.Exists(image)) Problem("image " + relative + " is missing.");
                 else
                 {
+                    state.Referenced.Add(ExportPaths.Normalise(relative));
                     var info = ReadPng(image, relative, Problem);
                     if (info != null)
                     {
                         report.ImagesChecked++;
+                        state.ColourImages++;
+                        if (info.BitDepth == 16) state.SixteenBitColour++;
                         if (state.First == null)
                         {
                             state.First = info;
@@ -198,6 +291,7 @@ namespace NerfDatasetCreator
                     Problem(pair.Key + " " + pair.Value + " is not a .png; this plugin's " + pair.Key + " files are " + expected.Describe() + " PNGs.");
                     continue;
                 }
+                state.Referenced.Add(ExportPaths.Normalise(pair.Value));
                 var info = ReadPng(path, pair.Value, Problem);
                 if (info == null) continue;
                 report.ExtraFilesChecked++;

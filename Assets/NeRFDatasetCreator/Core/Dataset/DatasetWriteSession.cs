@@ -1,5 +1,5 @@
 using System;
-using System.Globalization;
+using System.Collections.Generic;
 using System.IO;
 
 namespace NerfDatasetCreator
@@ -9,7 +9,9 @@ namespace NerfDatasetCreator
     /// (the '~' keeps Unity from importing it even under Assets), and only <see cref="Commit"/> moves it to the
     /// final name — so a cancelled or failed run never leaves a partial dataset under the final name, and
     /// <see cref="PartialFolder"/> says where its files are. An existing dataset is replaced only under
-    /// <see cref="OverwritePolicy.Replace"/>, and only after the new one is complete.
+    /// <see cref="OverwritePolicy.Replace"/>, and only after the new one is complete. The working folder holds a journal
+    /// (<see cref="OperationJournal"/>), so the next session on the same folder finishes or rolls back a run killed
+    /// while committing (<see cref="Recovery"/>); the capture and <c>nerf-dataset plan</c> both write through this class.
     /// </summary>
     public sealed class DatasetWriteSession
     {
@@ -35,20 +37,43 @@ namespace NerfDatasetCreator
         public string PartialFolder => _committed ? null : WorkingFolder;
 
         /// <summary>
-        /// Checks <paramref name="datasetFolder"/> (<see cref="SafeOutput.CheckOutputFolder"/>; throws
-        /// <see cref="InvalidParameterException"/> with every problem) and creates the working folder.
+        /// What <see cref="Begin"/> found of earlier runs on this output: one sentence per interrupted operation it
+        /// finished or rolled back (<see cref="Recovery"/>).
+        /// </summary>
+        public IReadOnlyList<RecoveryNote> Recovered { get; private set; } = Array.Empty<RecoveryNote>();
+
+        /// <summary>Working folders of earlier runs on this output that are still there (reported, removed by <c>nerf-dataset clean</c>).</summary>
+        public IReadOnlyList<Leftover> Leftovers { get; private set; } = Array.Empty<Leftover>();
+
+        /// <summary>
+        /// Finishes or rolls back an interrupted earlier run on <paramref name="datasetFolder"/> (<see cref="Recovered"/>),
+        /// checks it (<see cref="SafeOutput.CheckOutputFolder"/>; throws <see cref="InvalidParameterException"/> with
+        /// every problem) and creates the working folder with its journal.
         /// </summary>
         public static DatasetWriteSession Begin(string datasetFolder, OverwritePolicy policy, string projectRoot = null, DateTime? now = null)
         {
+            var recovered = IsUsablePath(datasetFolder) ? Recovery.Run(datasetFolder) : Array.Empty<RecoveryNote>();
             var problems = SafeOutput.CheckOutputFolder(datasetFolder, projectRoot, policy);
             if (problems.Count > 0) throw new InvalidParameterException(problems);
             var full = Path.GetFullPath(datasetFolder).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
             var parent = Path.GetDirectoryName(full);
-            Directory.CreateDirectory(parent);
-            var stamp = (now ?? DateTime.UtcNow).ToString("yyyyMMdd-HHmmss", CultureInfo.InvariantCulture);
-            var working = Path.Combine(parent, Path.GetFileName(full) + ".partial-" + stamp + "-" + Guid.NewGuid().ToString("N").Substring(0, 8) + "~"); // "N" is 32 hex digits: invariant
-            Directory.CreateDirectory(working);
-            return new DatasetWriteSession(full, working, policy);
+            FileOps.CreateDirectory(parent);
+            var working = WorkingFolders.NewPartial(full, now ?? DateTime.UtcNow);
+            FileOps.CreateDirectory(working);
+            new OperationJournal { Operation = "write", Output = full }.Save(working);
+            return new DatasetWriteSession(full, working, policy) { Recovered = recovered, Leftovers = Leftover.Of(full, working) };
+        }
+
+        static bool IsUsablePath(string folder)
+        {
+            try
+            {
+                return !string.IsNullOrWhiteSpace(folder) && PathLimits.Check(Path.GetFullPath(folder), "outputFolder") == null;
+            }
+            catch (Exception e) when (e is ArgumentException || e is NotSupportedException || e is PathTooLongException)
+            {
+                return false;
+            }
         }
 
         /// <summary>The absolute path in the working folder of a dataset-relative path such as <c>train/r_0.png</c>.</summary>
@@ -64,13 +89,23 @@ namespace NerfDatasetCreator
         public void WriteText(string relativePath, string text)
         {
             var path = PathOf(relativePath);
-            Directory.CreateDirectory(Path.GetDirectoryName(path));
-            File.WriteAllText(path, text, new System.Text.UTF8Encoding(false));
+            FileOps.CreateDirectory(Path.GetDirectoryName(path));
+            FileOps.WriteText(path, text);
+        }
+
+        /// <summary>Like <see cref="WriteText(string, string)"/>, with the text streamed by <paramref name="write"/>.</summary>
+        public void WriteText(string relativePath, Action<TextWriter> write)
+        {
+            var path = PathOf(relativePath);
+            FileOps.CreateDirectory(Path.GetDirectoryName(path));
+            FileOps.WriteText(path, write);
         }
 
         /// <summary>
         /// Moves the complete dataset to its final name. Under <see cref="OverwritePolicy.Replace"/> an existing
-        /// dataset there is first moved aside and deleted only after the move succeeded (restored if it failed).
+        /// dataset there — only one this plugin provably wrote (<see cref="OwnDataset"/>) — is first moved aside and
+        /// deleted only after the move succeeded (restored if it failed). The journal records each step, so a run
+        /// killed anywhere in between is finished by the next one (<see cref="Recovery"/>).
         /// </summary>
         public void Commit()
         {
@@ -79,22 +114,25 @@ namespace NerfDatasetCreator
             if (Directory.Exists(FinalFolder) || File.Exists(FinalFolder))
             {
                 var empty = Directory.Exists(FinalFolder) && Directory.GetFileSystemEntries(FinalFolder).Length == 0;
-                if (!empty && (Policy != OverwritePolicy.Replace || !SafeOutput.LooksLikeDataset(FinalFolder)))
+                if (!empty && (Policy != OverwritePolicy.Replace || OwnDataset.WhyNotOurs(FinalFolder) != null))
                     throw new IOException(FinalFolder + " appeared while the dataset was being written and is not replaced; the new dataset is complete in " + WorkingFolder + ".");
-                aside = FinalFolder + ".replaced-" + Guid.NewGuid().ToString("N").Substring(0, 8) + "~";
-                Directory.Move(FinalFolder, aside);
+                aside = WorkingFolders.NewReplaced(FinalFolder);
             }
+            new OperationJournal { Operation = "write", Output = FinalFolder, State = OperationJournal.Committing, Aside = aside }.Save(WorkingFolder);
+            if (aside != null) FileOps.MoveDirectory(FinalFolder, aside);
             try
             {
-                Directory.Move(WorkingFolder, FinalFolder);
+                FileOps.MoveDirectory(WorkingFolder, FinalFolder);
             }
-            catch
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
-                if (aside != null && !Directory.Exists(FinalFolder)) Directory.Move(aside, FinalFolder);
+                if (aside != null && !Directory.Exists(FinalFolder)) FileOps.MoveDirectory(aside, FinalFolder);
+                new OperationJournal { Operation = "write", Output = FinalFolder }.Save(WorkingFolder);
                 throw;
             }
             _committed = true;
-            if (aside != null) Directory.Delete(aside, true);
+            if (aside != null) FileOps.DeleteDirectory(aside);
+            OperationJournal.Delete(FinalFolder);
         }
 
         /// <summary>A sentence for a cancelled or failed run's log: where its partial files are.</summary>
@@ -105,7 +143,7 @@ namespace NerfDatasetCreator
         /// <summary>Deletes the working folder of an unfinished run (when the user does not want the partial files).</summary>
         public void DiscardPartialFiles()
         {
-            if (!_committed && Directory.Exists(WorkingFolder)) Directory.Delete(WorkingFolder, true);
+            if (!_committed && Directory.Exists(WorkingFolder)) FileOps.DeleteDirectory(WorkingFolder);
         }
     }
 }

@@ -10,7 +10,9 @@ namespace NerfDatasetCreator
     /// <c>Assets/</c>, so Unity never imports the images (the original plugin stalled the editor creating .meta
     /// files). A folder inside <c>Assets/</c> is refused unless a path component below <c>Assets</c> ends in
     /// <c>~</c>, which Unity ignores. A folder inside another dataset, or one that holds other files, is refused;
-    /// an existing dataset is refused unless the overwrite policy is <see cref="OverwritePolicy.Replace"/>.
+    /// an existing dataset is refused unless the overwrite policy is <see cref="OverwritePolicy.Replace"/> and it is
+    /// provably this plugin's (<see cref="OwnDataset"/>). A path too long once the working folder's suffix is added
+    /// (<see cref="PathLimits"/>) and a mount point (<see cref="MountPoints"/>) are refused up front.
     /// </summary>
     public static class SafeOutput
     {
@@ -54,6 +56,14 @@ namespace NerfDatasetCreator
                 return problems;
             }
             var shown = full;
+            var length = PathLimits.Check(full, field);
+            if (length != null)
+            {
+                problems.Add(length);
+                return problems;
+            }
+            var mount = MountPoints.Check(full, field);
+            if (mount != null) problems.Add(mount);
 
             var assets = InsideUnityAssets(full, projectRoot);
             if (assets != null)
@@ -80,6 +90,10 @@ namespace NerfDatasetCreator
                     problems.Add(new ValidationProblem("overwrite", "never",
                         "forbids replacing the existing dataset " + full + ".",
                         "Choose another dataset name, or set overwrite to \"replace\" to replace it once the new one is complete."));
+                else if (OwnDataset.WhyNotOurs(full) is string why)
+                    problems.Add(new ValidationProblem("overwrite", "replace",
+                        "would delete " + full + ", but " + why + "; replace deletes only a dataset this plugin wrote, and never a file it did not write.",
+                        "Move your own files out of it, or choose another dataset name."));
             }
 
             var writable = CheckWritable(full);

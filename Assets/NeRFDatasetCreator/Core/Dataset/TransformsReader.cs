@@ -1,5 +1,4 @@
 using System;
-using System.Globalization;
 using System.IO;
 using Newtonsoft.Json;
 using Newtonsoft.Json.Linq;
@@ -16,7 +15,7 @@ namespace NerfDatasetCreator
         /// <summary>The per-frame file keys this plugin writes and checks (see Documentation~/output-format.md).</summary>
         public static readonly string[] ExtraFileKeys = { "depth_path", "depth_file_path", "normal_path", "mask_path" };
 
-        public static TransformsDocument ReadFile(string path) => Read(File.ReadAllText(path), Path.GetFileName(path));
+        public static TransformsDocument ReadFile(string path) => Read(FileOps.ReadText(path), Path.GetFileName(path));
 
         public static TransformsDocument Read(string text, string sourceName = "transforms")
         {
@@ -139,16 +138,7 @@ namespace NerfDatasetCreator
             return null;
         }
 
-        /// <summary>A JSON number, or the NaN/Infinity tokens Python writes (reported later as not finite).</summary>
-        static bool TryNumber(JToken token, out double value)
-        {
-            value = 0;
-            if (token.Type == JTokenType.Integer || token.Type == JTokenType.Float)
-            {
-                value = Convert.ToDouble(((JValue)token).Value, CultureInfo.InvariantCulture);
-                return true;
-            }
-            return false;
-        }
+        /// <summary>A JSON number of any size (<see cref="JsonValues"/>), or the NaN/Infinity tokens Python writes (reported later as not finite).</summary>
+        static bool TryNumber(JToken token, out double value) => JsonValues.TryNumber(token, out value);
     }
 }

@@ -13,12 +13,14 @@ namespace NerfDatasetCreator
     /// converters: <c>transforms_{train,val,test}.json</c> (train required), <c>file_path</c> resolved like the
     /// loaders do (<c>+ ".png"</c> when extensionless), W×H from each PNG's IHDR, <c>camera_angle_x</c> → a square-pixel
     /// pinhole, optional <c>cx</c>/<c>cy</c>. Picks up this plugin's extras when present for EVERY frame:
-    /// <c>&lt;image&gt;_depth_0000.png</c> (16-bit grey), <c>&lt;image&gt;_mask_0000.png</c> (8-bit grey), <c>points3d.ply</c>,
-    /// <c>scene_normalisation</c>. (May later merge with the dataset module's transforms reader.)
+    /// <c>&lt;image&gt;_depth_0000.png</c> (16-bit grey), <c>&lt;image&gt;_mask_0000.png</c> (8-bit grey), <c>points3d.ply</c>
+    /// when dataset_config.json records it (<see cref="PointCloudOwnership"/>; any other is a warning),
+    /// <c>scene_normalisation</c>; train's <c>aabb_scale</c> and the target's reach from <c>dataset_config.json</c>
+    /// (<see cref="DatasetTargetReach"/>) for instant-ngp's cube. (May later merge with the dataset module's transforms reader.)
     /// </summary>
     public static class BlenderDatasetLoader
     {
-        public const string PointCloudFileName = "points3d.ply";
+        public const string PointCloudFileName = PointCloudOwnership.FileName;
 
         public static ExportScene Load(string datasetDirectory, ICollection<ValidationProblem> warnings = null)
         {
@@ -31,9 +33,12 @@ namespace NerfDatasetCreator
                 Throw(new ValidationProblem("datasetDir", root, "has no transforms_train.json, so it is not a Blender-format (nerf_synthetic) dataset.", "Pass the folder that contains transforms_{train,val,test}.json."));
 
             var frames = new List<ExportFrame>();
+            var images = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
+            var declaredSizes = new List<(string split, JToken w, JToken h)>();
             double? angleX = null;
             double? cx = null, cy = null;
             SceneNormalisation normalisation = null;
+            int? aabbScale = null;
             PngInfo size = null;
             string sizeSource = null;
             foreach (var split in DatasetSplits.Names)
@@ -45,22 +50,25 @@ namespace NerfDatasetCreator
                     continue;
                 }
                 JObject json;
-                try { json = JObject.Parse(File.ReadAllText(jsonPath)); }
+                try { json = JObject.Parse(FileOps.ReadText(jsonPath)); }
                 catch (JsonException e) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, "is not valid JSON: " + e.Message, "Fix or regenerate the file.")); return null; }
+                catch (Exception e) when (e is IOException || e is UnauthorizedAccessException) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, "cannot be read: " + e.Message, "Check the file's permissions.")); return null; }
 
                 var angle = json["camera_angle_x"];
-                if (angle == null || (angle.Type != JTokenType.Float && angle.Type != JTokenType.Integer) || !((double)angle > 0 && (double)angle < Math.PI))
+                if (!JsonValues.TryNumber(angle, out var angleValue) || !(angleValue > 0 && angleValue < Math.PI))
                     problems.Add(new ValidationProblem(split + ".camera_angle_x", angle?.ToString() ?? "missing", "must be the horizontal field of view in radians, in (0, π).", "Write camera_angle_x, e.g. 0.6911112070083618 for nerf_synthetic."));
-                else if (angleX == null) angleX = (double)angle;
-                else if (Math.Abs(angleX.Value - (double)angle) > 1e-9)
-                    warnings.Add(new ValidationProblem(split + ".camera_angle_x", ((double)angle).ToString("R", CultureInfo.InvariantCulture), "differs from train's " + angleX.Value.ToString("R", CultureInfo.InvariantCulture) + "; the export uses train's (NeRF itself uses the test file's).", "Write the same field of view in every split."));
+                else if (angleX == null) angleX = angleValue;
+                else if (Math.Abs(angleX.Value - angleValue) > 1e-9)
+                    warnings.Add(new ValidationProblem(split + ".camera_angle_x", angleValue.ToString("R", CultureInfo.InvariantCulture), "differs from train's " + angleX.Value.ToString("R", CultureInfo.InvariantCulture) + "; the export uses train's (NeRF itself uses the test file's).", "Write the same field of view in every split."));
                 if (cx == null && json["cx"] != null && json["cy"] != null)
                 {
-                    if (IsNumber(json["cx"]) && IsNumber(json["cy"])) { cx = (double)json["cx"]; cy = (double)json["cy"]; }
+                    if (JsonValues.TryNumber(json["cx"], out var cxValue) && JsonValues.TryNumber(json["cy"], out var cyValue)) { cx = cxValue; cy = cyValue; }
                     else problems.Add(new ValidationProblem(split + ".cx, cy", json["cx"].ToString(Formatting.None) + ", " + json["cy"].ToString(Formatting.None),
                         "must be the principal point in pixels, two numbers.", "Write cx and cy as numbers (W/2 and H/2 without lens shift), or remove both."));
                 }
+                if (json["w"] != null || json["h"] != null) declaredSizes.Add((split, json["w"], json["h"]));
                 if (normalisation == null && json["scene_normalisation"] != null) normalisation = SceneNormalisation.FromJson(json["scene_normalisation"]);
+                if (split == "train") aabbScale = AabbScale.Declared(json["aabb_scale"], Path.GetFileName(jsonPath), warnings);
 
                 if (!(json["frames"] is JArray list) || list.Count == 0)
                 {
@@ -73,8 +81,11 @@ namespace NerfDatasetCreator
                     var frame = list[i] as JObject;
                     var filePath = frame?["file_path"]?.Type == JTokenType.String ? (string)frame["file_path"] : null;
                     if (filePath == null) { problems.Add(new ValidationProblem(field + ".file_path", "missing", "must be the image path.", "Write file_path, e.g. ./train/r_0.")); continue; }
+                    if (PathSafety.Inside(root, filePath, out var outside) == null) { problems.Add(new ValidationProblem(field + ".file_path", filePath, outside + "; convert never reads outside the dataset.", "Copy the images into the dataset folder and name them relative to it.")); continue; }
                     var image = ResolveImage(root, filePath);
                     if (image == null) { problems.Add(new ValidationProblem(field + ".file_path", filePath, "names no image (looked for the path and the path + \".png\").", "Copy the images next to the split files.")); continue; }
+                    if (PathSafety.Inside(root, image, out outside) == null) { problems.Add(new ValidationProblem(field + ".file_path", filePath, outside + "; convert never reads outside the dataset.", "Copy the images into the dataset folder.")); continue; }
+                    if (!images.Add(image)) { problems.Add(new ValidationProblem(field + ".file_path", filePath, "names " + image + ", which another frame already uses; the export would hold it twice.", "Give every frame its own image.")); continue; }
                     if (!TryMatrix(frame["transform_matrix"], out var c2w, out var reason)) { problems.Add(new ValidationProblem(field + ".transform_matrix", frame["transform_matrix"]?.ToString(Formatting.None) ?? "missing", reason, "Write a 4×4 rigid camera-to-world matrix.")); continue; }
 
                     var header = ReadPng(root, image);
@@ -89,6 +100,10 @@ namespace NerfDatasetCreator
             InvalidParameterException.ThrowIfAny(problems.ToArray());
             if (angleX == null || size == null) Throw(new ValidationProblem("datasetDir", root, "has no usable frame.", "Regenerate the dataset."));
 
+            foreach (var (split, w, h) in declaredSizes)
+                if (!(JsonValues.TryNumber(w, out var wValue) && wValue == size.Width && JsonValues.TryNumber(h, out var hValue) && hValue == size.Height))
+                    warnings.Add(new ValidationProblem(split + ".w, h", (w?.ToString(Formatting.None) ?? "?") + " × " + (h?.ToString(Formatting.None) ?? "?"),
+                        "differ from the images' " + size.Width + " × " + size.Height + "; convert uses the images' size and ignores w and h.", "Write the images' size as w and h (validate reports it too)."));
             ReportPartial(frames, f => f.DepthPath, "depth", warnings);
             ReportPartial(frames, f => f.MaskPath, "mask", warnings);
             var focal = 0.5 * size.Width / Math.Tan(0.5 * angleX.Value);
@@ -96,8 +111,13 @@ namespace NerfDatasetCreator
             var shiftX = cx == null ? 0 : (size.Width / 2.0 - cx.Value) / size.Width;
             var shiftY = cy == null ? 0 : (cy.Value - size.Height / 2.0) / size.Height;
             var intrinsics = CameraIntrinsics.FromVerticalFov(vfov, size.Width, size.Height, shiftX, shiftY);
-            var ply = File.Exists(Path.Combine(root, PointCloudFileName)) ? PointCloudFileName : null;
-            return new ExportScene(root, intrinsics, frames, ply, normalisation);
+            // Only the cloud this plugin recorded is the target's surface; 3DGS writes its random cube under the same name.
+            // A link is never followed out of the dataset.
+            var plyPath = Path.Combine(root, PointCloudFileName);
+            var isLink = File.Exists(plyPath) && PathSafety.IsLink(plyPath);
+            var ply = !isLink && PointCloudOwnership.IsOwn(root, warnings) ? PointCloudFileName : null;
+            return new ExportScene(root, intrinsics, frames, ply, normalisation,
+                declaredAabbScale: aabbScale, targetReach: DatasetTargetReach.Read(root, warnings));
         }
 
         /// <summary>The root-relative image path with extension, or null when neither the path nor path + ".png" exists.</summary>
@@ -127,7 +147,7 @@ namespace NerfDatasetCreator
         {
             var stem = image.Substring(0, image.Length - Path.GetExtension(image).Length);
             var candidate = stem + suffix;
-            if (!File.Exists(Path.Combine(root, candidate))) return null;
+            if (!File.Exists(Path.Combine(root, candidate)) || PathSafety.IsLink(Path.Combine(root, candidate))) return null;
             var h = ReadPng(root, candidate);
             return h.ColorType == 0 && h.BitDepth == bitDepth && h.Width == size.Width && h.Height == size.Height ? candidate : null;
         }
@@ -137,11 +157,9 @@ namespace NerfDatasetCreator
             var with = frames.Count(f => path(f) != null);
             if (with > 0 && with < frames.Count)
                 warnings.Add(new ValidationProblem(what, with + " of " + frames.Count + " frames",
-                    $"only some frames have a usable {what} image; loaders need all or none, so {what} is not exported.",
+                    $"only some frames have a usable {what} image; nerfstudio needs it on all frames or none, so its export leaves {what} out (instant-ngp reads train's only; colmap --depths marks images without depth unreliable).",
                     $"Re-capture with {what} for every split."));
         }
-
-        static bool IsNumber(JToken token) => token.Type == JTokenType.Float || token.Type == JTokenType.Integer;
 
         static bool TryMatrix(JToken token, out Matrix4x4d matrix, out string reason)
         {
@@ -154,8 +172,7 @@ namespace NerfDatasetCreator
                 if (!(rows[r] is JArray row) || row.Count != 4) return false;
                 for (var c = 0; c < 4; c++)
                 {
-                    if (!IsNumber(row[c])) return false;
-                    values[r * 4 + c] = (double)row[c];
+                    if (!JsonValues.TryNumber(row[c], out values[r * 4 + c])) return false;
                 }
             }
             matrix = Matrix4x4d.FromRowMajor(values);

@@ -5,8 +5,10 @@ namespace NerfDatasetCreator
     /// <summary>What a conversion wrote and what the user should know (warnings never stop a conversion).</summary>
     public sealed class ConversionResult
     {
-        public ConversionResult(string outputDirectory, string mainFile, IReadOnlyList<string> writtenFiles, IReadOnlyList<ValidationProblem> warnings)
+        public ConversionResult(string outputDirectory, string mainFile, IReadOnlyList<string> writtenFiles, IReadOnlyList<ValidationProblem> warnings,
+            IReadOnlyList<string> trainCommands = null)
         {
+            TrainCommands = trainCommands ?? new string[0];
             OutputDirectory = outputDirectory;
             MainFile = mainFile;
             WrittenFiles = writtenFiles;
@@ -20,5 +22,8 @@ namespace NerfDatasetCreator
 
         public IReadOnlyList<string> WrittenFiles { get; }
         public IReadOnlyList<ValidationProblem> Warnings { get; }
+
+        /// <summary>Training commands worked out for this dataset (nerfstudio: one per model family); empty when the format has one fixed command.</summary>
+        public IReadOnlyList<string> TrainCommands { get; }
     }
 }

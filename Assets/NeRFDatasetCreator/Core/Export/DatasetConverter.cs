@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using System.Text;
 
 namespace NerfDatasetCreator
 {
@@ -11,62 +10,95 @@ namespace NerfDatasetCreator
     /// included) into another loader's format without touching the source. Default output locations:
     /// nerfstudio → <c>&lt;dir&gt;/transforms.json</c>; ngp → <c>&lt;dir&gt;/ngp/transforms.json</c>; colmap →
     /// <c>&lt;dir&gt;/colmap/</c> with <c>images/</c> (copies, flattened names) and <c>sparse/0/</c>. Nothing is ever
-    /// overwritten: every destination is checked before the first byte is written.
+    /// overwritten: every destination is checked before the first byte is written, and the files are written into a
+    /// working folder inside the output and moved into place only when all are complete (<see cref="StagedOutput"/>).
     /// </summary>
     public static class DatasetConverter
     {
         public const string ColmapFolderName = "colmap";
 
         /// <summary>Loads the Blender-format dataset in <paramref name="datasetDir"/> and exports it (see <see cref="Export"/>).</summary>
-        public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null)
+        /// <param name="depths">COLMAP only: also write 3DGS's inverse-depth maps and depth_params.json (<see cref="GaussianSplattingDepths"/>).</param>
+        public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null, bool depths = false)
         {
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
-            return Export(scene, target, outDir, null, NgpWriter.DefaultSceneRadius, warnings);
+            var time = TimeDatasetChecks.ConversionWarning(datasetDir);
+            if (time != null) warnings.Add(time);
+            return Export(scene, target, outDir, null, null, warnings, depths);
         }
 
         /// <summary>
         /// Writes <paramref name="scene"/> in <paramref name="target"/>'s format: the path a fresh capture takes too.
         /// <paramref name="points"/> (output frame) fills COLMAP's points3D.txt; <paramref name="sceneRadius"/>
-        /// (output units, e.g. s·b of the target) sets instant-ngp's aabb_scale.
+        /// (output units, e.g. s·b of the target) sets instant-ngp's aabb_scale (null: the scene's own, <see cref="AabbScale.ForDataset"/>).
         /// </summary>
         public static ConversionResult Export(ExportScene scene, ExportTarget target, string outDir = null,
-            IReadOnlyList<CloudPoint> points = null, double sceneRadius = NgpWriter.DefaultSceneRadius,
-            List<ValidationProblem> warnings = null)
+            IReadOnlyList<CloudPoint> points = null, double? sceneRadius = null,
+            List<ValidationProblem> warnings = null, bool depths = false)
         {
             warnings = warnings ?? new List<ValidationProblem>();
-            switch (target)
+            if (depths && target != ExportTarget.Colmap)
+                throw new InvalidParameterException(new[] { new ValidationProblem("--depths", ExportTargets.Name(target), "is for --to colmap (3DGS reads depth maps for COLMAP sources).", "Drop --depths, or convert to colmap.") });
+            var output = OutputFolder(scene.RootDirectory, target, outDir);
+            // Everything is written into a working folder inside the output and moved into place when complete (StagedOutput).
+            var staged = StagedOutput.Begin(output, "convert");
+            try
             {
-                case ExportTarget.Nerfstudio: return ToNerfstudio(scene, outDir ?? scene.RootDirectory, warnings);
-                case ExportTarget.Ngp: return ToNgp(scene, outDir ?? Path.Combine(scene.RootDirectory, NgpWriter.FolderName), sceneRadius, warnings);
-                case ExportTarget.Colmap: return ToColmap(scene, outDir ?? Path.Combine(scene.RootDirectory, ColmapFolderName), points, warnings);
-                default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
+                ConversionResult result;
+                switch (target)
+                {
+                    case ExportTarget.Nerfstudio: result = ToNerfstudio(scene, output, warnings, staged); break;
+                    case ExportTarget.Ngp: result = ToNgp(scene, output, sceneRadius, warnings, staged); break;
+                    case ExportTarget.Colmap: result = ToColmap(scene, output, points, warnings, depths, staged); break;
+                    default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
+                }
+                staged.Commit();
+                return result;
+            }
+            catch (Exception e) when (!staged.Placing && !(e is SimulatedStopException))
+            {
+                staged.Abandon();
+                throw;
             }
         }
 
-        static ConversionResult ToNerfstudio(ExportScene scene, string outDir, List<ValidationProblem> warnings)
+        /// <summary>Where <paramref name="target"/>'s export of the dataset in <paramref name="root"/> goes: <paramref name="outDir"/>, or the format's default place in the dataset.</summary>
+        public static string OutputFolder(string root, ExportTarget target, string outDir = null)
+        {
+            if (outDir != null) return Path.GetFullPath(outDir);
+            switch (target)
+            {
+                case ExportTarget.Ngp: return Path.GetFullPath(Path.Combine(root, NgpWriter.FolderName));
+                case ExportTarget.Colmap: return Path.GetFullPath(Path.Combine(root, ColmapFolderName));
+                default: return Path.GetFullPath(root);
+            }
+        }
+
+        static ConversionResult ToNerfstudio(ExportScene scene, string outDir, List<ValidationProblem> warnings, StagedOutput staged)
         {
             outDir = Path.GetFullPath(outDir);
             var file = Path.Combine(outDir, NerfstudioWriter.FileName);
             EnsureAbsent(file);
             warnings.AddRange(NerfstudioWriter.Warnings(scene));
             var text = ExportJson.Serialise(NerfstudioWriter.Build(scene, outDir));
-            WriteNewText(file, text);
-            return new ConversionResult(outDir, file, new[] { file }, warnings);
+            staged.WriteNewText(file, text);
+            return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Nerfstudio, warnings, staged)).ToList(), warnings,
+                NerfstudioTraining.Commands(file, scene.TargetReach));
         }
 
-        static ConversionResult ToNgp(ExportScene scene, string outDir, double sceneRadius, List<ValidationProblem> warnings)
+        static ConversionResult ToNgp(ExportScene scene, string outDir, double? sceneRadius, List<ValidationProblem> warnings, StagedOutput staged)
         {
             outDir = Path.GetFullPath(outDir);
             var file = Path.Combine(outDir, NgpWriter.FileName);
             EnsureAbsent(file);
             var text = ExportJson.Serialise(NgpWriter.Build(scene, outDir, sceneRadius, warnings));
-            WriteNewText(file, text);
-            return new ConversionResult(outDir, file, new[] { file }, warnings);
+            staged.WriteNewText(file, text);
+            return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Ngp, warnings, staged)).ToList(), warnings);
         }
 
-        static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings)
+        static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths, StagedOutput staged)
         {
             outDir = Path.GetFullPath(outDir);
             var sparse = Path.Combine(outDir, "sparse", "0");
@@ -85,6 +117,11 @@ namespace NerfDatasetCreator
             if (testTxt != null) all.Add(testTxt);
             if (pointsPly != null) all.Add(pointsPly);
             all.AddRange(copies.Select(c => c.to));
+            if (depths)
+            {
+                InvalidParameterException.ThrowIfAny(GaussianSplattingDepths.Check(scene.Frames, names).ToArray());
+                all.AddRange(GaussianSplattingDepths.Destinations(outDir, names));
+            }
             foreach (var path in all) EnsureAbsent(path);
 
             if (points == null && scene.PointCloudPath != null)
@@ -97,13 +134,13 @@ namespace NerfDatasetCreator
                     "Export the target's surface point cloud from Unity for a better start."));
             }
 
-            Directory.CreateDirectory(images);
-            foreach (var (from, to) in copies) File.Copy(from, to, false);
-            WriteNewText(cameras, ColmapTextWriter.CamerasText(scene.Intrinsics));
-            WriteNewText(imagesTxt, ColmapTextWriter.ImagesText(scene.Frames, names));
-            WriteNewText(pointsTxt, ColmapTextWriter.Points3DText(points));
-            if (testTxt != null) WriteNewText(testTxt, string.Join("\n", testNames) + "\n");
-            if (pointsPly != null) File.Copy(Path.Combine(scene.RootDirectory, scene.PointCloudPath), pointsPly, false);
+            foreach (var (from, to) in copies) staged.Copy(from, to);
+            staged.WriteNewText(cameras, ColmapTextWriter.CamerasText(scene.Intrinsics));
+            staged.WriteNewText(imagesTxt, ColmapTextWriter.ImagesText(scene.Frames, names));
+            staged.WriteNewText(pointsTxt, ColmapTextWriter.Points3DText(points));
+            if (testTxt != null) staged.WriteNewText(testTxt, string.Join("\n", testNames) + "\n");
+            if (pointsPly != null) staged.Copy(Path.Combine(scene.RootDirectory, scene.PointCloudPath), pointsPly);
+            if (depths) GaussianSplattingDepths.Write(scene, names, outDir, warnings, staged);
             if (scene.Frames.Any(f => f.Split != "train"))
                 warnings.Add(new ValidationProblem("images.txt", scene.Frames.Count + " images",
                     "COLMAP has no splits: train, val and test views are all listed; upstream 3DGS's --eval holds out every 8th image by name (sparse/0/test.txt lists the real test views for loaders that read it).",
@@ -120,14 +157,5 @@ namespace NerfDatasetCreator
                 });
         }
 
-        static void WriteNewText(string path, string text)
-        {
-            Directory.CreateDirectory(Path.GetDirectoryName(path));
-            using (var file = new FileStream(path, FileMode.CreateNew, FileAccess.Write))
-            {
-                var bytes = new UTF8Encoding(false).GetBytes(text);
-                file.Write(bytes, 0, bytes.Length);
-            }
-        }
     }
 }

@@ -11,7 +11,8 @@ namespace NerfDatasetCreator
     public sealed class ExportScene
     {
         public ExportScene(string rootDirectory, CameraIntrinsics intrinsics, IEnumerable<ExportFrame> frames,
-            string pointCloudPath = null, SceneNormalisation normalisation = null, double depthUnitScale = DefaultDepthUnitScale)
+            string pointCloudPath = null, SceneNormalisation normalisation = null, double depthUnitScale = DefaultDepthUnitScale,
+            int? declaredAabbScale = null, double? targetReach = null)
         {
             RootDirectory = rootDirectory ?? throw new ArgumentNullException(nameof(rootDirectory));
             Intrinsics = intrinsics ?? throw new ArgumentNullException(nameof(intrinsics));
@@ -21,6 +22,12 @@ namespace NerfDatasetCreator
             if (!(depthUnitScale > 0) || double.IsInfinity(depthUnitScale))
                 throw new InvalidParameterException(new[] { ValidationProblem.OutsideRange("depthUnitScale", depthUnitScale, 1e-9, 1e9) });
             DepthUnitScale = depthUnitScale;
+            if (declaredAabbScale.HasValue && !AabbScale.IsValid(declaredAabbScale.Value))
+                throw new ArgumentOutOfRangeException(nameof(declaredAabbScale), declaredAabbScale, "instant-ngp's aabb_scale is a power of two from 1 to 128.");
+            if (targetReach.HasValue && !(targetReach.Value >= 0 && !double.IsInfinity(targetReach.Value)))
+                throw new ArgumentOutOfRangeException(nameof(targetReach), targetReach, "a reach is a finite distance ≥ 0.");
+            DeclaredAabbScale = declaredAabbScale;
+            TargetReach = targetReach;
         }
 
         /// <summary>16-bit depth PNGs store round(z·1000): one step is a thousandth of an output unit (nerfstudio's default factor).</summary>
@@ -35,6 +42,12 @@ namespace NerfDatasetCreator
 
         /// <summary>The recentring and scaling already applied to the poses (and to depth and points), or null if unknown.</summary>
         public SceneNormalisation Normalisation { get; }
+
+        /// <summary>The <c>aabb_scale</c> the source's <c>transforms_train.json</c> declares (instant-ngp's cube), or null.</summary>
+        public int? DeclaredAabbScale { get; }
+
+        /// <summary>How far the target reaches from the output origin (output units), as the dataset records it; null when unknown.</summary>
+        public double? TargetReach { get; }
 
         /// <summary>Output units per integer step of the depth PNGs.</summary>
         public double DepthUnitScale { get; }

@@ -10,7 +10,7 @@ namespace NerfDatasetCreator
     /// loads every <c>*.json</c> of a folder it is pointed at, so a dedicated folder is safe to pass either way,
     /// whereas the dataset root would merge train, val, test (and nerfstudio's transforms.json) into training.
     /// Paths are relative to the json (<c>../train/r_0.png</c>). Keys: fl_x, fl_y, cx, cy with w, h (NGP divides cx
-    /// by w), camera_angle_x/y, <c>aabb_scale</c> (see <see cref="AabbScale"/>), and with depth
+    /// by w), camera_angle_x/y, <c>aabb_scale</c> (the dataset's own, raised if its target needs more: see <see cref="AabbScale.ForDataset"/>), and with depth
     /// <c>integer_depth_scale</c> + per-frame <c>depth_path</c>. NGP's own <c>scale</c>/<c>offset</c> keys are left
     /// at their defaults (0.33, 0.5) on which aabb_scale is based; our record sits under <c>scene_normalisation</c>.
     /// Masks are not written: NGP's <c>dynamic_mask_*</c> has the opposite meaning (non-zero = exclude).
@@ -21,9 +21,14 @@ namespace NerfDatasetCreator
         public const string FileName = "transforms.json";
 
         /// <summary>nerf_synthetic's ±1.5 box: the scene radius assumed when the target's size is unknown.</summary>
-        public const double DefaultSceneRadius = 1.5;
+        public const double DefaultSceneRadius = AabbScale.DefaultSceneRadius;
 
-        public static JObject Build(ExportScene scene, string outputDirectory, double sceneRadius = DefaultSceneRadius,
+        /// <param name="sceneRadius">
+        /// The content's radius in output units when the caller knows it (a fresh capture: the target's reach);
+        /// null takes the dataset's own <see cref="ExportScene.DeclaredAabbScale"/> and <see cref="ExportScene.TargetReach"/>
+        /// (<see cref="AabbScale.ForDataset"/>).
+        /// </param>
+        public static JObject Build(ExportScene scene, string outputDirectory, double? sceneRadius = null,
             ICollection<ValidationProblem> warnings = null)
         {
             string Rel(string p) => ExportPaths.RelativeTo(outputDirectory, scene.RootDirectory, p);
@@ -36,7 +41,9 @@ namespace NerfDatasetCreator
                 ["camera_angle_y"] = k.CameraAngleY,
             };
             ExportJson.AddPixelIntrinsics(json, k);
-            json["aabb_scale"] = AabbScale.ForRadius(sceneRadius, warnings);
+            json["aabb_scale"] = sceneRadius.HasValue
+                ? AabbScale.ForRadius(sceneRadius.Value, warnings)
+                : AabbScale.ForDataset(scene.DeclaredAabbScale, scene.TargetReach, warnings);
             if (depth) json["integer_depth_scale"] = scene.DepthUnitScale;
             if (scene.Normalisation != null) json["scene_normalisation"] = scene.Normalisation.ToJson();
             var frames = new JArray();

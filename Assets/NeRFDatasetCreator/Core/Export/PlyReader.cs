@@ -1,13 +1,14 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Linq;
 using System.Text;
 
 namespace NerfDatasetCreator
 {
     /// <summary>
     /// Reads back exactly the layout <see cref="PlyWriter"/> writes (and 3DGS's storePly): binary little-endian,
-    /// one vertex element, float x y z nx ny nz, uchar red green blue. Anything else is refused with a message
+    /// one vertex element, float x y z nx ny nz, uchar red green blue, any comment lines. Anything else is refused with a message
     /// rather than misread; a general PLY reader is out of scope.
     /// </summary>
     public static class PlyReader
@@ -18,8 +19,8 @@ namespace NerfDatasetCreator
             {
                 var header = ReadHeader(file);
                 var count = ParseCount(header, path);
-                var expected = PlyWriter.Header(count);
-                if (header != expected)
+                var expected = WithoutComments(PlyWriter.Header(count));
+                if (WithoutComments(header) != expected)
                     throw Problem(path, "is not a binary little-endian PLY with exactly x y z nx ny nz (float) red green blue (uchar).");
                 var points = new List<CloudPoint>(count);
                 using (var reader = new BinaryReader(file, Encoding.ASCII, leaveOpen: true))
@@ -49,6 +50,10 @@ namespace NerfDatasetCreator
             }
             return header.ToString();
         }
+
+        /// <summary>The header without its <c>comment</c> lines (3DGS's storePly writes none, ours one).</summary>
+        static string WithoutComments(string header) =>
+            string.Join("\n", header.Split('\n').Where(line => !line.StartsWith("comment ", StringComparison.Ordinal) && line != "comment"));
 
         static int ParseCount(string header, string path)
         {

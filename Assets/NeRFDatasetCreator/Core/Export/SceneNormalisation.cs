@@ -102,14 +102,15 @@ namespace NerfDatasetCreator
         /// <summary>Reads a record written by <see cref="ToJson"/>.</summary>
         public static SceneNormalisation FromJson(JToken token)
         {
-            bool IsNumber(JToken t) => t != null && (t.Type == JTokenType.Float || t.Type == JTokenType.Integer);
+            bool IsNumber(JToken t) => JsonValues.TryNumber(t, out _);
+            double Number(JToken t) => JsonValues.TryNumber(t, out var v) ? v : 0;
             if (!(token is JObject o) || !IsNumber(o["scale"]) || !(o["centre"] is JArray c) || c.Count != 3 || !c.All(IsNumber))
                 throw new InvalidParameterException(new[]
                 {
                     new ValidationProblem("scene_normalisation", token?.ToString(Newtonsoft.Json.Formatting.None) ?? "null",
                         "is not a record with a number \"scale\" and a \"centre\" of 3 numbers.", "Remove the key or restore it from the original export."),
                 });
-            return new SceneNormalisation(new Vector3d((double)c[0], (double)c[1], (double)c[2]), (double)o["scale"]);
+            return new SceneNormalisation(new Vector3d(Number(c[0]), Number(c[1]), Number(c[2])), Number(o["scale"]));
         }
 
         public override string ToString() =>

@@ -47,6 +47,23 @@ namespace NerfDatasetCreator
         public float[] ColorLinear { get; set; }
 
         /// <summary>
+        /// The colour pass rendered over a <b>black</b> clear into an <c>R16G16B16A16_SFloat</c> texture: 4 IEEE halves
+        /// per pixel (R G B A, A ignored), the values the shaders wrote (linear light in a Linear project, gamma-space
+        /// in a Gamma one: see <see cref="ColorIsGammaEncoded"/>). With <see cref="ColorOverWhite"/>, the input of
+        /// <see cref="DifferenceMatting"/>, which solves alpha and straight colour from the pair.
+        /// </summary>
+        public ushort[] ColorOverBlack { get; set; }
+
+        /// <summary>The same view's colour pass rendered over a <b>white</b> (1, 1, 1) clear; same format as <see cref="ColorOverBlack"/>.</summary>
+        public ushort[] ColorOverWhite { get; set; }
+
+        /// <summary>
+        /// True when the colour pair comes from a Gamma colour-space project: the shaders wrote, and the GPU blended,
+        /// gamma-space (sRGB-curve) values. False (Linear project): linear light.
+        /// </summary>
+        public bool ColorIsGammaEncoded { get; set; }
+
+        /// <summary>
         /// Coverage from the mask pass: 255 where the target covers the sample, 0 elsewhere (intermediate values are
         /// fractional coverage). <see cref="MaskBytesPerPixel"/> bytes per pixel with coverage in the first byte.
         /// </summary>
@@ -102,10 +119,18 @@ namespace NerfDatasetCreator
                 problems.Add(new ValidationProblem("frame.NormalFloatsPerPixel", Text(NormalFloatsPerPixel), "must be 3 (xyz) or 4 (xyzw).", "Use 4 for an RGBA float normal texture."));
             if (ColorSrgb != null && ColorLinear != null)
                 problems.Add(new ValidationProblem("frame.ColorSrgb", "set", "and frame.ColorLinear are both set; the colour pass has one format.", "Set only the array matching the render texture format."));
+            if ((ColorOverBlack == null) != (ColorOverWhite == null))
+                problems.Add(new ValidationProblem(ColorOverBlack == null ? "frame.ColorOverBlack" : "frame.ColorOverWhite", "null",
+                    "is missing: difference matting needs the colour pass over black and over white.", "Read back both colour renders."));
+            if (ColorOverBlack != null && (ColorSrgb != null || ColorLinear != null))
+                problems.Add(new ValidationProblem("frame.ColorOverBlack", "set", "and frame.ColorSrgb/ColorLinear are both set; a frame has one colour representation.",
+                    "Set the matting pair or a single colour array, not both."));
 
             long pixels = (long)Width * Height;
             CheckLength(problems, "frame.ColorSrgb", ColorSrgb?.Length, pixels * 4, "4 bytes (RGBA) per pixel");
             CheckLength(problems, "frame.ColorLinear", ColorLinear?.Length, pixels * 4, "4 floats (RGBA) per pixel");
+            CheckLength(problems, "frame.ColorOverBlack", ColorOverBlack?.Length, pixels * 4, "4 halves (RGBA) per pixel");
+            CheckLength(problems, "frame.ColorOverWhite", ColorOverWhite?.Length, pixels * 4, "4 halves (RGBA) per pixel");
             CheckLength(problems, "frame.Mask", Mask?.Length, pixels * MaskBytesPerPixel, $"{Text(MaskBytesPerPixel)} byte(s) per pixel");
             CheckLength(problems, "frame.Depth", Depth?.Length, pixels, "1 float per pixel");
             CheckLength(problems, "frame.Normals", Normals?.Length, pixels * NormalFloatsPerPixel, $"{Text(NormalFloatsPerPixel)} floats per pixel");

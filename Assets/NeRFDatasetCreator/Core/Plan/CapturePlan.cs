@@ -15,8 +15,9 @@ namespace NerfDatasetCreator
     public sealed class CapturePlan
     {
         CapturePlan(DatasetSettings settings, PlanTarget target, double distance, CameraIntrinsics intrinsics,
-            SceneNormalisation normalisation, IReadOnlyList<ValidationProblem> warnings, IReadOnlyList<PlannedView> views)
+            SceneNormalisation normalisation, IReadOnlyList<ValidationProblem> warnings, IReadOnlyList<PlannedView> views, TimeRange time)
         {
+            Time = time;
             Settings = settings;
             Target = target;
             Distance = distance;
@@ -54,6 +55,9 @@ namespace NerfDatasetCreator
 
         public IReadOnlyList<PlannedView> Views { get; }
 
+        /// <summary>The time span of a dynamic capture (<see cref="TimePlanning"/>); null for a static one.</summary>
+        public TimeRange Time { get; }
+
         public IEnumerable<PlannedView> ViewsOf(DatasetSplit split) => Views.Where(v => v.Split == split);
 
         /// <summary>
@@ -61,13 +65,13 @@ namespace NerfDatasetCreator
         /// Its transforms files list just those frames; settings, distance and intrinsics are the whole plan's.
         /// </summary>
         public CapturePlan Only(Func<PlannedView, bool> keep) =>
-            new CapturePlan(Settings, Target, Distance, Intrinsics, Normalisation, Warnings, Views.Where(keep).ToList());
+            new CapturePlan(Settings, Target, Distance, Intrinsics, Normalisation, Warnings, Views.Where(keep).ToList(), Time);
 
         /// <summary>nerf_synthetic's <c>rotation</c> key for a split (ignored by every loader): the formation's azimuth step.</summary>
         public double RotationOf(DatasetSplit split)
         {
             var s = Settings.Split(split);
-            return s.Formation.AzimuthStepRadians(s.Count);
+            return s.Source != null && s.Source.IsImported ? 0 : s.Formation.AzimuthStepRadians(s.Count);
         }
 
         /// <summary>
@@ -82,6 +86,10 @@ namespace NerfDatasetCreator
             if (double.IsNaN(target.BoundingRadius) || double.IsInfinity(target.BoundingRadius) || target.BoundingRadius < 0)
                 problems.Add(new ValidationProblem("target", ValidationProblem.Format(target.BoundingRadius), "has bounds that are not a finite size.", "Check the target's renderers."));
             if (problems.Count > 0) return problems;
+            settings = CameraSourcePlanning.Resolved(settings, out _, problems);
+            if (problems.Count > 0) return problems;
+            problems.AddRange(TimePlanning.Check(settings, target.ClipLengthSeconds));
+            if (problems.Count > 0 || !CameraSourcePlanning.AnyFormation(settings)) return problems;
 
             if (settings.AutoDistance && !target.HasBounds)
             {
@@ -127,28 +135,35 @@ namespace NerfDatasetCreator
             var problems = Check(settings, target);
             if (problems.Count > 0) throw new InvalidParameterException(problems);
 
-            var copy = settings.Clone();
+            var copy = CameraSourcePlanning.Resolved(settings, out var imported);
             var distance = ResolveDistance(copy, target);
             var normalisation = SceneNormalisation.ForTarget(copy.Normalisation, target.Centre, target.BoundingRadius, distance, copy.NormalisedTargetRadius);
-            var views = new List<PlannedView>(copy.Train.Count + copy.Val.Count + copy.Test.Count);
+            var time = TimePlanning.Resolve(copy, target.ClipLengthSeconds);
+            var views = new List<PlannedView>();
             foreach (var split in DatasetSplits.All)
             {
                 var s = copy.Split(split);
                 var splitName = DatasetSplits.Name(split);
-                var formation = s.Formation.ToFormation(copy.Seed, splitName);
-                var poses = CameraRig.Place(formation, s.Count, target.Centre, distance);
+                imported.TryGetValue(split, out var cameras);
+                var poses = cameras != null
+                    ? cameras.Cameras.Select(c => c.Pose).ToList()
+                    : CameraRig.Place(s.Formation.ToFormation(copy.Seed, splitName), s.Count, target.Centre, distance);
                 var kinds = DatasetLayout.FileKinds(s);
-                for (var i = 0; i < poses.Count; i++)
+                foreach (var slot in TimePlanning.Slots(time, split, poses.Count))
                 {
-                    var pose = poses[i];
+                    var pose = poses[slot.Camera];
                     // A plain loop: this runs once per view, up to 300 000 times.
                     var files = new PlannedFile[kinds.Count];
-                    for (var k = 0; k < files.Length; k++) files[k] = new PlannedFile(kinds[k], DatasetLayout.RelativePath(split, i, kinds[k]));
-                    views.Add(new PlannedView(split, i, pose, normalisation.ApplyToCameraToWorld(BlenderConvention.CameraToWorld(pose)), files));
+                    for (var k = 0; k < files.Length; k++) files[k] = new PlannedFile(kinds[k], DatasetLayout.RelativePath(split, slot.Index, kinds[k]));
+                    var matrix = cameras != null
+                        ? PosePlacement.ToOutput(cameras.Cameras[slot.Camera].FileCameraToWorld, cameras.Poses.Normalisation, normalisation)
+                        : normalisation.ApplyToCameraToWorld(BlenderConvention.CameraToWorld(pose));
+                    views.Add(new PlannedView(split, slot.Index, pose, matrix, files, slot.Time));
                 }
             }
-            var warnings = PlanWarnings.For(copy, target, normalisation, views.Select(v => v.Pose));
-            return new CapturePlan(copy, target, distance, copy.Intrinsics(), normalisation, warnings, views);
+            var warnings = PlanWarnings.For(copy, target, normalisation, views.Select(v => v.Pose))
+                .Concat(CameraSourcePlanning.Warnings(copy, copy.Intrinsics(), imported)).ToList();
+            return new CapturePlan(copy, target, distance, copy.Intrinsics(), normalisation, warnings, views, time);
         }
     }
 }

@@ -7,14 +7,18 @@ namespace NerfDatasetCreator
     /// </summary>
     public readonly struct PlanTarget
     {
-        public PlanTarget(Vector3d centre, double boundingRadius)
+        public PlanTarget(Vector3d centre, double boundingRadius, double clipLengthSeconds = 0)
         {
             Centre = centre;
             BoundingRadius = boundingRadius;
+            ClipLengthSeconds = clipLengthSeconds;
         }
 
         public Vector3d Centre { get; }
         public double BoundingRadius { get; }
+
+        /// <summary>The length of the target's longest clip or Timeline in seconds, for <c>time.end: "clip"</c> (0 when unknown).</summary>
+        public double ClipLengthSeconds { get; }
 
         /// <summary>A target at the Unity origin with unknown bounds (the headless tool's case).</summary>
         public static PlanTarget AtOrigin => new PlanTarget(Vector3d.Zero, 0);

@@ -11,14 +11,19 @@ namespace NerfDatasetCreator
     [Serializable]
     public sealed class PlannedView
     {
-        public PlannedView(DatasetSplit split, int index, UnityPose pose, Matrix4x4d transformMatrix, IReadOnlyList<PlannedFile> files)
+        public PlannedView(DatasetSplit split, int index, UnityPose pose, Matrix4x4d transformMatrix, IReadOnlyList<PlannedFile> files,
+            ViewTime? time = null)
         {
             Split = split;
             Index = index;
             Pose = pose;
             TransformMatrix = transformMatrix;
             Files = files;
+            Time = time;
         }
+
+        /// <summary>When a dynamic capture renders this view (<see cref="TimePlanning"/>); null in a static capture.</summary>
+        public ViewTime? Time { get; }
 
         public DatasetSplit Split { get; }
 

@@ -79,20 +79,28 @@ namespace NerfDatasetCreator
 
         /// <summary>
         /// Writes <c>points3d.ply</c> when <paramref name="pointCloud"/> has points (output world, e.g. from
-        /// <see cref="TargetPointCloud.Sample"/>), the transforms files, dataset_config.json and, for a shard,
+        /// <see cref="TargetPointCloud.Sample"/>; its SHA-256 goes into dataset_config.json's <c>pointCloud</c> record), the
+        /// transforms files, dataset_config.json and, for a shard,
         /// shard.json; then commits.
         /// </summary>
         public void Finish(DatasetWriteSession session, Provenance provenance, IReadOnlyList<CloudPoint> pointCloud = null)
         {
+            PointCloudRecord record = null;
             if (pointCloud != null && pointCloud.Count > 0)
-                PlyWriter.Write(session.PathOf(TargetPointCloud.FileName), pointCloud);
-            DatasetMetadataFiles.Write(session, Plan, provenance);
+            {
+                var path = session.PathOf(TargetPointCloud.FileName);
+                PlyWriter.Write(path, pointCloud);
+                record = PointCloudRecord.Of(path, TargetPointCloud.FileName, pointCloud.Count);
+            }
+            DatasetMetadataFiles.Write(session, Plan, provenance, record);
             if (Shard.Count > 1)
                 ShardManifest.ForShard(Shard, CountsOf(FullPlan)).Write(session.WorkingFolder);
             session.Commit();
         }
 
+        // A multi-view dynamic capture has count × steps views per split (TimePlanning.ViewCount).
         static ViewCounts CountsOf(CapturePlan plan) => new ViewCounts(
-            plan.Settings.Train.Count, plan.Settings.Val.Count, plan.Settings.Test.Count);
+            TimePlanning.ViewCount(plan.Settings, plan.Time, DatasetSplit.Train), TimePlanning.ViewCount(plan.Settings, plan.Time, DatasetSplit.Val),
+            TimePlanning.ViewCount(plan.Settings, plan.Time, DatasetSplit.Test));
     }
 }

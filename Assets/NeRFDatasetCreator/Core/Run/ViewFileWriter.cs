@@ -61,8 +61,8 @@ namespace NerfDatasetCreator
         public double PngEncodeSeconds => Interlocked.Read(ref _encodeTicks) / (double)Stopwatch.Frequency;
 
         /// <summary>
-        /// Writes <paramref name="view"/>'s files. <paramref name="colour"/> carries colour and mask at the supersampled
-        /// size; <paramref name="data"/> carries depth and normals (normals already in the output world frame), at
+        /// Writes <paramref name="view"/>'s files. <paramref name="colour"/> carries colour (the black/white pair for
+        /// <see cref="DifferenceMatting"/>, or one render whose alpha is the mask) and mask at the supersampled size; <paramref name="data"/> carries depth and normals (in the output world frame, or in Unity's with <see cref="RawFrame.NormalsInUnityWorld"/>), at
         /// that size or at the output size (supersampling 1). Either may be the same frame.
         /// </summary>
         public void Write(PlannedView view, RawFrame colour, RawFrame data)
@@ -74,7 +74,13 @@ namespace NerfDatasetCreator
             var wantsMask = view.Writes(DatasetFileKind.MaskPng);
             var rgba = Exact(ref s.Rgba, pixels * 4);
             var mask = wantsMask ? Exact(ref s.Mask, pixels) : null;
-            StraightAlpha.Resolve(colour, rgba, _background, mask);
+            if (colour.ColorOverBlack != null)
+            {
+                // Alpha from the two colour renders; the mask file is the mask pass's geometry coverage (pixels.md §3).
+                DifferenceMatting.Resolve(colour, rgba, _background);
+                if (wantsMask) MaskEncoding.Encode(colour, mask);
+            }
+            else StraightAlpha.Resolve(colour, rgba, _background, mask);
             Save(view, DatasetFileKind.Color, Png(rgba, width, height, PngPixelFormat.Rgba8, ref encoding));
             if (wantsMask) Save(view, DatasetFileKind.MaskPng, Png(mask, width, height, PngPixelFormat.Gray8, ref encoding));
 

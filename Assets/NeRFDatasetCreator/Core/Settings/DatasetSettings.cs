@@ -17,7 +17,8 @@ namespace NerfDatasetCreator
         public const int MinSize = 8;
         public const int MaxSize = 8192;
         public const int MinSupersampling = 1;
-        public const int MaxSupersampling = 4;
+        /// <summary>The one supersampling limit: the writer's (<see cref="RawFrame.MaxSupersampling"/>), so nothing the settings allow can fail there.</summary>
+        public const int MaxSupersampling = RawFrame.MaxSupersampling;
         public const int MaxViews = FormationMath.MaxViews;
 
         /// <summary>Bounds of <see cref="NormalisedTargetRadius"/> (output units).</summary>
@@ -93,6 +94,9 @@ namespace NerfDatasetCreator
         /// <summary>Points sampled on the target's mesh surfaces into <c>points3d.ply</c> (3DGS's initial cloud); 0 writes no file.</summary>
         public int PointCloudPoints;
 
+        /// <summary>Dynamic capture: what drives time, its range and steps, and how cameras meet it (static by default).</summary>
+        public TimeSettings Time = new TimeSettings();
+
         public SplitSettings Split(DatasetSplit split)
         {
             switch (split)
@@ -113,6 +117,7 @@ namespace NerfDatasetCreator
             copy.Val = Val?.Clone();
             copy.Test = Test?.Clone();
             copy.Background = Background?.Clone();
+            copy.Time = Time?.Clone();
             return copy;
         }
 

@@ -61,6 +61,11 @@ namespace NerfDatasetCreator
             w.WritePropertyName("normalisation"); w.WriteValue(NormalisationModes.IsDefined(s.Normalisation) ? NormalisationModes.Name(s.Normalisation) : ((int)s.Normalisation).ToString(System.Globalization.CultureInfo.InvariantCulture));
             Number(w, "normalisedTargetRadius", s.NormalisedTargetRadius);
             w.WritePropertyName("pointCloudPoints"); w.WriteValue(s.PointCloudPoints);
+            if (s.Time != null && s.Time.Enabled)
+            {
+                w.WritePropertyName(TimeSettingsJson.Key);
+                TimeSettingsJson.WriteObject(w, s.Time);
+            }
             w.WritePropertyName("splits");
             w.WriteStartObject();
             foreach (var split in DatasetSplits.All)
@@ -93,6 +98,7 @@ namespace NerfDatasetCreator
             w.WritePropertyName("depth"); w.WriteValue(ExtraOutputs.Name(split.Depth));
             w.WritePropertyName("normal"); w.WriteValue(ExtraOutputs.Name(split.Normal));
             w.WritePropertyName("mask"); w.WriteValue(split.Mask);
+            if (split.Source != null && split.Source.IsImported) CameraSourceJson.Write(w, split.Source);
             w.WriteEndObject();
         }
 
@@ -139,7 +145,7 @@ namespace NerfDatasetCreator
             }
         }
 
-        public static SettingsReadResult ReadFile(string path) => Read(File.ReadAllText(path), path);
+        public static SettingsReadResult ReadFile(string path) => Read(FileOps.ReadText(path), path);
 
         /// <summary>
         /// Reads a config. Throws <see cref="SettingsFormatException"/> (with line and column) when the text is not
@@ -166,6 +172,10 @@ namespace NerfDatasetCreator
             }
 
             var reader = new Reader(sourceName);
+            foreach (var (line, column, what) in JsonLeniency.Find(text))
+                reader.Warnings.Add(new ValidationProblem(sourceName + "(" + line + "," + column + ")", what,
+                    "is not JSON; this plugin accepts it, but Python's json, jq and other tools refuse the file.",
+                    "Remove it so that every tool can read the config."));
             var s = new DatasetSettings();
             reader.Object(root, "", new Dictionary<string, Action<JToken, string>>
             {
@@ -231,6 +241,7 @@ namespace NerfDatasetCreator
                 },
                 ["normalisedTargetRadius"] = (t, p) => s.NormalisedTargetRadius = reader.Double(t, p),
                 ["pointCloudPoints"] = (t, p) => s.PointCloudPoints = reader.Int(t, p),
+                [TimeSettingsJson.Key] = (t, p) => TimeSettingsJson.Read(reader, t, p, s.Time),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),
@@ -247,6 +258,7 @@ namespace NerfDatasetCreator
                 ["depth"] = (t, p) => split.Depth = reader.Extra(t, p),
                 ["normal"] = (t, p) => split.Normal = reader.Extra(t, p),
                 ["mask"] = (t, p) => split.Mask = reader.Bool(t, p),
+                ["source"] = (t, p) => CameraSourceJson.Read(t, p, split.Source, reader.String, reader.Bool, reader.Error, reader.Object),
             });
         }
 
@@ -257,7 +269,7 @@ namespace NerfDatasetCreator
             var kindToken = obj["kind"];
             if (kindToken == null) throw reader.Error(token, path + ".kind", "is missing; use one of " + FormationKinds.NameList() + ".");
             if (!FormationKinds.TryParse(reader.String(kindToken, path + ".kind"), out var kind))
-                throw reader.Error(kindToken, path + ".kind", "is not a known formation; use one of " + FormationKinds.NameList() + ".");
+                throw reader.Error(kindToken, path + ".kind", Describe(kindToken) + " is not a known formation; use one of " + FormationKinds.NameList() + ".");
             f.Kind = kind;
             var handlers = new Dictionary<string, Action<JToken, string>> { ["kind"] = (t, p) => { } };
             foreach (var name in FormationSettings.ParameterNames(kind))
@@ -294,7 +306,7 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>Walks a config, typing values and collecting warnings with the place they come from.</summary>
-        sealed class Reader
+        internal sealed class Reader
         {
             readonly string _source;
             public readonly List<ValidationProblem> Warnings = new List<ValidationProblem>();
@@ -337,7 +349,7 @@ namespace NerfDatasetCreator
 
             public double Double(JToken t, string path, string expected = "a number")
             {
-                if (t.Type == JTokenType.Float || t.Type == JTokenType.Integer) return (double)t;
+                if (JsonValues.TryNumber(t, out var number)) return number;
                 // Validation, not the reader, reports NaN and infinity, so a file written while a field held one reads back.
                 if (t.Type == JTokenType.String && double.TryParse((string)t, System.Globalization.NumberStyles.Float,
                         System.Globalization.CultureInfo.InvariantCulture, out var special) && (double.IsNaN(special) || double.IsInfinity(special)))
@@ -348,17 +360,15 @@ namespace NerfDatasetCreator
             public long Long(JToken t, string path)
             {
                 if (t.Type != JTokenType.Integer) throw Error(t, path, "must be a whole number, not " + Describe(t) + ".");
-                try { return (long)t; }
-                catch (OverflowException) { throw Error(t, path, "is too large; use a whole number from " + long.MinValue + " to " + long.MaxValue + "."); }
+                if (!JsonValues.TryLong(t, out var value)) throw Error(t, path, "is too large; use a whole number from " + long.MinValue + " to " + long.MaxValue + ".");
+                return value;
             }
 
             public int Int(JToken t, string path)
             {
                 if (t.Type != JTokenType.Integer) throw Error(t, path, "must be a whole number, not " + Describe(t) + ".");
-                // Newtonsoft holds integers as long, or as BigInteger beyond long's range.
-                var raw = ((JValue)t).Value;
-                if (!(raw is long value) || value > int.MaxValue || value < int.MinValue) throw Error(t, path, "is far too large for this setting.");
-                return (int)value;
+                if (!JsonValues.TryInt(t, out var value)) throw Error(t, path, "is far too large for this setting.");
+                return value;
             }
 
             public bool Bool(JToken t, string path)

@@ -84,6 +84,7 @@ namespace NerfDatasetCreator
 
             foreach (var split in DatasetSplits.All)
                 ValidateSplit(settings, split, problems);
+            problems.AddRange(TimeSettingsValidator.Validate(settings));
 
             if (settings.Loaders == TargetLoaders.None)
                 Add(new ValidationProblem("loaders", "[]", "is empty, so nothing checks that the splits suit any loader.",
@@ -111,6 +112,11 @@ namespace NerfDatasetCreator
             if (s == null)
             {
                 problems.Add(new ValidationProblem(prefix, "null", "is missing.", "Give every split a count and a formation."));
+                return;
+            }
+            if (s.Source != null && s.Source.IsImported)
+            {
+                problems.AddRange(s.Source.Validate(prefix + ".source")); // the file sets the count; no formation is used
                 return;
             }
             var count = ValidationProblem.OutsideRange(prefix + ".count", s.Count, 0, DatasetSettings.MaxViews);

@@ -12,10 +12,14 @@ namespace NerfDatasetCreator
         public ExtraOutput Normal = ExtraOutput.None;
         public bool Mask;
 
+        /// <summary>Where the split's cameras come from: its formation, or an imported file (see <see cref="CameraSourceSettings"/>).</summary>
+        public CameraSourceSettings Source = new CameraSourceSettings();
+
         public SplitSettings Clone()
         {
             var copy = (SplitSettings)MemberwiseClone();
             copy.Formation = Formation?.Clone();
+            copy.Source = Source?.Clone();
             return copy;
         }
     }

@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using System.Text;
 using Newtonsoft.Json;
 using Newtonsoft.Json.Linq;
 
@@ -14,25 +13,32 @@ namespace NerfDatasetCreator
     /// </summary>
     static class MergeStaging
     {
-        /// <summary>Builds the dataset in a hidden sibling folder and renames it into place; returns the problem on failure, after undoing everything.</summary>
+        /// <summary>
+        /// Builds the dataset in a hidden sibling folder and renames it into place; returns the problem on failure, after
+        /// undoing everything. Its journal lists every planned move first, so that a merge killed anywhere is rolled
+        /// back (files moved back into the shards) or finished by the next merge into the same output (<see cref="Recovery"/>).
+        /// </summary>
         public static ValidationProblem Write(List<ShardFolder> shards, List<MergeFrame> frames, List<MergeTransfer> transfers, string output, bool move)
         {
-            var parent = Path.GetDirectoryName(output);
-            var staging = Path.Combine(parent ?? ".", "." + Path.GetFileName(output) + ".merging-" + Guid.NewGuid().ToString("N").Substring(0, 8));
+            var staging = WorkingFolders.NewMerging(output);
+            var journal = new OperationJournal { Operation = "merge", Output = output };
+            if (move) journal.Moves.AddRange(transfers.Select(t => new KeyValuePair<string, string>(t.Source, t.Relative)));
             var moved = new List<MergeTransfer>();
+            var inPlace = false;
             try
             {
-                Directory.CreateDirectory(staging);
+                FileOps.CreateDirectory(staging);
+                journal.Save(staging);
                 foreach (var t in transfers)
                 {
                     var destination = Path.Combine(staging, t.Relative.Replace('/', Path.DirectorySeparatorChar));
-                    Directory.CreateDirectory(Path.GetDirectoryName(destination));
+                    FileOps.CreateDirectory(Path.GetDirectoryName(destination));
                     if (move)
                     {
-                        File.Move(t.Source, destination);
+                        FileOps.MoveFile(t.Source, destination);
                         moved.Add(t);
                     }
-                    else File.Copy(t.Source, destination, false);
+                    else FileOps.CopyFile(t.Source, destination);
                 }
                 foreach (var split in ViewCounts.SplitNames)
                 {
@@ -48,27 +54,39 @@ namespace NerfDatasetCreator
                 }
                 var config = shards.FirstOrDefault(s => s.Config != null);
                 if (config != null) WriteJson(Path.Combine(staging, ShardMerger.ConfigFileName), MergedConfig(config.Config, shards));
-                Directory.Move(staging, output);
+                journal.State = OperationJournal.Committing;
+                journal.Save(staging);
+                FileOps.MoveDirectory(staging, output);
+                inPlace = true;
+                OperationJournal.Delete(output);
                 return null;
+            }
+            catch (Exception e) when (inPlace && (e is IOException || e is UnauthorizedAccessException))
+            {
+                return null; // merged and in place; the journal left inside is removed by the next run on this output
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 var undone = Undo(moved, staging);
                 return new ValidationProblem("output", output, "could not be written: " + e.Message,
                     undone ? "Nothing was changed; fix the cause (disk space, permissions, a folder created meanwhile) and merge again."
-                           : "Some moved files could not be put back; they are in " + staging + " under the same relative paths. Move them back before retrying.");
+                           : "Some moved files could not be put back; they are in " + staging + " under the same relative paths. Merge into the same --out again to move them back.");
             }
         }
 
         /// <summary>
         /// The first shard's config made to describe the whole dataset: <c>imagesRendered</c> (a boolean, see
         /// <see cref="DatasetConfigWriter"/>) true only when every shard rendered its images, and the per-shard
-        /// <c>statistics</c> dropped.
+        /// <c>statistics</c> dropped; the <c>pointCloud</c> record of the shard that wrote points3d.ply.
         /// </summary>
         static JToken MergedConfig(JToken first, List<ShardFolder> shards)
         {
             if (!(first.DeepClone() is JObject merged)) return first.DeepClone();
             merged.Remove("statistics");
+            // Only shard 0 writes points3d.ply (merge carries that file over unchanged), so its record describes the merged dataset.
+            var cloud = shards.Select(s => (s.Config as JObject)?[PointCloudRecord.Key]).FirstOrDefault(r => r != null);
+            if (cloud != null) merged[PointCloudRecord.Key] = cloud.DeepClone();
+            else merged.Remove(PointCloudRecord.Key);
             var rendered = shards.Select(s => (s.Config as JObject)?["imagesRendered"]).ToList();
             if (rendered.All(r => r != null && r.Type == JTokenType.Boolean))
                 merged["imagesRendered"] = rendered.All(r => (bool)r);
@@ -82,7 +100,7 @@ namespace NerfDatasetCreator
             {
                 try
                 {
-                    File.Move(Path.Combine(staging, moved[i].Relative.Replace('/', Path.DirectorySeparatorChar)), moved[i].Source);
+                    FileOps.MoveFile(Path.Combine(staging, moved[i].Relative.Replace('/', Path.DirectorySeparatorChar)), moved[i].Source);
                 }
                 catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
                 {
@@ -91,14 +109,13 @@ namespace NerfDatasetCreator
             }
             if (complete && Directory.Exists(staging))
             {
-                try { Directory.Delete(staging, true); }
+                try { FileOps.DeleteDirectory(staging); }
                 catch (IOException) { }
                 catch (UnauthorizedAccessException) { }
             }
             return complete;
         }
 
-        static void WriteJson(string path, JToken json) =>
-            File.WriteAllText(path, json.ToString(Formatting.Indented) + "\n", new UTF8Encoding(false));
+        static void WriteJson(string path, JToken json) => FileOps.WriteText(path, json.ToString(Formatting.Indented) + "\n");
     }
 }

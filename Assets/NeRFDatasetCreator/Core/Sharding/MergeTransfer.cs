@@ -46,8 +46,20 @@ namespace NerfDatasetCreator
                 {
                     var dir = Path.Combine(shard.Folder, split);
                     if (!Directory.Exists(dir)) continue;
+                    if (PathSafety.IsLink(dir))
+                    {
+                        problems.Add(new ValidationProblem(dir, "(symbolic link)", "is a link, which may lead outside " + shard.Name + "; merge never follows links.",
+                            "Replace the link by the folder it points to (e.g. cp -rL), then merge again."));
+                        continue;
+                    }
                     foreach (var path in Directory.GetFiles(dir).OrderBy(p => p, StringComparer.Ordinal))
                     {
+                        if (PathSafety.IsLink(path))
+                        {
+                            problems.Add(new ValidationProblem(path, "(symbolic link)", "is a link, which may lead outside " + shard.Name + "; merge never follows links.",
+                                "Replace the link by the file it points to, then merge again."));
+                            continue;
+                        }
                         var m = ViewFilePattern.Match(Path.GetFileName(path));
                         var key = m.Success ? shard.Folder + "|" + split + "|" + m.Groups[1].Value.TrimStart('0').PadLeft(1, '0') : null;
                         if (key == null) { warnings.Add(path + " is not a view's file and was left in place."); continue; }
@@ -73,7 +85,18 @@ namespace NerfDatasetCreator
                         problems.Add(new ValidationProblem(where, (string)property.Value, "points outside the shard folder.", "Paths in a dataset must be relative and stay inside it."));
                         continue;
                     }
-                    var source = Path.Combine(frame.Shard.Folder, relative.Replace('/', Path.DirectorySeparatorChar));
+                    if (IsMetadata(relative))
+                    {
+                        problems.Add(new ValidationProblem(where, (string)property.Value, "names the shard's own metadata file; merge never copies or moves a shard's metadata.",
+                            "Correct the key: *_path keys name a view's image files."));
+                        continue;
+                    }
+                    var source = PathSafety.Inside(frame.Shard.Folder, relative, out var outside);
+                    if (source == null)
+                    {
+                        problems.Add(new ValidationProblem(where, (string)property.Value, outside + ".", "Paths in a dataset must stay inside it."));
+                        continue;
+                    }
                     if (!File.Exists(source))
                     {
                         problems.Add(new ValidationProblem(where, (string)property.Value, "names " + source + ", which does not exist.", "Rerun " + owner + "; its capture did not finish."));
@@ -91,7 +114,11 @@ namespace NerfDatasetCreator
             foreach (var shard in shards)
             {
                 var cloud = Path.Combine(shard.Folder, TargetPointCloud.FileName);
-                if (File.Exists(cloud)) Add(cloud, TargetPointCloud.FileName, shard.Name);
+                if (!File.Exists(cloud)) continue;
+                if (PathSafety.IsLink(cloud))
+                    problems.Add(new ValidationProblem(cloud, "(symbolic link)", "is a link, which may lead outside " + shard.Name + "; merge never follows links.",
+                        "Replace the link by the file it points to, then merge again."));
+                else Add(cloud, TargetPointCloud.FileName, shard.Name);
             }
             foreach (var leftover in byView.Values.SelectMany(v => v))
                 warnings.Add(leftover + " belongs to no frame of its shard's transforms and was left in place.");
@@ -102,6 +129,15 @@ namespace NerfDatasetCreator
                     if (!known.Contains(Path.GetFileName(entry)) && !claimed.Contains(entry))
                         warnings.Add(entry + " is not part of the Blender-format splits and was not merged (per-shard extras such as a nerfstudio transforms.json must be made again from the merged dataset).");
             return transfers;
+        }
+
+        /// <summary>The files that describe a shard or a dataset rather than a view: never transferred, whatever a frame's key says.</summary>
+        static bool IsMetadata(string relative)
+        {
+            var name = Path.GetFileName(relative);
+            return DatasetSplits.Names.Any(s => string.Equals(name, DatasetLayout.TransformsFileName(s), StringComparison.OrdinalIgnoreCase))
+                   || new[] { ShardManifest.FileName, DatasetLayout.ConfigFileName, OperationJournal.FileName, NerfstudioWriter.FileName }
+                       .Any(m => string.Equals(name, m, StringComparison.OrdinalIgnoreCase));
         }
 
         static string Str(int value) => value.ToString(CultureInfo.InvariantCulture);

@@ -71,7 +71,12 @@ namespace NerfDatasetCreator
             if (!File.Exists(path)) return null;
             try
             {
-                return VerbatimJson.Parse(File.ReadAllText(path));
+                return VerbatimJson.Parse(FileOps.ReadText(path));
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                problems.Add(new ValidationProblem(path, "(unreadable)", "cannot be read: " + e.Message, "Check the file's permissions, or recapture this shard."));
+                return null;
             }
             catch (JsonException e)
             {

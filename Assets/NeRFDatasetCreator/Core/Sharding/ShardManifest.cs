@@ -93,7 +93,16 @@ namespace NerfDatasetCreator
                     new ValidationProblem(path, "(missing)", "does not exist, so this folder is not the output of a sharded capture.",
                         "Pass the folders that the batch captures with -nerfShard i/N wrote; each holds a shard.json."),
                 });
-            return Parse(File.ReadAllText(path), path);
+            string text;
+            try
+            {
+                text = FileOps.ReadText(path);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                throw new InvalidParameterException(new[] { new ValidationProblem(path, "(unreadable)", "cannot be read: " + e.Message, "Check the file's permissions, or recapture this shard.") });
+            }
+            return Parse(text, path);
         }
 
         /// <summary>Parses a manifest; <paramref name="source"/> (a path) prefixes the field names in problems.</summary>
@@ -113,7 +122,7 @@ namespace NerfDatasetCreator
             var problems = new List<ValidationProblem>();
             if (!(root["format"] is JValue format && format.Type == JTokenType.String && (string)format == Format))
                 problems.Add(new ValidationProblem(source + ": format", root["format"]?.ToString(Formatting.None) ?? "(missing)", "is not \"" + Format + "\".", "Pass the shard folders written by the NeRF Dataset Creator capture."));
-            if (!(root["version"] is JValue version) || version.Type != JTokenType.Integer || (long)version != Version)
+            if (!JsonValues.TryLong(root["version"], out var version) || version != Version)
                 problems.Add(new ValidationProblem(source + ": version", root["version"]?.ToString() ?? "(missing)", "is not " + Version + ".", "Merge with the version of the tool that captured the shards."));
             var assignment = root["assignment"];
             if (assignment != null && !(assignment.Type == JTokenType.String && (string)assignment == RoundRobin))
@@ -145,10 +154,10 @@ namespace NerfDatasetCreator
                 var indices = new List<int>();
                 foreach (var item in list)
                 {
-                    if (item.Type != JTokenType.Integer || (long)item < 0 || (n.HasValue && (long)item >= n.Value))
+                    if (!JsonValues.TryInt(item, out var view) || view < 0 || (n.HasValue && view >= n.Value))
                         problems.Add(new ValidationProblem(source + ": views." + split, item.ToString(Formatting.None),
                             "is not a view index of the split (0 to viewCounts." + split + " − 1).", "Recapture this shard."));
-                    else indices.Add((int)item);
+                    else indices.Add(view);
                 }
                 indices.Sort();
                 views[split] = indices;
@@ -162,7 +171,7 @@ namespace NerfDatasetCreator
         static int? Integer(JObject o, string key, string source, List<ValidationProblem> problems)
         {
             var token = o[key];
-            if (token != null && token.Type == JTokenType.Integer && (long)token >= int.MinValue && (long)token <= int.MaxValue) return (int)token;
+            if (JsonValues.TryInt(token, out var value)) return value;
             problems.Add(new ValidationProblem(source + ": " + key, token?.ToString(Formatting.None) ?? "(missing)", "is not a whole number.", "Recapture this shard or restore its shard.json."));
             return null;
         }

@@ -22,7 +22,7 @@ namespace NerfDatasetCreator
         /// where it ran, what it rendered): they may differ between shards, which merge reports as a warning. Every
         /// other key (settings, seed, distance, target, plugin version) must be identical.
         /// </summary>
-        public static readonly IReadOnlyList<string> PerRunConfigKeys = new[] { "createdUtc", "imagesRendered", "statistics", "tool", "unityVersion" };
+        public static readonly IReadOnlyList<string> PerRunConfigKeys = new[] { "createdUtc", "imagesRendered", "pointCloud", "statistics", "tool", "unityVersion" };
 
         public static string TransformsFileName(string split) => DatasetLayout.TransformsFileName(split);
 
@@ -38,29 +38,42 @@ namespace NerfDatasetCreator
             var empty = new Dictionary<string, int>();
             if (string.IsNullOrWhiteSpace(outputFolder))
                 return Fail(new ValidationProblem("output", outputFolder ?? "(missing)", "is empty.", "Name the folder to create for the merged dataset, e.g. --out NeRFDatasets/lego."), warnings);
-            var output = Path.GetFullPath(outputFolder);
+            var output = Path.GetFullPath(outputFolder).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
+            var length = PathLimits.Check(output, "output", MergingSuffix);
+            if (length != null) return Fail(length, warnings);
+            // An earlier merge into this output that was killed is finished or rolled back first (its moved files go back).
+            var recovered = Recovery.Run(output);
+            var notes = recovered.Select(n => n.Text).ToList();
+            if (recovered.Any(n => n.Operation == "merge" && n.Finished) && Directory.Exists(output))
+                return MergeResult.FinishedEarlier(output, warnings, notes);
             if (Directory.Exists(output) || File.Exists(output))
                 return Fail(new ValidationProblem("output", output, "already exists; merge never writes into or over an existing folder.",
-                    "Choose a new folder name, or move the existing one away first."), warnings);
+                    "Choose a new folder name, or move the existing one away first."), warnings, notes);
+            notes.AddRange(Leftover.Of(output).Select(l => "left over: " + l + " `nerf-dataset clean " + Path.GetDirectoryName(output) + "` removes it."));
 
             var shards = ShardFolder.ReadAll(shardFolders, problems);
-            if (problems.Count > 0) return new MergeResult(output, problems, warnings, empty, 0);
+            if (problems.Count > 0) return new MergeResult(output, problems, warnings, empty, 0, notes);
+            foreach (var shard in shards.Where(s => output.StartsWith(s.Folder + Path.DirectorySeparatorChar, System.StringComparison.Ordinal)))
+                warnings.Add("--out " + output + " is inside " + shard.Name + "; the merged dataset will sit in a shard folder (choose a folder beside the shards).");
             MergeChecks.CheckShardSet(shards, problems);
-            if (problems.Count > 0) return new MergeResult(output, problems, warnings, empty, 0);
+            if (problems.Count > 0) return new MergeResult(output, problems, warnings, empty, 0, notes);
 
             var counts = shards[0].Manifest.Counts;
             var frames = MergeChecks.CollectFrames(shards, counts, problems, warnings);
             MergeChecks.CheckConsistency(shards, problems, warnings);
             var transfers = MergeTransfer.Plan(shards, frames, problems, warnings);
-            if (problems.Count > 0) return new MergeResult(output, problems, warnings, empty, 0);
+            if (problems.Count > 0) return new MergeResult(output, problems, warnings, empty, 0, notes);
 
             var perSplit = ViewCounts.SplitNames.ToDictionary(s => s, s => frames.Count(f => f.Split == s));
             var failure = MergeStaging.Write(shards, frames, transfers, output, moveFiles);
-            if (failure != null) return Fail(failure, warnings);
-            return new MergeResult(output, problems, warnings, perSplit, transfers.Count);
+            if (failure != null) return Fail(failure, warnings, notes);
+            return new MergeResult(output, problems, warnings, perSplit, transfers.Count, notes);
         }
 
-        static MergeResult Fail(ValidationProblem problem, List<string> warnings) =>
-            new MergeResult(null, new[] { problem }, warnings, new Dictionary<string, int>(), 0);
+        /// <summary>What the merge's working folder adds to the output's name: "." before it, ".merging-" and 8 hex digits after.</summary>
+        const int MergingSuffix = 18;
+
+        static MergeResult Fail(ValidationProblem problem, List<string> warnings, IReadOnlyList<string> notes = null) =>
+            new MergeResult(null, new[] { problem }, warnings, new Dictionary<string, int>(), 0, notes);
     }
 }

@@ -50,6 +50,7 @@ namespace NerfDatasetCreator
             {
                 fields.Add(SplitField(split, "count"));
                 fields.Add(SplitField(split, "formation"));
+                fields.Add(SplitField(split, "source"));
                 var formation = settings.Split(split)?.Formation;
                 if (formation != null)
                     foreach (var parameter in FormationSettings.ParameterNames(formation.Kind))

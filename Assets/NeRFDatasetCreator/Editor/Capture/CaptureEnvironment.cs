@@ -37,13 +37,15 @@ namespace NerfDatasetCreator.Editor.Capture
         }
 
         /// <summary>
-        /// The colour target's format, chosen so that its bytes are sRGB-encoded in both colour spaces. Linear: shaders
-        /// output linear values, an _SRGB target encodes them on write. Gamma: shaders already output gamma-space
-        /// values and Unity treats textures as non-sRGB ("In Gamma project color space, Unity returns a linear
-        /// GraphicsFormat", GraphicsFormatUtility.GetGraphicsFormat), so a UNorm target stores them as they are.
+        /// The colour pass's format: 16-bit float RGBA, rendered twice per view (over black and over white) for difference
+        /// matting (Core's DifferenceMatting). A float format has no sRGB variant, so the GPU stores what the shaders
+        /// write, unencoded: linear light in a Linear project, gamma-space values in a Gamma one
+        /// (<c>RenderTextureDescriptor(w, h, GraphicsFormat, depth)</c> sets its sRGB flag from the format alone, UCR
+        /// <c>Runtime/Export/Graphics/Texture.cs</c>; URP 14 renders into the target's own descriptor when it needs an
+        /// intermediate, <c>UniversalRenderPipelineCore.cs:1365</c>). Half precision (step 2⁻¹¹ below 1) keeps alpha within
+        /// 0.3 of an 8-bit step; it is also URP's own HDR format, blendable on every desktop GPU.
         /// </summary>
-        public static GraphicsFormat ColorFormat =>
-            QualitySettings.activeColorSpace == ColorSpace.Linear ? GraphicsFormat.R8G8B8A8_SRGB : GraphicsFormat.R8G8B8A8_UNorm;
+        public const GraphicsFormat ColorFormat = GraphicsFormat.R16G16B16A16_SFloat;
 
         public const GraphicsFormat DepthFormat = GraphicsFormat.R32_SFloat;
         public const GraphicsFormat NormalFormat = GraphicsFormat.R32G32B32A32_SFloat;
@@ -58,6 +60,16 @@ namespace NerfDatasetCreator.Editor.Capture
             return SystemInfo.IsFormatSupported(format, GraphicsFormatUsage.Render);
 #else
             return SystemInfo.IsFormatSupported(format, FormatUsage.Render);
+#endif
+        }
+
+        /// <summary>Whether transparent content can be alpha-blended into <paramref name="format"/>.</summary>
+        public static bool CanBlend(GraphicsFormat format)
+        {
+#if UNITY_2023_2_OR_NEWER
+            return SystemInfo.IsFormatSupported(format, GraphicsFormatUsage.Blend);
+#else
+            return SystemInfo.IsFormatSupported(format, FormatUsage.Blend);
 #endif
         }
 
@@ -109,7 +121,11 @@ namespace NerfDatasetCreator.Editor.Capture
                     "and normals across edges. Set Render Scale to 1 in the asset (Quality settings may select another " +
                     "asset per level), then capture.");
             Require(ColorFormat, "colour", passes, CapturePasses.Color);
-            Require(MaskFormat, "mask", passes, CapturePasses.Mask | CapturePasses.Color);
+            if ((passes & CapturePasses.Color) != 0 && !CanBlend(ColorFormat))
+                throw new CaptureException(
+                    "This GPU (" + SystemInfo.graphicsDeviceName + ", " + SystemInfo.graphicsDeviceType + ") cannot blend into " +
+                    ColorFormat + ", the format of the colour pass, so transparent objects would render wrong. Capture on another machine.");
+            Require(MaskFormat, "mask", passes, CapturePasses.Mask);
             Require(DepthFormat, "depth", passes, CapturePasses.Depth);
             Require(NormalFormat, "normal", passes, CapturePasses.Normal);
         }

@@ -11,7 +11,8 @@ namespace NerfDatasetCreator.Editor.Capture
     public sealed class CaptureOptions
     {
         public const int MaxSize = 8192;
-        public const int MaxSupersampling = 8;
+        /// <summary>Core's limit (<see cref="RawFrame.MaxSupersampling"/>): a larger k would render, then fail in the writer.</summary>
+        public const int MaxSupersampling = RawFrame.MaxSupersampling;
         public const int MaxReadbacksInFlight = 8;
 
         /// <summary>Output image width in pixels (the written PNG's width, before supersampling).</summary>
@@ -20,7 +21,7 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>Output image height in pixels.</summary>
         public int Height = 800;
 
-        /// <summary>k: colour and mask are rendered at k·W × k·H and box-filtered later (anti-aliased edges, true alpha).</summary>
+        /// <summary>k: colour and mask are rendered at k·W × k·H and box-filtered later (anti-aliased edges and alpha).</summary>
         public int Supersampling = 2;
 
         public CapturePasses Passes = CapturePasses.All;
@@ -57,6 +58,12 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>Use ReadPixels even where AsyncGPUReadback is supported (diagnostics; the slower, always-available path).</summary>
         public bool ForceSynchronousReadback;
 
+        /// <summary>
+        /// Called before each view is rendered with the root of the capture's copies and the view's index (a dynamic
+        /// capture poses its content there at the view's time, see ContentClock); null for a static capture.
+        /// </summary>
+        public System.Action<GameObject, int> BeforeView;
+
         public int SupersampledWidth => Width * Supersampling;
         public int SupersampledHeight => Height * Supersampling;
         public int DataWidth => DepthAndNormalAtOutputSize ? Width : SupersampledWidth;
@@ -72,7 +79,9 @@ namespace NerfDatasetCreator.Editor.Capture
                 ValidationProblem.OutsideRange("capture.supersampling", Supersampling, 1, MaxSupersampling),
                 ValidationProblem.OutsideRange("capture.readbacksInFlight", ReadbacksInFlight, 1, MaxReadbacksInFlight),
             };
-            if (TemplateCamera == null)
+            if (TemplateCamera != null)
+                problems.Add(TemplateFraming.Problem(TemplateCamera, Width, Height, TemplateCamera.name));
+            else
             {
                 problems.Add(ValidationProblem.OutsideRange("capture.verticalFieldOfViewDegrees", VerticalFieldOfViewDegrees, 0.01, 179.0, "degrees"));
                 problems.Add(ValidationProblem.OutsideRange("capture.nearClip", NearClip, 1e-5, 1e6));
@@ -100,8 +109,10 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>Throws <see cref="InvalidParameterException"/> listing every problem, if any.</summary>
         public void ThrowIfInvalid() => InvalidParameterException.ThrowIfAny(Validate().ToArray());
 
-        /// <summary>Colour always needs the mask (its alpha); the mask alone is allowed.</summary>
-        public CapturePasses EffectivePasses =>
-            (Passes & CapturePasses.Color) != 0 ? Passes | CapturePasses.Mask : Passes;
+        /// <summary>
+        /// The passes rendered. Colour no longer needs the mask: its alpha comes from rendering it over black and over
+        /// white (difference matting), so the mask pass runs only when mask images are asked for.
+        /// </summary>
+        public CapturePasses EffectivePasses => Passes;
     }
 }

@@ -2,14 +2,17 @@ using System;
 
 namespace NerfDatasetCreator.Editor.Capture
 {
-    /// <summary>Which images a capture renders per view. Colour is always rendered with the mask: its alpha is the mask.</summary>
+    /// <summary>Which images a capture renders per view.</summary>
     [Flags]
     public enum CapturePasses
     {
         None = 0,
-        /// <summary>The lit image, rendered at k×k supersampling; its own alpha is ignored (see Documentation~/capture.md).</summary>
+        /// <summary>
+        /// The lit image, rendered twice at k×k supersampling, over black and over white; alpha and straight colour are
+        /// solved from the pair (difference matting). The shaders' own alpha output is ignored (Documentation~/capture.md).
+        /// </summary>
         Color = 1 << 0,
-        /// <summary>Coverage of the target's geometry, at the colour resolution: the source of the colour's alpha.</summary>
+        /// <summary>Coverage of the target's geometry by the mask shader, at the colour resolution: the mask images.</summary>
         Mask = 1 << 1,
         /// <summary>Eye depth (distance along the camera axis) in Unity units, 32-bit float, 0 = no geometry.</summary>
         Depth = 1 << 2,

@@ -9,13 +9,15 @@ namespace NerfDatasetCreator.Editor.Capture
         {
             var samples = options.SupersampledWidth * options.SupersampledHeight;
             var data = options.DataWidth * options.DataHeight;
-            Color = new ExactArrayPool<byte>(samples * 4, retained);
+            // Two colour renders per view (over black, over white): twice the retained count.
+            Color = new ExactArrayPool<ushort>(samples * 4, 2 * retained);
             Mask = new ExactArrayPool<byte>(samples, retained);
             Depth = new ExactArrayPool<float>(data, retained);
             Normal = new ExactArrayPool<float>(data * 4, retained);
         }
 
-        public ExactArrayPool<byte> Color { get; }
+        /// <summary>RGBA half floats (R16G16B16A16_SFloat), one array per colour render.</summary>
+        public ExactArrayPool<ushort> Color { get; }
         public ExactArrayPool<byte> Mask { get; }
         public ExactArrayPool<float> Depth { get; }
         public ExactArrayPool<float> Normal { get; }
@@ -23,7 +25,8 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>The release callback of a <see cref="CapturedView"/>: returns its arrays. Runs on any thread.</summary>
         public void Return(CapturedView view)
         {
-            Color.Return(view.Color);
+            Color.Return(view.ColorOverBlack);
+            Color.Return(view.ColorOverWhite);
             Mask.Return(view.Mask);
             Depth.Return(view.Depth);
             Normal.Return(view.Normal);

@@ -9,8 +9,14 @@ namespace NerfDatasetCreator.Editor.Capture
     public static class CaptureRunner
     {
         /// <summary>
-        /// Captures every pose before returning (CLI, tests, scripts), with a cancellable progress bar unless another
-        /// reporter is given. Throws <see cref="CaptureCancelledException"/>, <see cref="CaptureException"/> or
+        /// Captures every pose before returning (the window's foreground mode, batch mode, tests, scripts), with a
+        /// cancellable progress bar unless another reporter is given. Nothing else runs on the main thread meanwhile,
+        /// so views render back to back at full speed, whatever the editor's focus: no editor update, Play-mode change
+        /// or domain reload can come between them (they all run on the main thread, which this call holds). The bar is
+        /// <c>EditorUtility.DisplayCancelableProgressBar</c>, native (UnityCsReference 2022.3
+        /// Editor/Mono/EditorUtility.bindings.cs:186, 6000.0 :188); should it ever raise an editor event while it
+        /// draws, <see cref="ActiveCapture"/> only marks the session and the next check stops the run.
+        /// Throws <see cref="CaptureCancelledException"/>, <see cref="CaptureException"/> or
         /// <see cref="InvalidParameterException"/>; the scene is restored and the consumer aborted in every case.
         /// </summary>
         public static CaptureSummary RunBlocking(GameObject target, IReadOnlyList<UnityPose> poses, CaptureOptions options,
@@ -25,7 +31,7 @@ namespace NerfDatasetCreator.Editor.Capture
                     {
                     }
                     var summary = session.Summary;
-                    Debug.Log(summary.ToString());
+                    Debug.Log(summary + " [foreground: blocking run]");
                     return summary;
                 }
             }
@@ -37,8 +43,11 @@ namespace NerfDatasetCreator.Editor.Capture
 
         /// <summary>
         /// Starts a capture that renders for about <paramref name="sliceSeconds"/> per editor update, so the editor stays
-        /// usable; progress and Cancel appear in Unity's Background Tasks. <paramref name="done"/> gets the summary, or
-        /// the exception (a <see cref="CaptureCancelledException"/> after a cancel); entering Play mode cancels.
+        /// usable; progress and Cancel appear in Unity's Background Tasks. Editor updates slow down when the editor is
+        /// not focused (EditorApplication.update docs), and so does this capture: use <see cref="RunBlocking"/> for
+        /// full speed. <paramref name="done"/> gets the summary, or the exception (a
+        /// <see cref="CaptureCancelledException"/> after a cancel, or when entering Play mode, a domain reload or
+        /// quitting ended the run: then synchronously, from inside that editor event, see <see cref="ActiveCapture"/>).
         /// Setup errors are thrown from this call. Returns the session, whose <c>Cancel()</c> stops it.
         /// </summary>
         public static CaptureSession RunInBackground(GameObject target, IReadOnlyList<UnityPose> poses, CaptureOptions options,
@@ -58,10 +67,6 @@ namespace NerfDatasetCreator.Editor.Capture
             }
 
             EditorApplication.CallbackFunction tick = null;
-            Action<PlayModeStateChange> onPlayMode = change =>
-            {
-                if (change == PlayModeStateChange.ExitingEditMode) session.Cancel();
-            };
             var ended = false;
             void End(CaptureSummary summary, Exception error)
             {
@@ -69,13 +74,12 @@ namespace NerfDatasetCreator.Editor.Capture
                 if (ended) return;
                 ended = true;
                 EditorApplication.update -= tick;
-                EditorApplication.playModeStateChanged -= onPlayMode;
                 session.Dispose();
-                // A cancel through session.Cancel() (the window's button, entering Play mode) is a cancel, not a failure.
+                // A cancel (the window's button, Background Tasks, or Play mode / a reload / quitting) is a cancel, not a failure.
                 progress.FinalStatus = error == null ? Progress.Status.Succeeded
                     : error is OperationCanceledException ? Progress.Status.Canceled : Progress.Status.Failed;
                 progress.Close();
-                if (summary != null) Debug.Log(summary.ToString());
+                if (summary != null) Debug.Log(summary + " [background: one slice per editor update]");
                 done?.Invoke(summary, error);
             }
             tick = () =>
@@ -90,8 +94,9 @@ namespace NerfDatasetCreator.Editor.Capture
                     End(null, e);
                 }
             };
+            // Play mode, a domain reload or quitting: end now, inside that event; no editor update may come before it.
+            session.Interrupted = error => End(null, error);
             EditorApplication.update += tick;
-            EditorApplication.playModeStateChanged += onPlayMode;
             return session;
         }
     }

@@ -24,15 +24,15 @@ namespace NerfDatasetCreator.Editor.Capture
         readonly ICaptureProgress _progress;
         readonly Stopwatch _clock = new Stopwatch();
         CaptureStage _stage;
-        CaptureMaterials _materials;
+        DataPassRenderer _dataPasses;
         RenderTargetSet[] _targets;
         ViewReadback[] _readbacks;
         SynchronousReadback _synchronous;
         CapturePools _pools;
-        bool _reloadLocked;
-        bool _asyncShadersChanged;
-        bool _asyncShadersWereAllowed;
+        CaptureEditorState _editorState;
         bool _cancelRequested;
+        bool _stepping;
+        string _interruption;
         bool _finished;
         bool _disposed;
         int _nextView;
@@ -70,8 +70,11 @@ namespace NerfDatasetCreator.Editor.Capture
             CheckTarget(target, options.Isolation);
             if (EditorApplication.isPlayingOrWillChangePlaymode)
                 throw new CaptureException("Unity is in (or entering) Play mode. Stop Play mode, then capture.");
+            ActiveCapture.ThrowIfBusy();
 
             var session = new CaptureSession(target, poses, options, consumer, progress);
+            // From here until Dispose this is the editor's one capture, and Play mode, reloads and quitting end it.
+            ActiveCapture.Claim(session);
             try
             {
                 session.SetUp();
@@ -85,6 +88,9 @@ namespace NerfDatasetCreator.Editor.Capture
         }
 
         public int Total => _poses.Count;
+
+        /// <summary>The target's name when the capture began (for messages; the object may be gone since).</summary>
+        public string TargetName => _targetName;
         public int Delivered => _delivered;
         public bool IsFinished => _finished;
         public ThroughputMeter Meter { get; }
@@ -100,6 +106,34 @@ namespace NerfDatasetCreator.Editor.Capture
 
         /// <summary>Asks the run to stop; the next <see cref="Step"/> throws <see cref="CaptureCancelledException"/>.</summary>
         public void Cancel() => _cancelRequested = true;
+
+        /// <summary>
+        /// Set by a driver that steps the session across editor updates (<see cref="CaptureRunner.RunInBackground"/>):
+        /// called by <see cref="Interrupt"/> with the exception to end the run with; it must dispose the session.
+        /// </summary>
+        internal Action<CaptureCancelledException> Interrupted;
+
+        /// <summary>
+        /// Ends the run at once because the editor is about to enter Play mode, reload scripts or quit
+        /// (<see cref="ActiveCapture"/>). Between steps the session is disposed before this returns (through its
+        /// driver's <see cref="Interrupted"/>, which also reports the result). From inside <see cref="Step"/> (an event
+        /// raised while the blocking run draws its progress bar) it only marks the run: Step throws at its next check
+        /// and its caller disposes right after, still before control returns to the editor.
+        /// </summary>
+        internal void Interrupt(string reason)
+        {
+            if (_disposed) return;
+            if (_interruption == null) _interruption = reason;
+            if (_stepping) return;
+            try
+            {
+                Interrupted?.Invoke(new CaptureCancelledException(_interruption));
+            }
+            finally
+            {
+                Dispose(); // already done by the driver; without one, nothing else would
+            }
+        }
 
         /// <summary>The first pose that is not finite or whose rotation is not a unit quaternion, or null.</summary>
         static ValidationProblem PoseProblem(IReadOnlyList<UnityPose> poses)
@@ -133,18 +167,12 @@ namespace NerfDatasetCreator.Editor.Capture
 
         void SetUp()
         {
-            // A domain reload in the middle would orphan the preview scene and the render textures.
-            EditorApplication.LockReloadAssemblies();
-            _reloadLocked = true;
+            _editorState = new CaptureEditorState();
+            _editorState.LockReload();
+            _editorState.CompileShadersSynchronously();
 
-            // With asynchronous shader compilation the editor draws not-yet-compiled variants with a cyan
-            // placeholder: the first views of a capture would record it. Compile synchronously instead.
-            _asyncShadersWereAllowed = ShaderUtil.allowAsyncCompilation;
-            ShaderUtil.allowAsyncCompilation = false;
-            _asyncShadersChanged = true;
-
-            _materials = new CaptureMaterials();
             _stage = new CaptureStage(_target, _options);
+            _dataPasses = new DataPassRenderer(_stage.DataPassRenderers, _stage.Camera.cullingMask);
             VerticalFieldOfViewDegrees = _stage.Camera.fieldOfView;
 
             UsesAsyncReadback = SystemInfo.supportsAsyncGPUReadback && !_options.ForceSynchronousReadback;
@@ -170,10 +198,15 @@ namespace NerfDatasetCreator.Editor.Capture
         /// </summary>
         public bool Step(double budgetSeconds)
         {
-            if (_disposed) throw new ObjectDisposedException(nameof(CaptureSession));
+            if (_disposed)
+            {
+                if (_interruption != null) throw new CaptureCancelledException(_interruption);
+                throw new ObjectDisposedException(nameof(CaptureSession));
+            }
             if (_finished) return false;
             var sliceStart = _clock.Elapsed.TotalSeconds;
             var previousActive = RenderTexture.active;
+            _stepping = true;
             try
             {
                 do
@@ -196,6 +229,7 @@ namespace NerfDatasetCreator.Editor.Capture
             }
             finally
             {
+                _stepping = false;
                 RenderTexture.active = previousActive;
             }
             if (_finished) _clock.Stop();
@@ -204,6 +238,7 @@ namespace NerfDatasetCreator.Editor.Capture
 
         void ThrowIfCancelledOrBroken()
         {
+            if (_interruption != null) throw new CaptureCancelledException(_interruption);
             if (_cancelRequested || (_progress != null && _progress.CancelRequested))
                 throw new CaptureCancelledException();
             if (_options.Isolation == CaptureIsolation.TargetOnly && _target == null)
@@ -220,17 +255,25 @@ namespace NerfDatasetCreator.Editor.Capture
             var readback = _readbacks[slot];
             if (readback.IsPending) Deliver(readback); // the oldest view in flight: its textures are about to be reused
 
+            _options.BeforeView?.Invoke(_stage.Root, index);
             var pose = _poses[index];
             var camera = _stage.Camera;
             pose.ApplyTo(camera.transform);
             var targets = _targets[slot];
 
-            if (targets.Color != null) Render(camera, targets.Color, null);
-            if (targets.Mask != null) Render(camera, targets.Mask, _materials.Mask);
-            if (targets.Depth != null) Render(camera, targets.Depth, _materials.Depth);
-            if (targets.Normal != null) Render(camera, targets.Normal, _materials.Normal);
-            _stage.UseMaterial(null);
-            camera.targetTexture = null;
+            _stage.PinLighting();
+            try
+            {
+                RenderColour(camera, targets);
+            }
+            finally
+            {
+                _stage.UnpinLighting();
+            }
+            // The data passes draw outside the camera's render loop, so no pipeline setting can change them.
+            if (targets.Mask != null) _dataPasses.Render(camera, targets.Mask, DataPassRenderer.MaskPass);
+            if (targets.Depth != null) _dataPasses.Render(camera, targets.Depth, DataPassRenderer.DepthPass);
+            if (targets.Normal != null) _dataPasses.Render(camera, targets.Normal, DataPassRenderer.NormalPass);
 
             if (UsesAsyncReadback)
             {
@@ -252,9 +295,25 @@ namespace NerfDatasetCreator.Editor.Capture
             }
         }
 
-        void Render(Camera camera, RenderTexture target, Material passMaterial)
+        static void RenderColour(Camera camera, RenderTargetSet targets)
         {
-            _stage.UseMaterial(passMaterial);
+            if (targets.ColorOverBlack == null) return;
+            // Difference matting: the same colour pass over two clears; Core solves alpha and colour from the pair.
+            // Black and white are fixed points of the sRGB curve, so URP's conversion of the background colour
+            // to the active colour space (URP 14 UniversalRenderPipeline.cs:1333) leaves them as they are.
+            Render(camera, targets.ColorOverBlack, OverBlack);
+            Render(camera, targets.ColorOverWhite, OverWhite);
+            camera.backgroundColor = OverBlack;
+            camera.targetTexture = null;
+        }
+
+        // The alpha of the clear colour is irrelevant: the matting reads RGB only.
+        static readonly Color OverBlack = new Color(0f, 0f, 0f, 0f);
+        static readonly Color OverWhite = new Color(1f, 1f, 1f, 0f);
+
+        static void Render(Camera camera, RenderTexture target, Color clear)
+        {
+            camera.backgroundColor = clear;
             camera.targetTexture = target;
             camera.Render();
         }
@@ -286,7 +345,10 @@ namespace NerfDatasetCreator.Editor.Capture
 
         CapturedView NewView(int index, UnityPose pose) => new CapturedView(index, pose,
             _options.SupersampledWidth, _options.SupersampledHeight, _options.Supersampling,
-            _options.DataWidth, _options.DataHeight, _pools.ReturnCallback);
+            _options.DataWidth, _options.DataHeight, _pools.ReturnCallback)
+        {
+            ColorIsGammaEncoded = QualitySettings.activeColorSpace == ColorSpace.Gamma,
+        };
 
         void Hand(CapturedView view)
         {
@@ -306,33 +368,23 @@ namespace NerfDatasetCreator.Editor.Capture
             if (_disposed) return;
             _disposed = true;
             if (!_finished) Try(_consumer.Abort);
-            var anyPending = false;
             if (_readbacks != null)
                 foreach (var readback in _readbacks)
-                {
-                    if (readback == null || !readback.IsPending) continue;
-                    anyPending = true;
-                    readback.Forget();
-                }
-            // Let the GPU finish reading the textures before they are destroyed (stalls, but only after a cancel or error).
-            if (anyPending) Try(UnityEngine.Rendering.AsyncGPUReadback.WaitAllRequests);
+                    readback?.Forget();
+            // Let the GPU finish reading the textures before they are destroyed. Unconditionally: CompleteInto clears
+            // IsPending before it waits, so after an exception part-way through a view its other requests may still be
+            // in flight. WaitAllRequests (UnityCsReference 2022.3 Runtime/Export/Graphics/AsyncGPUReadback.bindings.cs:126,
+            // 6000.0 :132) returns at once when none is.
+            if (UsesAsyncReadback) Try(UnityEngine.Rendering.AsyncGPUReadback.WaitAllRequests);
             if (_targets != null)
                 foreach (var set in _targets)
                     if (set != null) Try(set.Dispose);
             if (_synchronous != null) Try(_synchronous.Dispose);
             if (_stage != null) Try(_stage.Dispose);
-            if (_materials != null) Try(_materials.Dispose);
-            if (_asyncShadersChanged)
-            {
-                _asyncShadersChanged = false;
-                ShaderUtil.allowAsyncCompilation = _asyncShadersWereAllowed;
-            }
-            if (_reloadLocked)
-            {
-                _reloadLocked = false;
-                EditorApplication.UnlockReloadAssemblies();
-            }
+            if (_dataPasses != null) Try(_dataPasses.Dispose);
+            _editorState?.Restore();
             _clock.Stop();
+            ActiveCapture.Release(this);
         }
 
         static void Try(Action action)

@@ -16,17 +16,21 @@ namespace NerfDatasetCreator.Editor.Capture
     /// </summary>
     sealed class CaptureStage : IDisposable
     {
-        readonly List<SwappableRenderer> _renderers = new List<SwappableRenderer>();
-        readonly List<Behaviour> _hiddenInDataPasses = new List<Behaviour>();
-        readonly List<bool> _hiddenWasEnabled = new List<bool>();
+        readonly List<Renderer> _dataPassRenderers = new List<Renderer>();
         Scene _scene;
         GameObject _root;
         GameObject _cameraObject;
-        Material _current;
+        SceneLighting _lighting;
 
         public Camera Camera { get; private set; }
 
-        /// <summary>Renderers the data passes cannot draw (particles, lines, sprites…, terrains): hidden in mask, depth and normal.</summary>
+        /// <summary>The copies' mesh and skinned-mesh renderers the mask, depth and normal passes draw (LOD 0 only).</summary>
+        public IReadOnlyList<Renderer> DataPassRenderers => _dataPassRenderers;
+
+        /// <summary>The parent of every copy in the preview scene.</summary>
+        public GameObject Root => _root;
+
+        /// <summary>Renderers the data passes cannot draw (particles, lines, sprites…, terrains): absent from mask, depth and normal.</summary>
         public int UnsupportedRendererCount { get; private set; }
 
         /// <summary>False once anything the stage owns was destroyed from outside (a scene reload, a script).</summary>
@@ -36,6 +40,7 @@ namespace NerfDatasetCreator.Editor.Capture
         {
             try
             {
+                _lighting = new SceneLighting(); // the user's active scene's, read before anything changes
                 _scene = EditorSceneManager.NewPreviewScene();
                 if (!_scene.IsValid()) throw new CaptureException("Unity could not create the preview scene the capture renders in.");
 
@@ -45,18 +50,26 @@ namespace NerfDatasetCreator.Editor.Capture
                 _root = NewHiddenObject("NeRF Dataset Creator capture");
                 _root.SetActive(false);
 
+                var copies = new List<KeyValuePair<GameObject, GameObject>>();
                 foreach (var source in Sources(target, options.Isolation))
                 {
                     var copy = Object.Instantiate(source, _root.transform, true);
                     copy.name = source.name;
+                    copies.Add(new KeyValuePair<GameObject, GameObject>(source, copy));
                     if (options.Isolation == CaptureIsolation.TargetOnly) copy.SetActive(true);
                     Neutralise(copy);
+                    LodZero.Apply(source, copy);
                 }
                 if (options.Isolation == CaptureIsolation.TargetOnly && options.CopySceneLights)
                     CopySceneLights(target);
+                // Lights under the target and, in whole-scene mode, every light arrive through Instantiate with their
+                // bake type and last bake's output: without lightmaps in this scene they must all be realtime.
+                CaptureLights.MakeAllRealtime(_root);
 
                 CollectRenderers();
                 _root.SetActive(true);
+                // After activation: an inactive particle system holds no particles.
+                foreach (var pair in copies) CopyParticles(pair.Key, pair.Value);
 
                 _cameraObject = NewHiddenObject("NeRF Dataset Creator camera", typeof(Camera));
                 Camera = _cameraObject.GetComponent<Camera>();
@@ -68,6 +81,11 @@ namespace NerfDatasetCreator.Editor.Capture
                 throw;
             }
         }
+
+        /// <summary>Renders with the user's ambient, reflection and fog settings until <see cref="UnpinLighting"/> (<see cref="SceneLighting"/>).</summary>
+        public void PinLighting() => _lighting?.Pin(_scene);
+
+        public void UnpinLighting() => _lighting?.Unpin();
 
         GameObject NewHiddenObject(string name, params Type[] components)
         {
@@ -96,6 +114,25 @@ namespace NerfDatasetCreator.Editor.Capture
             }
         }
 
+        /// <summary>
+        /// A particle system's live particles are simulation state, not serialized settings: they are carried over
+        /// explicitly (GetParticles/SetParticles), so that the copy shows what the user's system shows now. Instantiate
+        /// keeps the hierarchy, so the n-th system of the copy is the n-th of the source.
+        /// </summary>
+        static void CopyParticles(GameObject source, GameObject copy)
+        {
+            var from = source.GetComponentsInChildren<ParticleSystem>(true);
+            var to = copy.GetComponentsInChildren<ParticleSystem>(true);
+            for (var i = 0; i < from.Length && i < to.Length; i++)
+            {
+                var count = from[i].particleCount;
+                if (count == 0) continue;
+                var particles = new ParticleSystem.Particle[count];
+                count = from[i].GetParticles(particles);
+                to[i].SetParticles(particles, count);
+            }
+        }
+
         /// <summary>Copies carry the user's components; only rendering ones may act. Cameras and scripts are switched off.</summary>
         static void Neutralise(GameObject copy)
         {
@@ -108,8 +145,9 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>
         /// A preview scene renders only what is in it, so the scene's lights are brought along as copies at the same
         /// world pose. Lights under the target are already copied with it. Lights baked into lightmaps would light
-        /// nothing on a copy (it has no lightmap in this scene), so every copy is realtime. The properties are copied
-        /// one by one (not EditorUtility.CopySerialized) so that nothing ties the copy to the user's light.
+        /// nothing on a copy (it has no lightmap in this scene), so every copy is realtime. The Light's properties are
+        /// copied one by one (not EditorUtility.CopySerialized, which would also bring its bake output); URP's
+        /// per-light component is copied whole (<see cref="CaptureLights.CopyPipelineData"/>).
         /// </summary>
         void CopySceneLights(GameObject target)
         {
@@ -125,6 +163,7 @@ namespace NerfDatasetCreator.Editor.Capture
                 try
                 {
                     CopyLight(light, go.GetComponent<Light>());
+                    CaptureLights.CopyPipelineData(light, go.GetComponent<Light>());
                 }
                 catch (Exception e)
                 {
@@ -162,58 +201,20 @@ namespace NerfDatasetCreator.Editor.Capture
 
         void CollectRenderers()
         {
+            // Renderers beyond LOD 0 are already disabled on the copies (LodZero.Apply), so the data passes skip them.
             foreach (var renderer in _root.GetComponentsInChildren<Renderer>(true))
             {
-                if (renderer is MeshRenderer || renderer is SkinnedMeshRenderer)
-                    _renderers.Add(new SwappableRenderer(renderer));
-                else
-                {
-                    Hide(renderer);
-                    UnsupportedRendererCount++;
-                }
+                if (renderer is MeshRenderer || renderer is SkinnedMeshRenderer) _dataPassRenderers.Add(renderer);
+                else UnsupportedRendererCount++;
             }
             // Terrains draw without a Renderer. Recognised by type name: UnityEngine.Terrain lives in the Terrain
             // built-in module, which a project may disable (this package's own development project does), and
             // naming the type would then not compile.
             foreach (var behaviour in _root.GetComponentsInChildren<Behaviour>(true))
-            {
-                if (behaviour == null || behaviour.GetType().FullName != TerrainTypeName) continue;
-                Hide(behaviour);
-                UnsupportedRendererCount++;
-            }
-            // The data shaders are unlit: lights would only cost shadow-map renders in those passes.
-            foreach (var light in _root.GetComponentsInChildren<Light>(true)) Hide(light);
-        }
-
-        void Hide(Behaviour behaviour)
-        {
-            _hiddenInDataPasses.Add(behaviour);
-            _hiddenWasEnabled.Add(behaviour.enabled);
-        }
-
-        void Hide(Renderer renderer)
-        {
-            // Renderer is a Component, not a Behaviour: keep its own enabled flag separately.
-            _otherRenderers.Add(renderer);
-            _otherRenderersWereEnabled.Add(renderer.enabled);
+                if (behaviour != null && behaviour.GetType().FullName == TerrainTypeName) UnsupportedRendererCount++;
         }
 
         const string TerrainTypeName = "UnityEngine.Terrain";
-
-        readonly List<Renderer> _otherRenderers = new List<Renderer>();
-        readonly List<bool> _otherRenderersWereEnabled = new List<bool>();
-
-        /// <summary>Renders every copy with <paramref name="material"/> (a data pass), or with its own materials when null.</summary>
-        public void UseMaterial(Material material)
-        {
-            if (material == _current) return;
-            _current = material;
-            foreach (var swappable in _renderers) swappable.Use(material);
-            for (var i = 0; i < _hiddenInDataPasses.Count; i++)
-                if (_hiddenInDataPasses[i] != null) _hiddenInDataPasses[i].enabled = material == null && _hiddenWasEnabled[i];
-            for (var i = 0; i < _otherRenderers.Count; i++)
-                if (_otherRenderers[i] != null) _otherRenderers[i].enabled = material == null && _otherRenderersWereEnabled[i];
-        }
 
         static void ConfigureCamera(Camera camera, CaptureOptions options, Scene scene)
         {
@@ -232,6 +233,9 @@ namespace NerfDatasetCreator.Editor.Capture
             // Whatever the template says, these are what the dataset needs.
             camera.enabled = false;
             camera.usePhysicalProperties = false; // fieldOfView is then exactly the vertical FOV: no gate fit, no lens shift
+            // A physical template's framing at W × H, reproduced by that plain vertical FOV (refused where it cannot be).
+            if (options.TemplateCamera != null)
+                camera.fieldOfView = (float)TemplateFraming.VerticalFieldOfView(options.TemplateCamera, options.Width, options.Height);
             // CopyFrom also brings the template's projection mode and viewport rect: an orthographic template or a
             // split-screen rect would render something other than the pinhole images the transforms describe.
             camera.orthographic = false;
@@ -257,49 +261,16 @@ namespace NerfDatasetCreator.Editor.Capture
 
         public void Dispose()
         {
+            UnpinLighting();
             if (Camera != null) Camera.targetTexture = null;
             // As PreviewRenderUtility does: close the scene (which destroys its objects), then make sure.
             if (_scene.IsValid()) EditorSceneManager.ClosePreviewScene(_scene);
             if (_root != null) Object.DestroyImmediate(_root);
             if (_cameraObject != null) Object.DestroyImmediate(_cameraObject);
-            _renderers.Clear();
-            _hiddenInDataPasses.Clear();
-            _otherRenderers.Clear();
+            _dataPassRenderers.Clear();
             Camera = null;
             _root = null;
             _cameraObject = null;
-        }
-
-        /// <summary>A copy's renderer with its own materials and, per data pass, an array of the pass material of the same length.</summary>
-        sealed class SwappableRenderer
-        {
-            readonly Renderer _renderer;
-            readonly Material[] _own;
-            readonly Dictionary<Material, Material[]> _byPass = new Dictionary<Material, Material[]>();
-
-            public SwappableRenderer(Renderer renderer)
-            {
-                _renderer = renderer;
-                _own = renderer.sharedMaterials;
-            }
-
-            public void Use(Material material)
-            {
-                if (_renderer == null) return;
-                if (material == null)
-                {
-                    _renderer.sharedMaterials = _own;
-                    return;
-                }
-                if (!_byPass.TryGetValue(material, out var array))
-                {
-                    // One entry per material slot (submesh), so that every submesh is drawn with the pass material.
-                    array = new Material[Math.Max(1, _own.Length)];
-                    for (var i = 0; i < array.Length; i++) array[i] = material;
-                    _byPass.Add(material, array);
-                }
-                _renderer.sharedMaterials = array;
-            }
         }
     }
 }

@@ -33,10 +33,10 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>The pose the camera had (the capturer's input, double precision), for writing its matrix.</summary>
         public UnityPose Pose { get; }
 
-        /// <summary>Width of <see cref="Color"/> and <see cref="Mask"/>: output width × <see cref="Supersampling"/>.</summary>
+        /// <summary>Width of the colour renders and <see cref="Mask"/>: output width × <see cref="Supersampling"/>.</summary>
         public int Width { get; }
 
-        /// <summary>Height of <see cref="Color"/> and <see cref="Mask"/>: output height × <see cref="Supersampling"/>.</summary>
+        /// <summary>Height of the colour renders and <see cref="Mask"/>: output height × <see cref="Supersampling"/>.</summary>
         public int Height { get; }
 
         public int Supersampling { get; }
@@ -47,13 +47,20 @@ namespace NerfDatasetCreator.Editor.Capture
         public int DataHeight { get; }
 
         /// <summary>
-        /// RGBA, 4 bytes per pixel, sRGB-encoded (what a PNG stores) in Linear and in Gamma projects alike. The alpha
-        /// byte is whatever the material's shader wrote and must be ignored: the coverage is <see cref="Mask"/>.
-        /// Premultiplied by coverage at edges (the background is black). Null when the colour pass is off.
+        /// The colour pass rendered over a black clear: RGBA as IEEE half floats (R16G16B16A16_SFloat), 4 per pixel, the
+        /// values the shaders wrote — linear light, or gamma-space when <see cref="ColorIsGammaEncoded"/>. The alpha
+        /// channel is meaningless. With <see cref="ColorOverWhite"/> it gives alpha and straight colour
+        /// (Core's DifferenceMatting). Null when the colour pass is off.
         /// </summary>
-        public byte[] Color { get; internal set; }
+        public ushort[] ColorOverBlack { get; internal set; }
 
-        /// <summary>Coverage, 1 byte per pixel: 255 where the target's geometry covers the sample, 0 elsewhere.</summary>
+        /// <summary>The same view's colour pass over a white (1, 1, 1) clear; same layout as <see cref="ColorOverBlack"/>.</summary>
+        public ushort[] ColorOverWhite { get; internal set; }
+
+        /// <summary>True in a Gamma colour-space project: the colour values (and their blending) are in gamma space.</summary>
+        public bool ColorIsGammaEncoded { get; internal set; }
+
+        /// <summary>Coverage by the mask pass, 1 byte per pixel: 255 where the target's geometry covers the sample, 0 elsewhere.</summary>
         public byte[] Mask { get; internal set; }
 
         /// <summary>Eye depth (along the camera's forward axis) in Unity units, 1 float per pixel; 0 = no geometry.</summary>
@@ -61,7 +68,7 @@ namespace NerfDatasetCreator.Editor.Capture
 
         /// <summary>
         /// 4 floats per pixel: the unit geometry normal in Unity's world frame (x, y, z) and 1 where geometry covers,
-        /// all 0 elsewhere. <see cref="NormalFrames.ToOutputWorld"/> relabels them into the dataset's world frame.
+        /// all 0 elsewhere. The encoders relabel them into the dataset's world frame as they read them (<see cref="RawFrame.NormalsInUnityWorld"/>).
         /// </summary>
         public float[] Normal { get; internal set; }
 
@@ -71,7 +78,8 @@ namespace NerfDatasetCreator.Editor.Capture
             if (Interlocked.Exchange(ref _released, 1) != 0) return;
             var release = Interlocked.Exchange(ref _release, null);
             release?.Invoke(this);
-            Color = null;
+            ColorOverBlack = null;
+            ColorOverWhite = null;
             Mask = null;
             Depth = null;
             Normal = null;

@@ -7,8 +7,8 @@ namespace NerfDatasetCreator.Editor.Capture
 {
     /// <summary>
     /// A diagnostic <see cref="IViewWriter"/>: writes each view's raw passes as they came off the GPU, before any
-    /// dataset post-processing — <c>view_0007_color.png</c> (supersampled, colour bytes with the mask as alpha, so
-    /// edges are premultiplied), <c>_depth.exr</c> (32-bit eye depth) and <c>_normal.exr</c> (32-bit normals in the
+    /// dataset post-processing — <c>view_0007_color_over_black.exr</c> and <c>_color_over_white.exr</c> (the two
+    /// supersampled colour renders, half float), <c>_mask.png</c>, <c>_depth.exr</c> (32-bit eye depth) and <c>_normal.exr</c> (32-bit normals in the
     /// output world frame, alpha = coverage). For checking passes in a real Editor, not a dataset. Encodes with
     /// Unity's thread-safe <c>ImageConversion.EncodeArrayToPNG/EXR</c> on the worker thread.
     /// </summary>
@@ -25,26 +25,20 @@ namespace NerfDatasetCreator.Editor.Capture
         public void Write(CapturedView view)
         {
             var stem = Path.Combine(_folder, "view_" + view.ViewIndex.ToString("0000", CultureInfo.InvariantCulture));
-            if (view.Color != null)
+            const Texture2D.EXRFlags exr = Texture2D.EXRFlags.OutputAsFloat | Texture2D.EXRFlags.CompressZIP;
+            if (view.ColorOverBlack != null)
             {
-                var rgba = new byte[view.Color.Length];
-                for (var i = 0; i < view.Width * view.Height; i++)
-                {
-                    rgba[i * 4] = view.Color[i * 4];
-                    rgba[i * 4 + 1] = view.Color[i * 4 + 1];
-                    rgba[i * 4 + 2] = view.Color[i * 4 + 2];
-                    rgba[i * 4 + 3] = view.Mask == null ? (byte)255 : view.Mask[i];
-                }
-                // UNorm, not _SRGB: the bytes are already sRGB-encoded and must be stored as they are.
-                File.WriteAllBytes(stem + "_color.png", ImageConversion.EncodeArrayToPNG(rgba,
-                    GraphicsFormat.R8G8B8A8_UNorm, (uint)view.Width, (uint)view.Height));
+                // The two colour renders as the GPU wrote them (half floats; gamma-space values in a Gamma project).
+                File.WriteAllBytes(stem + "_color_over_black.exr", ImageConversion.EncodeArrayToEXR(view.ColorOverBlack,
+                    GraphicsFormat.R16G16B16A16_SFloat, (uint)view.Width, (uint)view.Height, 0, Texture2D.EXRFlags.CompressZIP));
+                File.WriteAllBytes(stem + "_color_over_white.exr", ImageConversion.EncodeArrayToEXR(view.ColorOverWhite,
+                    GraphicsFormat.R16G16B16A16_SFloat, (uint)view.Width, (uint)view.Height, 0, Texture2D.EXRFlags.CompressZIP));
             }
-            else if (view.Mask != null)
+            if (view.Mask != null)
             {
                 File.WriteAllBytes(stem + "_mask.png", ImageConversion.EncodeArrayToPNG(view.Mask,
                     GraphicsFormat.R8_UNorm, (uint)view.Width, (uint)view.Height));
             }
-            const Texture2D.EXRFlags exr = Texture2D.EXRFlags.OutputAsFloat | Texture2D.EXRFlags.CompressZIP;
             if (view.Depth != null)
                 File.WriteAllBytes(stem + "_depth.exr", ImageConversion.EncodeArrayToEXR(view.Depth,
                     GraphicsFormat.R32_SFloat, (uint)view.DataWidth, (uint)view.DataHeight, 0, exr));

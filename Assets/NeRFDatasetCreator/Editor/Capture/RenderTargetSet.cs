@@ -11,7 +11,9 @@ namespace NerfDatasetCreator.Editor.Capture
     /// </summary>
     sealed class RenderTargetSet : IDisposable
     {
-        public RenderTexture Color { get; private set; }
+        /// <summary>The colour pass over a black clear; with <see cref="ColorOverWhite"/>, the difference-matting pair.</summary>
+        public RenderTexture ColorOverBlack { get; private set; }
+        public RenderTexture ColorOverWhite { get; private set; }
         public RenderTexture Mask { get; private set; }
         public RenderTexture Depth { get; private set; }
         public RenderTexture Normal { get; private set; }
@@ -24,7 +26,10 @@ namespace NerfDatasetCreator.Editor.Capture
                 int dw = options.DataWidth, dh = options.DataHeight;
                 var suffix = " " + index;
                 if ((passes & CapturePasses.Color) != 0)
-                    Color = Create(w, h, CaptureEnvironment.ColorFormat, "NeRF colour" + suffix);
+                {
+                    ColorOverBlack = Create(w, h, CaptureEnvironment.ColorFormat, "NeRF colour over black" + suffix);
+                    ColorOverWhite = Create(w, h, CaptureEnvironment.ColorFormat, "NeRF colour over white" + suffix);
+                }
                 if ((passes & CapturePasses.Mask) != 0)
                     Mask = Create(w, h, CaptureEnvironment.MaskFormat, "NeRF mask" + suffix);
                 if ((passes & CapturePasses.Depth) != 0)
@@ -61,11 +66,12 @@ namespace NerfDatasetCreator.Editor.Capture
 
         public void Dispose()
         {
-            Destroy(Color);
+            Destroy(ColorOverBlack);
+            Destroy(ColorOverWhite);
             Destroy(Mask);
             Destroy(Depth);
             Destroy(Normal);
-            Color = Mask = Depth = Normal = null;
+            ColorOverBlack = ColorOverWhite = Mask = Depth = Normal = null;
         }
 
         static void Destroy(RenderTexture texture)

@@ -11,14 +11,18 @@ namespace NerfDatasetCreator.Editor.Capture
     /// </summary>
     sealed class SynchronousReadback : IDisposable
     {
-        Texture2D _color, _mask, _depth, _normal;
+        Texture2D _black, _white, _mask, _depth, _normal;
 
         public void ReadInto(RenderTargetSet targets, CapturedView view, CapturePools pools)
         {
             var previous = RenderTexture.active;
             try
             {
-                if (targets.Color != null) view.Color = ViewReadback.CopyExact(Read(targets.Color, ref _color).GetRawTextureData<byte>(), pools.Color, "colour");
+                if (targets.ColorOverBlack != null)
+                {
+                    view.ColorOverBlack = ViewReadback.CopyExact(Read(targets.ColorOverBlack, ref _black).GetRawTextureData<ushort>(), pools.Color, "colour (over black)");
+                    view.ColorOverWhite = ViewReadback.CopyExact(Read(targets.ColorOverWhite, ref _white).GetRawTextureData<ushort>(), pools.Color, "colour (over white)");
+                }
                 if (targets.Mask != null)
                 {
                     var raw = Read(targets.Mask, ref _mask).GetRawTextureData<byte>();
@@ -56,9 +60,9 @@ namespace NerfDatasetCreator.Editor.Capture
 
         public void Dispose()
         {
-            foreach (var texture in new[] { _color, _mask, _depth, _normal })
+            foreach (var texture in new[] { _black, _white, _mask, _depth, _normal })
                 if (texture != null) Object.DestroyImmediate(texture);
-            _color = _mask = _depth = _normal = null;
+            _black = _white = _mask = _depth = _normal = null;
         }
     }
 }

@@ -6,17 +6,18 @@ namespace NerfDatasetCreator.Editor.Capture
     /// <summary>
     /// The meshes a capture of a target renders — one rule for checking the target, measuring it and sampling its
     /// surface: enabled MeshRenderers with a MeshFilter mesh and SkinnedMeshRenderers with a shared mesh, on the target
-    /// and its children that are active below it (the target's own active state is ignored: its copy is activated).
-    /// Particles, lines, sprites and terrains are not among them.
+    /// and its children that are active below it (the target's own active state is ignored: its copy is activated),
+    /// at LOD 0 only (<see cref="LodZero"/>). Particles, lines, sprites and terrains are not among them.
     /// </summary>
     static class TargetMeshes
     {
         public static IEnumerable<KeyValuePair<Renderer, Mesh>> Of(GameObject target)
         {
             if (target == null) yield break;
+            var beyondLod0 = LodZero.BeyondLod0(target);
             foreach (var renderer in target.GetComponentsInChildren<Renderer>(true))
             {
-                if (!renderer.enabled || !ActiveBelow(renderer.transform, target.transform)) continue;
+                if (!renderer.enabled || !ActiveBelow(renderer.transform, target.transform) || beyondLod0.Contains(renderer)) continue;
                 Mesh mesh = null;
                 if (renderer is SkinnedMeshRenderer skinned) mesh = skinned.sharedMesh;
                 else if (renderer is MeshRenderer)
@@ -41,11 +42,13 @@ namespace NerfDatasetCreator.Editor.Capture
         /// right for an inactive target too (Renderer.bounds is only kept up to date for active renderers). Skinned
         /// meshes are measured in their bind pose. Null when there is no mesh.
         /// </summary>
-        public static Bounds? WorldBounds(GameObject target)
+        /// <param name="includeSkinned">False leaves skinned meshes out (a dynamic capture measures them posed, see TimeMeasurement).</param>
+        public static Bounds? WorldBounds(GameObject target, bool includeSkinned = true)
         {
             Bounds? all = null;
             foreach (var pair in Of(target))
             {
+                if (!includeSkinned && pair.Key is SkinnedMeshRenderer) continue;
                 var local = pair.Value.bounds;
                 var toWorld = pair.Key.transform.localToWorldMatrix;
                 for (var corner = 0; corner < 8; corner++)

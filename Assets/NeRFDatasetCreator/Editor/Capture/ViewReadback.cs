@@ -12,7 +12,7 @@ namespace NerfDatasetCreator.Editor.Capture
     /// </summary>
     sealed class ViewReadback
     {
-        AsyncGPUReadbackRequest _color, _mask, _depth, _normal;
+        AsyncGPUReadbackRequest _black, _white, _mask, _depth, _normal;
         RenderTargetSet _targets;
 
         public int ViewIndex { get; private set; }
@@ -25,7 +25,11 @@ namespace NerfDatasetCreator.Editor.Capture
             Pose = pose;
             _targets = targets;
             // dstFormat = the texture's own format: no conversion, and no sRGB decode of the colour bytes.
-            if (targets.Color != null) _color = AsyncGPUReadback.Request(targets.Color, 0, targets.Color.graphicsFormat);
+            if (targets.ColorOverBlack != null)
+            {
+                _black = AsyncGPUReadback.Request(targets.ColorOverBlack, 0, targets.ColorOverBlack.graphicsFormat);
+                _white = AsyncGPUReadback.Request(targets.ColorOverWhite, 0, targets.ColorOverWhite.graphicsFormat);
+            }
             if (targets.Mask != null) _mask = AsyncGPUReadback.Request(targets.Mask, 0, targets.Mask.graphicsFormat);
             if (targets.Depth != null) _depth = AsyncGPUReadback.Request(targets.Depth, 0, targets.Depth.graphicsFormat);
             if (targets.Normal != null) _normal = AsyncGPUReadback.Request(targets.Normal, 0, targets.Normal.graphicsFormat);
@@ -36,8 +40,12 @@ namespace NerfDatasetCreator.Editor.Capture
         public void CompleteInto(CapturedView view, CapturePools pools)
         {
             IsPending = false;
-            if (_targets.Color != null)
-                view.Color = Copy<byte>(_color, pools.Color, "colour");
+            if (_targets.ColorOverBlack != null)
+            {
+                // Half floats, copied as their 16-bit patterns; Core decodes them.
+                view.ColorOverBlack = Copy<ushort>(_black, pools.Color, "colour (over black)");
+                view.ColorOverWhite = Copy<ushort>(_white, pools.Color, "colour (over white)");
+            }
             if (_targets.Mask != null)
                 view.Mask = _targets.Mask.graphicsFormat == GraphicsFormat.R8_UNorm
                     ? Copy<byte>(_mask, pools.Mask, "mask")

@@ -38,14 +38,23 @@ namespace NerfDatasetCreator.Editor
             if (settings == null) throw new ArgumentNullException(nameof(settings));
             settings = settings.Clone();
             var problems = new List<ValidationProblem>();
+            var extraWarnings = new List<ValidationProblem>();
             var template = FindTemplateCamera(settings.Camera.CopyFromCamera, problems);
             if (template != null)
             {
-                // The written intrinsics must be those of the camera that renders.
-                settings.Camera.VerticalFovDegrees = template.fieldOfView;
+                // The written intrinsics must be those of the camera that renders: a physical template's framing at
+                // this W × H (gate fit), or a refusal when a pinhole cannot reproduce it.
+                var framing = TemplateFraming.Problem(template, settings.Width, settings.Height, settings.Camera.CopyFromCamera);
+                if (framing != null) problems.Add(framing);
+                else if (settings.Width > 0 && settings.Height > 0)
+                    settings.Camera.VerticalFovDegrees = TemplateFraming.VerticalFieldOfView(template, settings.Width, settings.Height);
+                else settings.Camera.VerticalFovDegrees = template.fieldOfView;
                 settings.Camera.NearClip = template.nearClipPlane;
                 settings.Camera.FarClip = template.farClipPlane;
+                CheckCullingMask(template, target, settings.Camera.CopyFromCamera, problems, extraWarnings);
             }
+            // Imported cameras set their splits' counts and, when asked, the field of view and size the camera renders with.
+            settings = CameraSourcePlanning.Resolved(settings, out _);
             var options = OptionsFor(settings, template);
             try
             {
@@ -64,11 +73,20 @@ namespace NerfDatasetCreator.Editor
                 problems.Add(new ValidationProblem("capture", CaptureEnvironment.RenderPipelineName, e.Message, ""));
             }
 
-            var run = DatasetRun.Prepare(settings, MeasureTarget(target), projectRoot, shard, datasetFolder);
+            var timeWarnings = new List<ValidationProblem>();
+            var measured = TimeMeasurement.Measure(target, settings, MeasureTarget(target), timeWarnings);
+            var run = DatasetRun.Prepare(settings, measured, projectRoot, shard, datasetFolder);
             problems.AddRange(run.Problems);
+            if (run.IsValid && run.Plan.Time != null)
+            {
+                var clock = new ContentClock(run.Plan.Time.Sources, settings.Seed);
+                var views = run.Plan.Views;
+                options.BeforeView = (root, index) => clock.Show(root, views[index].Time.Value.Seconds);
+            }
             // The point cloud's meshes are read when a run starts (ReadSurface), not here: the window calls Prepare as
             // the user types, and copying a large model's arrays each time would make the editor stutter.
-            var warnings = run.IsValid ? run.FullPlan.Warnings : (IReadOnlyList<ValidationProblem>)Array.Empty<ValidationProblem>();
+            var warnings = new List<ValidationProblem>(run.IsValid ? run.FullPlan.Warnings.Concat(timeWarnings) : Array.Empty<ValidationProblem>());
+            warnings.AddRange(extraWarnings);
             return new PreparedCapture(run, target, options, problems, warnings);
         }
 
@@ -76,6 +94,7 @@ namespace NerfDatasetCreator.Editor
         public static DatasetCaptureResult RunBlocking(PreparedCapture prepared, ICaptureProgress progress = null, string tool = "unity-editor")
         {
             if (!prepared.IsValid) return Refused(prepared.Problems);
+            if (ActiveCapture.IsRunning) return Busy();
             var unreadable = ReadSurface(prepared);
             if (unreadable != null) return unreadable;
             DatasetWriteSession session;
@@ -87,6 +106,7 @@ namespace NerfDatasetCreator.Editor
             {
                 return Failed(prepared, null, e, 0);
             }
+            LogEarlierRuns(session);
             var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode);
             using (var consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files)))
             {
@@ -104,14 +124,18 @@ namespace NerfDatasetCreator.Editor
 
         /// <summary>
         /// Starts the capture on editor updates (the editor stays usable; progress and Cancel in Background Tasks).
-        /// <paramref name="done"/> runs on the main thread with the result. Returns the session (its Cancel() stops the
-        /// run), or null when the capture could not start — <paramref name="done"/> has then already been called.
+        /// <paramref name="done"/> runs on the main thread with the result, which is also logged to the Console (the
+        /// run may outlive the window that started it, and Play mode, a script reload or quitting end it from inside
+        /// that editor event: the log then says why and where the partial files are). Returns the session (its
+        /// Cancel() stops the run), or null when the capture could not start — <paramref name="done"/> has then
+        /// already been called.
         /// </summary>
         public static CaptureSession StartInBackground(PreparedCapture prepared, Action<DatasetCaptureResult> done, string tool = "unity-editor")
         {
-            var refused = prepared.IsValid ? ReadSurface(prepared) : Refused(prepared.Problems);
+            var refused = !prepared.IsValid ? Refused(prepared.Problems) : ActiveCapture.IsRunning ? Busy() : ReadSurface(prepared);
             if (refused != null)
             {
+                Log(refused);
                 done?.Invoke(refused);
                 return null;
             }
@@ -120,6 +144,7 @@ namespace NerfDatasetCreator.Editor
             try
             {
                 session = prepared.Run.Begin();
+                LogEarlierRuns(session);
                 var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode);
                 consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files));
                 var written = consumer;
@@ -129,6 +154,7 @@ namespace NerfDatasetCreator.Editor
                         ? Finish(prepared, session, files, summary, tool)
                         : Failed(prepared, session, error, written.Written);
                     written.Dispose();
+                    Log(result);
                     done?.Invoke(result);
                 });
             }
@@ -136,9 +162,19 @@ namespace NerfDatasetCreator.Editor
             {
                 var written = consumer?.Written ?? 0;
                 consumer?.Dispose();
-                done?.Invoke(Failed(prepared, session, e, written));
+                var result = Failed(prepared, session, e, written);
+                Log(result);
+                done?.Invoke(result);
                 return null;
             }
+        }
+
+        /// <summary>A result in the Console: information, a warning after a cancel or interruption, else an error.</summary>
+        public static void Log(DatasetCaptureResult result)
+        {
+            if (result.Succeeded) Debug.Log(result.Message);
+            else if (result.Cancelled) Debug.LogWarning(result.Message);
+            else Debug.LogError(result.Message);
         }
 
         static DatasetCaptureResult Finish(PreparedCapture prepared, DatasetWriteSession session, ViewFileWriter files,
@@ -182,9 +218,24 @@ namespace NerfDatasetCreator.Editor
         static DatasetCaptureResult Failed(PreparedCapture prepared, DatasetWriteSession session, Exception error, int written)
         {
             var cancelled = error is OperationCanceledException;
-            var what = cancelled ? "The capture was cancelled after " + written + " written views." : "The capture failed: " + Describe(error);
+            var interruption = (error as CaptureCancelledException)?.Interruption;
+            var what = interruption != null ? "The capture was stopped after " + written + " written views because " + interruption + "."
+                : cancelled ? "The capture was cancelled after " + written + " written views."
+                : "The capture failed: " + Describe(error);
             var where = session == null ? "" : " " + session.DescribeAbandoned();
             return new DatasetCaptureResult(false, cancelled, null, session?.PartialFolder, "NeRF Dataset Creator: " + what + where, written, 0);
+        }
+
+        /// <summary>A second capture while one runs: refused before anything (a working folder) is created.</summary>
+        static DatasetCaptureResult Busy() => new DatasetCaptureResult(false, false, null, null,
+            "NeRF Dataset Creator: nothing was captured — " + ActiveCapture.BusyMessage, 0, 0);
+
+        /// <summary>What Begin found of earlier runs on this output (Core's Recovery): interrupted ones it finished or rolled back, leftovers.</summary>
+        static void LogEarlierRuns(DatasetWriteSession session)
+        {
+            foreach (var note in session.Recovered) Debug.Log("NeRF Dataset Creator: " + note);
+            foreach (var leftover in session.Leftovers)
+                Debug.LogWarning("NeRF Dataset Creator: left over: " + leftover + " Delete it, or run `nerf-dataset clean " + Path.GetDirectoryName(session.FinalFolder) + "`.");
         }
 
         static DatasetCaptureResult Refused(IEnumerable<ValidationProblem> problems) => new DatasetCaptureResult(false, false, null, null,
@@ -215,7 +266,9 @@ namespace NerfDatasetCreator.Editor
         static CaptureOptions OptionsFor(DatasetSettings settings, Camera template)
         {
             var splits = DatasetSplits.All.Select(settings.Split).ToList();
-            var passes = CapturePasses.Color | CapturePasses.Mask;
+            // Alpha comes from the colour pair; the mask pass runs only for the mask images.
+            var passes = CapturePasses.Color;
+            if (splits.Any(s => s.Count > 0 && s.Mask)) passes |= CapturePasses.Mask;
             if (splits.Any(s => s.Count > 0 && s.Depth != ExtraOutput.None)) passes |= CapturePasses.Depth;
             if (splits.Any(s => s.Count > 0 && s.Normal != ExtraOutput.None)) passes |= CapturePasses.Normal;
             return new CaptureOptions
@@ -229,6 +282,19 @@ namespace NerfDatasetCreator.Editor
                 FarClip = settings.Camera.FarClip,
                 TemplateCamera = template,
             };
+        }
+
+        /// <summary>
+        /// A template camera whose culling mask leaves out layers of the target's renderers: a warning when some would
+        /// be missing from every image, an error when all would (Core's <see cref="CullingMaskCheck"/>).
+        /// </summary>
+        static void CheckCullingMask(Camera template, GameObject target, string cameraName, List<ValidationProblem> errors, List<ValidationProblem> warnings)
+        {
+            if (target == null) return;
+            var layers = TargetMeshes.Of(target).Select(pair => pair.Key.gameObject.layer).ToList();
+            if (layers.Count == 0) return;
+            var problem = CullingMaskCheck.Check(template.cullingMask, layers, LayerMask.LayerToName, cameraName, out var isError);
+            if (problem != null) (isError ? errors : warnings).Add(problem);
         }
 
         /// <summary>The scene camera named by the settings (hierarchy path or name), or null for the built-in defaults.</summary>

@@ -25,7 +25,9 @@ namespace NerfDatasetCreator.Editor
         {
             var colour = new RawFrame(view.Width, view.Height, view.Supersampling)
             {
-                ColorSrgb = view.Color,
+                ColorOverBlack = view.ColorOverBlack,
+                ColorOverWhite = view.ColorOverWhite,
+                ColorIsGammaEncoded = view.ColorIsGammaEncoded,
                 Mask = view.Mask,
                 MaskBytesPerPixel = 1,
             };

@@ -31,8 +31,13 @@ namespace NerfDatasetCreator.Editor
                     var baked = new Mesh();
                     try
                     {
-                        // useScale true: the baked vertices are in the renderer's local space, scale not yet applied,
-                        // so localToWorldMatrix takes them to the world like a MeshFilter's.
+                        // useScale true "compensates for the SkinnedMeshRenderer's Transform scale. If true, the baked
+                        // Mesh is the same size as the original. If false, the baked Mesh matches the scaling of the
+                        // Transform" (Scripting API SkinnedMeshRenderer.BakeMesh, 2023.2 and 6000.x wording; 2022.3
+                        // says the same less plainly), and position and rotation are always compensated. So the baked
+                        // vertices are in the renderer's local space, scale not applied, and the full localToWorldMatrix
+                        // (scale included, once) takes them to the world like a MeshFilter's. With useScale false the
+                        // matrix would have to drop the scale. Checked by SkinnedTargetSurfaceTests (0.01 parent).
                         skinned.BakeMesh(baked, true);
                         Add(meshes, warnings, renderer, baked, skinned.sharedMesh.name);
                     }

@@ -8,7 +8,8 @@ namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// Draws a planned rig in every Scene view while enabled: one small frustum per camera in its split's colour,
-    /// the target's bounds and the rig-distance sphere, with per-split visibility toggles in a small overlay.
+    /// the target's bounds and the rig-distance sphere, with per-split visibility toggles in a Scene-view overlay
+    /// (<see cref="RigPreviewOverlay"/>, which users can move and dock like Unity's own).
     /// Clicking near a camera selects it and labels it "train r_12" (its image file). All geometry comes from Core
     /// (<see cref="RigPreviewGeometry"/>, <see cref="MarkerPicking"/>) and is converted to Unity vectors once per
     /// plan change, so drawing a frame allocates nothing.
@@ -23,7 +24,6 @@ namespace NerfDatasetCreator.Editor
         static readonly int ControlHint = "NerfDatasetCreator.RigPreview".GetHashCode();
         static readonly Color[] Colors = { TrainColor, ValColor, TestColor };
         static readonly Vector3[] NoPoints = new Vector3[0];
-        static readonly Rect OverlayRect = new Rect(10, 10, 170, 104);
 
         readonly bool[] visible = { true, true, true };
         readonly Vector3[][] segments = { NoPoints, NoPoints, NoPoints };
@@ -43,8 +43,14 @@ namespace NerfDatasetCreator.Editor
         /// <summary>Raised when the user clicks a camera: its split, index and position.</summary>
         public event Action<PreviewMarker> Picked;
 
-        /// <summary>Whether to draw the small per-split toggle overlay in the Scene view (the window may show its own).</summary>
+        /// <summary>Whether to show the per-split toggle overlay in the Scene view (the window may show its own).</summary>
         public bool ShowOverlay { get; set; } = true;
+
+        /// <summary>The preview the Scene-view overlay shows: the last one enabled, until it is disabled.</summary>
+        internal static RigPreview Active { get; private set; }
+
+        /// <summary>Whether the overlay has something to show for this preview.</summary>
+        internal bool WantsOverlay => subscribed && hasPlan && ShowOverlay;
 
         /// <summary>The picked camera, if any.</summary>
         public PreviewMarker? Selected => selected >= 0 && selected < markers.Length ? markers[selected] : (PreviewMarker?)null;
@@ -67,6 +73,7 @@ namespace NerfDatasetCreator.Editor
             if (subscribed) return;
             SceneView.duringSceneGui += OnSceneGui;
             subscribed = true;
+            Active = this;
             SceneView.RepaintAll();
         }
 
@@ -76,6 +83,7 @@ namespace NerfDatasetCreator.Editor
             if (!subscribed) return;
             SceneView.duringSceneGui -= OnSceneGui;
             subscribed = false;
+            if (Active == this) Active = null;
             SceneView.RepaintAll();
         }
 
@@ -155,7 +163,6 @@ namespace NerfDatasetCreator.Editor
         void OnSceneGui(SceneView view)
         {
             if (!hasPlan) return;
-            if (ShowOverlay) DrawOverlay();
 
             var e = Event.current;
             var id = GUIUtility.GetControlID(ControlHint, FocusType.Passive);
@@ -222,11 +229,9 @@ namespace NerfDatasetCreator.Editor
             }
         }
 
-        void DrawOverlay()
+        /// <summary>The overlay's contents: a toggle per split in its colour and the picked camera.</summary>
+        internal void DrawOverlayContents()
         {
-            Handles.BeginGUI();
-            GUILayout.BeginArea(OverlayRect, GUI.skin.box);
-            GUILayout.Label("NeRF rig preview");
             var original = GUI.contentColor;
             for (var s = 0; s < visible.Length; s++)
             {
@@ -236,8 +241,6 @@ namespace NerfDatasetCreator.Editor
             }
             GUI.contentColor = original;
             GUILayout.Label(selected >= 0 ? selectedLabel : "click a camera for its index");
-            GUILayout.EndArea();
-            Handles.EndGUI();
         }
 
         /// <summary>The visible marker nearest to the mouse within Unity's pick distance, or −1. Reuses its buffers.</summary>

@@ -30,7 +30,39 @@ namespace NerfDatasetCreator.Editor
             SaveToProject();
         }
 
-        /// <summary>Writes the settings file (as text, so that it diffs readably). Also called after an undo or redo.</summary>
-        public void SaveToProject() => Save(true);
+        /// <summary>What the settings file holds: loaded or last saved. Not serialized: it describes the file, not the settings.</summary>
+        [System.NonSerialized] SavedText _file;
+
+        SavedText FileText
+        {
+            get
+            {
+                if (_file == null)
+                {
+                    // ScriptableSingleton loads the file when the instance is created, so this is what it holds.
+                    _file = new SavedText();
+                    _file.Saved(DatasetSettingsJson.Write(Settings));
+                }
+                return _file;
+            }
+        }
+
+        /// <summary>Writes the settings file (as text, so that it diffs readably).</summary>
+        public void SaveToProject()
+        {
+            Save(true);
+            FileText.Saved(DatasetSettingsJson.Write(Settings));
+        }
+
+        /// <summary>
+        /// Writes the settings file only if the settings differ from it: after an undo or redo, which Unity reports for
+        /// every undo in the editor, not only the window's own. Returns whether it wrote.
+        /// </summary>
+        public bool SaveIfChanged()
+        {
+            if (!FileText.Differs(DatasetSettingsJson.Write(Settings))) return false;
+            SaveToProject();
+            return true;
+        }
     }
 }

@@ -1,69 +1,121 @@
 using System;
 using System.Collections.Generic;
 using NerfDatasetCreator.Editor.Capture;
+using UnityEditor;
 using UnityEngine;
 
 namespace NerfDatasetCreator.Editor
 {
     /// <summary>
-    /// The window's one capture at a time: prepares it from a copy of the settings, runs it in the background
-    /// (<see cref="DatasetCapture.StartInBackground"/>: the editor stays usable, progress and Cancel also appear in
-    /// Background Tasks) and keeps the result for the result line.
+    /// The capture as the window shows it. Editor-wide, not per window: the running capture is
+    /// <see cref="ActiveCapture"/>'s, so a window closed and reopened mid-run attaches to it (progress, Cancel) instead
+    /// of starting a second one, and the last result is shared, so a reopened window shows how a run ended while no
+    /// window was open. That result is also kept in SessionState, which outlives domain reloads (UnityCsReference
+    /// 2022.3 Editor/Mono/EditorGUIUtility.bindings.cs:190-212, 6000.0 :192-215): after Play mode or a script reload
+    /// stopped a run, the window still says why and where its partial files are, even if the Console was cleared.
     /// </summary>
     sealed class CaptureController
     {
-        CaptureSession _session;
-        int _run;
+        const string Key = "NerfDatasetCreator.LastCapture.";
 
-        public bool IsRunning => _session != null;
+        static DatasetCaptureResult s_lastResult;
+        static bool s_lastResultLoaded;
+
+        /// <summary>Raised when a capture starts or ends (any window's, or a script's through this controller).</summary>
+        public static event Action Changed;
+
+        /// <summary>True while any capture runs in this editor (this window's, another's, a script's).</summary>
+        public bool IsRunning => ActiveCapture.IsRunning;
 
         /// <summary>Done / total and the rate of the running capture, or null.</summary>
-        public ThroughputMeter Meter => _session?.Meter;
+        public ThroughputMeter Meter => ActiveCapture.Session?.Meter;
 
-        public DatasetCaptureResult LastResult { get; private set; }
+        public DatasetCaptureResult LastResult
+        {
+            get
+            {
+                if (!s_lastResultLoaded)
+                {
+                    s_lastResult = Load();
+                    s_lastResultLoaded = true;
+                }
+                return s_lastResult;
+            }
+        }
 
         /// <summary>Problems found when Create was pressed (the disk or the scene may have changed since the last check).</summary>
         public IReadOnlyList<ValidationProblem> StartProblems { get; private set; } = Array.Empty<ValidationProblem>();
 
-        /// <summary>Starts a capture. Call outside OnGUI (from EditorApplication.delayCall): it sets up cameras and render textures.</summary>
-        public void Start(DatasetSettings settings, GameObject target, string projectRoot, Action changed)
+        /// <summary>
+        /// Starts a capture: in the background (editor updates; the editor stays usable) or in the foreground (this
+        /// call blocks behind a cancellable progress bar and renders at full speed). Call outside OnGUI (from
+        /// EditorApplication.delayCall): it sets up cameras and render textures.
+        /// </summary>
+        public void Start(DatasetSettings settings, GameObject target, string projectRoot, bool foreground)
         {
-            if (IsRunning) return;
-            LastResult = null;
             StartProblems = Array.Empty<ValidationProblem>();
+            if (IsRunning)
+            {
+                StartProblems = new[] { new ValidationProblem("capture", "running", ActiveCapture.BusyMessage, "") };
+                Changed?.Invoke();
+                return;
+            }
             var prepared = DatasetCapture.Prepare(settings.Clone(), target, projectRoot);
             if (!prepared.IsValid)
             {
                 StartProblems = prepared.Problems;
-                changed();
+                Changed?.Invoke();
                 return;
             }
-            var run = ++_run;
-            var ended = false;
-            var session = DatasetCapture.StartInBackground(prepared, result =>
+            Store(null);
+            if (foreground)
             {
-                // Also called before StartInBackground returns when the capture could not start.
-                ended = true;
-                // Also to the Console: the window may have been closed while the run went on, and then this result
-                // (where the dataset or the partial files are, or why it failed) would be shown nowhere.
-                if (result.Succeeded) Debug.Log(result.Message);
-                else if (result.Cancelled) Debug.LogWarning(result.Message);
-                else Debug.LogError(result.Message);
-                if (run != _run) return;
-                _session = null;
-                LastResult = result;
-                changed();
-            });
-            if (!ended) _session = session;
-            changed();
+                var result = DatasetCapture.RunBlocking(prepared, new ProgressBarReporter());
+                DatasetCapture.Log(result);
+                Store(result);
+            }
+            else
+            {
+                // The result is logged by StartInBackground; the window may be closed by the time it comes.
+                DatasetCapture.StartInBackground(prepared, Store);
+                Changed?.Invoke();
+            }
         }
 
-        public void Cancel() => _session?.Cancel();
+        public void Cancel() => ActiveCapture.Session?.Cancel();
 
         public void ClearResult()
         {
-            LastResult = null;
             StartProblems = Array.Empty<ValidationProblem>();
+            Store(null);
+        }
+
+        static void Store(DatasetCaptureResult result)
+        {
+            s_lastResult = result;
+            s_lastResultLoaded = true;
+            if (result == null)
+            {
+                SessionState.EraseInt(Key + "Kind");
+            }
+            else
+            {
+                SessionState.SetInt(Key + "Kind", result.Succeeded ? 1 : result.Cancelled ? 2 : 3);
+                SessionState.SetString(Key + "Message", result.Message ?? "");
+                SessionState.SetString(Key + "DatasetFolder", result.DatasetFolder ?? "");
+                SessionState.SetString(Key + "PartialFolder", result.PartialFolder ?? "");
+                SessionState.SetInt(Key + "Views", result.Views);
+            }
+            Changed?.Invoke();
+        }
+
+        static DatasetCaptureResult Load()
+        {
+            var kind = SessionState.GetInt(Key + "Kind", 0);
+            if (kind == 0) return null;
+            string Text(string name) => SessionState.GetString(Key + name, "") is var s && s.Length > 0 ? s : null;
+            return new DatasetCaptureResult(kind == 1, kind == 2, Text("DatasetFolder"), Text("PartialFolder"),
+                Text("Message") ?? "", SessionState.GetInt(Key + "Views", 0), 0);
         }
     }
 }

@@ -5,10 +5,16 @@ using UnityEngine;
 
 namespace NerfDatasetCreator.Editor
 {
-    /// <summary>Step 6: what will be made, anything still wrong, the Create button, progress with Cancel, and the result.</summary>
+    /// <summary>Step 6: what will be made, anything still wrong, how to run, the Create button, progress with Cancel, and the result.</summary>
     static class CreateSection
     {
-        public static void Draw(WindowContext c, CaptureController capture, Action create)
+        static readonly GUIContent RunLabel = new GUIContent("Run",
+            "Background: the editor stays usable, but renders only on editor updates, which slow down while Unity is not focused. " +
+            "Foreground: blocks the editor behind a progress bar with Cancel and renders at full speed.");
+        static readonly GUIContent[] RunModes = { new GUIContent("In the background (editor stays usable)"), new GUIContent("In the foreground (blocking, fastest)") };
+
+        /// <summary>Draws the step; returns the chosen run mode (true = foreground).</summary>
+        public static bool Draw(WindowContext c, CaptureController capture, Action create, bool foreground)
         {
             SectionHeader.Draw(c, WindowStep.Create, "Create dataset");
             EditorGUILayout.LabelField(WindowText.RunSummary(c.Settings), EditorStyles.wordWrappedLabel);
@@ -24,8 +30,10 @@ namespace NerfDatasetCreator.Editor
                 EditorGUI.ProgressBar(rect, meter == null ? 0 : (float)meter.Fraction,
                     meter == null ? "Starting…" : WindowText.Progress(meter.Done, meter.Total, meter.ViewsPerSecond));
                 if (GUILayout.Button("Cancel")) capture.Cancel();
-                return;
+                return foreground;
             }
+
+            foreground = EditorGUILayout.Popup(RunLabel, foreground ? 1 : 0, RunModes) == 1;
 
             var first = c.Problems.FirstIncompleteStep();
             if (first.HasValue)
@@ -36,12 +44,13 @@ namespace NerfDatasetCreator.Editor
                     c.Later(create);
 
             var result = capture.LastResult;
-            if (result == null) return;
+            if (result == null) return foreground;
             var type = result.Succeeded ? MessageType.Info : result.Cancelled ? MessageType.Warning : MessageType.Error;
             EditorGUILayout.HelpBox(result.Message, type);
             var folder = result.Succeeded ? result.DatasetFolder : result.PartialFolder;
             if (!string.IsNullOrEmpty(folder) && Directory.Exists(folder) && GUILayout.Button(RevealLabel(result.Succeeded)))
                 c.Later(() => EditorUtility.RevealInFinder(folder));
+            return foreground;
         }
 
         static string RevealLabel(bool succeeded)

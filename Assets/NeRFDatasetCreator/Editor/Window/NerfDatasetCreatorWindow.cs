@@ -8,7 +8,8 @@ namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// Window ▸ NeRF Dataset Creator: the steps of making a dataset in the order of the work, with Core's validation
-    /// under each field as you type, the rig drawn in the Scene view, presets, batch configs and a background capture.
+    /// under each field as you type, the rig drawn in the Scene view, presets, batch configs and a background or
+    /// foreground capture (one at a time, editor-wide: a reopened window shows the running one).
     /// Settings live in <see cref="NerfDatasetCreatorSettings"/> (per project, undoable); this window keeps only the
     /// scene objects they name and what is open.
     /// </summary>
@@ -23,6 +24,7 @@ namespace NerfDatasetCreator.Editor
         [SerializeField] ConfigReport report = new ConfigReport();
         [SerializeField] Vector2 scroll;
         [SerializeField] bool previewOn = true;
+        [SerializeField] bool foregroundCapture;
 
         readonly CaptureController capture = new CaptureController();
         PreviewDriver preview;
@@ -54,6 +56,7 @@ namespace NerfDatasetCreator.Editor
             preview.Changed += Repaint;
             preview.Enabled = previewOn;
             Undo.undoRedoPerformed += OnUndoRedo;
+            CaptureController.Changed += Repaint;
             // Editor-wide events rather than the OnHierarchyChange / OnInspectorUpdate messages, which Unity sends only
             // to the visible tab of a dock area (HostView), so the preview keeps following a docked-away window too.
             EditorApplication.hierarchyChanged += OnHierarchyChanged;
@@ -65,6 +68,7 @@ namespace NerfDatasetCreator.Editor
         void OnDisable()
         {
             Undo.undoRedoPerformed -= OnUndoRedo;
+            CaptureController.Changed -= Repaint;
             EditorApplication.hierarchyChanged -= OnHierarchyChanged;
             EditorApplication.update -= OnEditorUpdate;
             preview?.Dispose();
@@ -82,7 +86,8 @@ namespace NerfDatasetCreator.Editor
 
         void OnUndoRedo()
         {
-            Store.SaveToProject();
+            // Raised for every undo and redo in the editor; only one that changed the plugin's settings is saved.
+            Store.SaveIfChanged();
             ResolveSceneObjects();
             checkNeeded = true;
             Repaint();
@@ -172,7 +177,7 @@ namespace NerfDatasetCreator.Editor
 
             PreviewSection.Draw(preview);
             previewOn = preview.Enabled;
-            CreateSection.Draw(context, capture, StartCapture);
+            foregroundCapture = CreateSection.Draw(context, capture, StartCapture, foregroundCapture);
             EditorGUILayout.EndScrollView();
         }
 
@@ -226,10 +231,13 @@ namespace NerfDatasetCreator.Editor
         void StartCapture()
         {
             if (this == null) return;
-            capture.Start(Store.Settings, target, ProjectRoot, () =>
-            {
-                if (this != null) Repaint();
-            });
+            capture.Start(Store.Settings, target, ProjectRoot, foregroundCapture);
         }
+
+        /// <summary>Whether a capture is running in this editor (this window shows any, whoever started it).</summary>
+        public bool IsCapturing => capture.IsRunning;
+
+        /// <summary>How the last capture started from a window ended (kept across domain reloads), or null.</summary>
+        public DatasetCaptureResult LastCaptureResult => capture.LastResult;
     }
 }

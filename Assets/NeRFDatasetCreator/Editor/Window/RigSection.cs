@@ -30,6 +30,7 @@ namespace NerfDatasetCreator.Editor
 
             using (new EditorGUI.IndentLevelScope())
             {
+                if (CameraSourceSection.Draw(c, split)) return; // imported cameras: the file sets the views
                 settings.Count = EditorGUILayout.IntField("Views", settings.Count);
                 ValidationMessages.For(c, WindowFields.SplitField(split, "count"));
                 var kind = EditorGUILayout.Popup("Formation", (int)formation.Kind, FormationLabels);

@@ -5,7 +5,7 @@ using System.Linq;
 namespace NerfDatasetCreator.Tool
 {
     /// <summary>
-    /// <c>nerf-dataset convert d --to nerfstudio|colmap|ngp [--out o]</c>: <see cref="DatasetConverter.Convert"/>, then
+    /// <c>nerf-dataset convert d --to nerfstudio|colmap|ngp [--out o] [--depths]</c>: <see cref="DatasetConverter.Convert"/>, then
     /// where the files went, the warnings, and the command that trains on the result. Exit 1 when the dataset cannot
     /// be converted or a destination file exists (nothing is overwritten).
     /// </summary>
@@ -14,12 +14,24 @@ namespace NerfDatasetCreator.Tool
         /// <summary>A folder with more written files than this is summarised as a count (COLMAP's image copies).</summary>
         const int FilesListedPerFolder = 5;
 
-        public static int Run(string datasetFolder, ExportTarget target, string outputFolder, TextWriter stdout, TextWriter stderr)
+        public static int Run(string datasetFolder, ExportTarget target, string outputFolder, TextWriter stdout, TextWriter stderr, bool depths = false)
         {
             ConversionResult result;
             try
             {
-                result = DatasetConverter.Convert(datasetFolder, target, outputFolder);
+                // An earlier convert into the same output that was killed is finished or rolled back first.
+                if (Directory.Exists(datasetFolder))
+                {
+                    var output = DatasetConverter.OutputFolder(Path.GetFullPath(datasetFolder), target, outputFolder);
+                    var recovered = Recovery.Run(output);
+                    foreach (var note in recovered) stderr.WriteLine("note: " + note);
+                    if (recovered.Any(n => n.Operation == "convert" && n.Finished))
+                    {
+                        stdout.WriteLine("converted " + Path.GetFullPath(datasetFolder) + " to " + ExportTargets.Name(target) + " into " + output + " (the interrupted earlier convert, now finished)");
+                        return Program.Success;
+                    }
+                }
+                result = DatasetConverter.Convert(datasetFolder, target, outputFolder, depths);
             }
             catch (InvalidParameterException e)
             {
@@ -39,8 +51,8 @@ namespace NerfDatasetCreator.Tool
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 stderr.WriteLine("error: " + e.Message);
-                stderr.WriteLine("convert failed while writing; files it wrote before the failure stay where they are and convert never " +
-                                 "overwrites, so delete them (or pass another --out) before running it again.");
+                stderr.WriteLine("convert failed; it writes into a working folder and moves the files into place only when all are complete, " +
+                                 "so nothing was overwritten and running the same command again finishes or rolls back what was interrupted.");
                 return Program.Failure;
             }
 
@@ -52,21 +64,20 @@ namespace NerfDatasetCreator.Tool
                 if (files.Count > FilesListedPerFolder) stdout.WriteLine("  wrote " + files.Count + " files into " + folder.Key + Path.DirectorySeparatorChar);
                 else foreach (var file in files) stdout.WriteLine("  wrote " + file);
             }
-            stdout.WriteLine("train with: " + NextStep(target, result.MainFile));
+            if (result.TrainCommands.Count > 0) foreach (var command in result.TrainCommands) stdout.WriteLine("train with: " + command);
+            else stdout.WriteLine("train with: " + NextStep(target, result.MainFile, depths));
             return Program.Success;
         }
 
         /// <summary>The training command of Documentation~/exports.md for the export just written.</summary>
-        static string NextStep(ExportTarget target, string main)
+        static string NextStep(ExportTarget target, string main, bool depths)
         {
             switch (target)
             {
-                case ExportTarget.Nerfstudio:
-                    return "ns-train splatfacto nerfstudio-data --data " + Quote(main) + " --orientation-method none --center-method none --auto-scale-poses False";
                 case ExportTarget.Ngp:
                     return "./instant-ngp " + Quote(main) + "   (from the instant-ngp folder)";
                 default:
-                    return "python train.py -s " + Quote(main) + " --eval   (3D Gaussian Splatting)";
+                    return "python train.py -s " + Quote(main) + (depths ? " -d " + GaussianSplattingDepths.FolderName : "") + " --eval   (3D Gaussian Splatting)";
             }
         }
 

@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Linq;
 
 namespace NerfDatasetCreator.Tool
 {
@@ -29,6 +30,9 @@ namespace NerfDatasetCreator.Tool
             foreach (var warning in read.Warnings) stderr.WriteLine("warning: " + warning);
 
             var settings = read.Settings;
+            if (!string.IsNullOrWhiteSpace(settings.OutputFolder))
+                stderr.WriteLine("warning: " + new ValidationProblem("outputFolder", settings.OutputFolder,
+                    "is ignored by plan: --out names the dataset folder itself.", "Leave outputFolder empty in configs for the tool, or pass the folder as --out."));
             var problems = CapturePlan.Check(settings, PlanTarget.AtOrigin);
             if (problems.Count > 0)
             {
@@ -48,6 +52,9 @@ namespace NerfDatasetCreator.Tool
                 foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
                 return Program.UsageError;
             }
+            foreach (var note in session.Recovered) stderr.WriteLine("note: " + note);
+            foreach (var leftover in session.Leftovers)
+                stderr.WriteLine("note: left over: " + leftover + " `nerf-dataset clean " + Path.GetDirectoryName(session.FinalFolder) + "` removes it.");
 
             try
             {
@@ -58,12 +65,13 @@ namespace NerfDatasetCreator.Tool
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 stderr.WriteLine("error: " + e.Message);
-                stderr.WriteLine(session.DescribeAbandoned());
+                stderr.WriteLine("note: " + session.DescribeAbandoned());
                 return Program.Failure;
             }
 
-            stdout.WriteLine("planned " + plan.Settings.Train.Count + " train, " + plan.Settings.Val.Count + " val, " + plan.Settings.Test.Count +
-                             " test views at distance " + ValidationProblem.Format(plan.Distance) + " into " + session.FinalFolder);
+            stdout.WriteLine("planned " + plan.ViewsOf(DatasetSplit.Train).Count() + " train, " + plan.ViewsOf(DatasetSplit.Val).Count() + " val, " +
+                             plan.ViewsOf(DatasetSplit.Test).Count() + " test views at distance " + ValidationProblem.Format(plan.Distance) + " into " + session.FinalFolder);
+            if (plan.Time != null) stdout.WriteLine(TimeSummary.Describe(plan.Time));
             stdout.WriteLine("wrote transforms_train.json, transforms_val.json, transforms_test.json, " + DatasetLayout.ConfigFileName + ", " +
                              DatasetLayout.RigPreviewFileName + " (no images: render them with the Unity plugin)");
             return Program.Success;

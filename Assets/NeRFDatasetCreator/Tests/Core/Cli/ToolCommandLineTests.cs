@@ -76,7 +76,20 @@ namespace NerfDatasetCreator.Tests
             Assert.That(p.DatasetFolder, Is.EqualTo("data/lego"));
         }
 
+        [Test]
+        public void ConvertToColmapWithDepths_IsAFlagWithoutValue()
+        {
+            var p = ToolCommandLine.Parse(new[] { "convert", "data/lego", "--depths", "--to", "colmap" });
+            Assert.That(p.Errors, Is.Empty);
+            Assert.That(p.Depths, Is.True);
+            Assert.That(p.DatasetFolder, Is.EqualTo("data/lego"), "--depths does not swallow the next argument");
+            Assert.That(ToolCommandLine.Parse(new[] { "convert", "data/lego", "--to", "colmap" }).Depths, Is.False);
+        }
+
         [TestCase(new string[0], "no command")]
+        [TestCase(new[] { "convert", "d", "--to", "ngp", "--depths" }, "use it with --to colmap")]
+        [TestCase(new[] { "convert", "d", "--to", "colmap", "--depths=yes" }, "--depths takes no value")]
+        [TestCase(new[] { "validate", "d", "--depths" }, "validate does not know the option --depths")]
         [TestCase(new[] { "render" }, "unknown command 'render'")]
         [TestCase(new[] { "plan", "--config", "s.json" }, "plan needs --out")]
         [TestCase(new[] { "plan", "--out", "d" }, "plan needs --config")]

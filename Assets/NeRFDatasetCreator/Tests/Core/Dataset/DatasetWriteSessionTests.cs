@@ -63,6 +63,7 @@ namespace NerfDatasetCreator.Tests
         public void ReplaceSwapsTheDatasetOnlyWhenTheNewOneIsComplete()
         {
             Directory.CreateDirectory(Path.Combine(_final, "train"));
+            File.WriteAllText(Path.Combine(_final, "dataset_config.json"), "{ \"generator\": \"" + PluginInfo.Name + "\" }");
             File.WriteAllText(Path.Combine(_final, "transforms_train.json"), "old");
             File.WriteAllText(Path.Combine(_final, "train", "r_99.png"), "stale");
             var session = DatasetWriteSession.Begin(_final, OverwritePolicy.Replace);

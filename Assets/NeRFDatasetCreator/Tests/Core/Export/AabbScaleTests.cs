@@ -44,5 +44,49 @@ namespace NerfDatasetCreator.Tests
             var e = Assert.Throws<InvalidParameterException>(() => AabbScale.ForRadius(-1));
             Assert.That(e.Problems[0].Field, Is.EqualTo("sceneRadius"));
         }
+            // A dataset's own value wins unless its recorded target needs a larger cube (reach 2.5: 2·0.33·2.5 = 1.65 → 2).
+        [TestCase(null, null, 1)]   // nerf_synthetic: nothing declared, size unknown → the ±1.5 box
+        [TestCase(4, null, 4)]      // the dataset says 4 and nothing contradicts it
+        [TestCase(null, 2.5, 2)]
+        [TestCase(4, 2.5, 4)]       // a larger declared cube is kept (the user may want the background)
+        [TestCase(2, 1.0, 2)]
+        public void ForDataset_TakesTheDeclaredValueOrTheTargetsNeed(int? declared, double? reach, int expected)
+        {
+            var warnings = new List<ValidationProblem>();
+            Assert.That(AabbScale.ForDataset(declared, reach, warnings), Is.EqualTo(expected));
+            Assert.That(warnings, Is.Empty);
+        }
+
+        [Test]
+        public void ForDataset_RaisesATooSmallDeclaredCube_AndSaysWhy()
+        {
+            var warnings = new List<ValidationProblem>();
+
+            // reach 3.5: 2·0.33·3.5 = 2.31 → 4; the declared 1 covers only 1/0.66 = 1.515.
+            Assert.That(AabbScale.ForDataset(1, 3.5, warnings), Is.EqualTo(4));
+
+            Assert.That(warnings.Count, Is.EqualTo(1));
+            Assert.That(warnings[0].Field, Is.EqualTo("aabb_scale"));
+            Assert.That(warnings[0].Reason, Does.Contain("1.515").And.Contain("3.5").And.Contain("uses 4"));
+        }
+
+        [TestCase("2", 2)]
+        [TestCase("128", 128)]
+        [TestCase("4.0", 4)]
+        public void Declared_ReadsPowersOfTwo(string json, int expected) =>
+            Assert.That(AabbScale.Declared(Newtonsoft.Json.Linq.JToken.Parse(json), "transforms_train.json"), Is.EqualTo(expected));
+
+        [TestCase("3")]
+        [TestCase("256")]
+        [TestCase("0")]
+        [TestCase("1.5")]
+        [TestCase("\"2\"")]
+        public void Declared_IgnoresWhatInstantNgpRefuses_WithAWarning(string json)
+        {
+            var warnings = new List<ValidationProblem>();
+            Assert.That(AabbScale.Declared(Newtonsoft.Json.Linq.JToken.Parse(json), "transforms_train.json", warnings), Is.Null);
+            Assert.That(warnings.Count, Is.EqualTo(1));
+            Assert.That(warnings[0].Field, Is.EqualTo("transforms_train.json: aabb_scale"));
+        }
     }
 }

@@ -303,6 +303,8 @@ namespace NerfDatasetCreator.Tests
             var mesh = new SurfaceMesh(new[] { new Vector3d(-1, -1, 0), new Vector3d(1, -1, 0), new Vector3d(0, 1, 0.5) }, new[] { 0, 1, 2 });
             var cloud = SurfaceSampler.Sample(new[] { mesh }, 300, 4, new Vector3d(0.2, 0.4, 0.6));
             PlyWriter.Write(Path.Combine(_lego.Root, "points3d.ply"), cloud);
+            var record = PointCloudRecord.Of(Path.Combine(_lego.Root, "points3d.ply"), "points3d.ply", cloud.Count);
+            File.WriteAllText(Path.Combine(_lego.Root, DatasetLayout.ConfigFileName), new JObject { [PointCloudRecord.Key] = record.ToJson() }.ToString());
 
             var ns = JObject.Parse(File.ReadAllText(DatasetConverter.Convert(_lego.Root, ExportTarget.Nerfstudio).MainFile));
             Assert.That((string)ns["ply_file_path"], Is.EqualTo("points3d.ply"));

@@ -9,12 +9,15 @@ namespace NerfDatasetCreator.Tests
     /// <summary>
     /// 3DGS (scene/dataset_readers.py) writes points3d.ply with plyfile from the dtype
     /// [x f4, y f4, z f4, nx f4, ny f4, nz f4, red u1, green u1, blue u1] and fetchPly reads vertex["x"…"blue"];
-    /// plyfile names f4 "float" and u1 "uchar" and writes binary_little_endian by default. The file must be exactly that.
+    /// plyfile names f4 "float" and u1 "uchar" and writes binary_little_endian by default. The file must be exactly that,
+    /// plus one header comment (plyfile keeps comments in PlyData.comments; Open3D's rply skips them) marking it as ours.
     /// </summary>
     public class PlyWriterTests
     {
         const string ExpectedHeader =
-            "ply\nformat binary_little_endian 1.0\nelement vertex 2\n" +
+            "ply\nformat binary_little_endian 1.0\n" +
+            "comment NeRF Dataset Creator: points sampled on the target's surface, output frame; SHA-256 in dataset_config.json\n" +
+            "element vertex 2\n" +
             "property float x\nproperty float y\nproperty float z\n" +
             "property float nx\nproperty float ny\nproperty float nz\n" +
             "property uchar red\nproperty uchar green\nproperty uchar blue\n" +

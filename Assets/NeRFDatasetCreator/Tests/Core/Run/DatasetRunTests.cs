@@ -95,6 +95,27 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void WithTheMattingPairAlphaIsTheGlassOpacityAndTheMaskItsGeometry()
+        {
+            var run = DatasetRun.Prepare(Settings(), Target, _project);
+            var session = run.Begin();
+            var writer = new ViewFileWriter(run.Plan, session, SyntheticViews.FakeExr);
+            foreach (var view in run.Plan.Views)
+                writer.Write(view, SyntheticViews.MattedColour(), SyntheticViews.Data());
+            run.Finish(session, new Provenance(new DateTime(2026, 11, 22, 12, 0, 0, DateTimeKind.Utc), "6000.0.0f1", "unit-test"));
+
+            var png = ReferencePngDecoder.Decode(File.ReadAllBytes(Path.Combine(run.DatasetFolder, "test", "r_0.png")));
+            byte[] Pixel(int x, int y) => png.Pixels.Skip((y * png.Width + x) * 4).Take(4).ToArray();
+            // Linear 0.5 → sRGB 188; alpha 0.5 → 128; the half-covered edge: 2 of 4 samples at 0.5 → 0.25 → 64.
+            Assert.That(Pixel(0, 0), Is.EqualTo(new byte[] { 188, 188, 188, 128 }));
+            Assert.That(Pixel(4, 3), Is.EqualTo(new byte[] { 188, 188, 188, 64 }));
+            Assert.That(Pixel(6, 5), Is.EqualTo(new byte[] { 0, 0, 0, 0 }));
+            var mask = ReferencePngDecoder.Decode(File.ReadAllBytes(Path.Combine(run.DatasetFolder, "test", "r_0_mask_0000.png")));
+            Assert.That(new[] { mask.Pixels[0], mask.Pixels[4], mask.Pixels[7] }, Is.EqualTo(new byte[] { 255, 128, 0 }),
+                "the mask is where the geometry is, whatever its opacity");
+        }
+
+        [Test]
         public void TheWrittenMatricesAreThePlans()
         {
             var run = DatasetRun.Prepare(Settings(), Target, _project);

@@ -133,6 +133,13 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(read[i].Red, Is.EqualTo(points[i].Red));
             }
             Assert.That(DatasetValidator.Validate(run.DatasetFolder).Problems, Is.Empty);
+
+            // dataset_config.json records the file with its SHA-256, so convert and validate know it is ours.
+            var config = JObject.Parse(File.ReadAllText(Path.Combine(run.DatasetFolder, "dataset_config.json")));
+            Assert.That((string)config["pointCloud"]["file"], Is.EqualTo("points3d.ply"));
+            Assert.That((int)config["pointCloud"]["points"], Is.EqualTo(64));
+            Assert.That((string)config["pointCloud"]["sha256"], Is.EqualTo(PointCloudRecord.HashOf(Path.Combine(run.DatasetFolder, "points3d.ply"))));
+            Assert.That(DatasetValidator.Validate(run.DatasetFolder).Warnings.Select(w => w.File), Does.Not.Contain("points3d.ply"));
         }
 
         [Test]

@@ -30,6 +30,31 @@ namespace NerfDatasetCreator.Tests
             return frame;
         }
 
+        /// <summary>
+        /// The same geometry as <see cref="Colour"/> seen through grey glass (alpha 0.5, straight linear colour 0.5), as the
+        /// capture delivers it for difference matting: the colour pass over black (K = 0.25) and over white (W = 0.75;
+        /// empty samples 0 and 1) as halves, and the mask pass's geometry coverage (255 where the glass is).
+        /// </summary>
+        public static RawFrame MattedColour()
+        {
+            int w = Width * K, h = Height * K;
+            var frame = new RawFrame(w, h, K) { ColorOverBlack = new ushort[w * h * 4], ColorOverWhite = new ushort[w * h * 4], Mask = new byte[w * h], MaskBytesPerPixel = 1 };
+            const ushort quarter = 0x3400, threeQuarters = 0x3A00, one = 0x3C00;
+            for (var y = 0; y < h; y++)
+                for (var x = 0; x < w; x++)
+                {
+                    var i = y * w + x;
+                    var covered = x <= 4 * K;
+                    if (covered) frame.Mask[i] = 255;
+                    for (var c = 0; c < 3; c++)
+                    {
+                        frame.ColorOverBlack[i * 4 + c] = covered ? quarter : (ushort)0;
+                        frame.ColorOverWhite[i * 4 + c] = covered ? threeQuarters : one;
+                    }
+                }
+            return frame;
+        }
+
         /// <summary>Depth 2 m + 0.1 m per row from the bottom where covered; normals straight up (output +Z).</summary>
         public static RawFrame Data(double extraMetres = 0)
         {

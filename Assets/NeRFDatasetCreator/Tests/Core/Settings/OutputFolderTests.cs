@@ -93,8 +93,57 @@ namespace NerfDatasetCreator.Tests
             var folder = _temp.Combine("lego");
             Directory.CreateDirectory(folder);
             File.WriteAllText(Path.Combine(folder, "transforms_test.json"), "{}");
+            File.WriteAllText(Path.Combine(folder, "dataset_config.json"), "{ \"generator\": \"" + PluginInfo.Name + "\" }");
             Assert.That(Fields(folder), Is.EqualTo(new[] { "overwrite" }));
             Assert.That(Fields(folder, OverwritePolicy.Replace), Is.Empty);
+        }
+
+        [Test]
+        public void ReplaceRefusesAFolderNothingProvesThisPluginWrote()
+        {
+            // The hostile-user case: one stray transforms file among the user's own files.
+            var folder = _temp.Combine("mine");
+            Directory.CreateDirectory(folder);
+            File.WriteAllText(Path.Combine(folder, "transforms_train.json"), "{}");
+            File.WriteAllText(Path.Combine(folder, "thesis.tex"), "precious");
+            var problem = SafeOutput.CheckOutputFolder(folder, _project, OverwritePolicy.Replace).Single();
+            Assert.That(problem.Field, Is.EqualTo("overwrite"));
+            Assert.That(problem.Reason, Does.Contain("no dataset_config.json"));
+        }
+
+        [Test]
+        public void ReplaceRefusesOurDatasetHoldingAFileItDidNotWrite()
+        {
+            var folder = _temp.Combine("lego");
+            Directory.CreateDirectory(Path.Combine(folder, "train"));
+            File.WriteAllText(Path.Combine(folder, "dataset_config.json"), "{ \"generator\": \"" + PluginInfo.Name + "\" }");
+            File.WriteAllText(Path.Combine(folder, "train", "r_0.png"), "x");
+            Assert.That(Fields(folder, OverwritePolicy.Replace), Is.Empty, "only files the plugin writes");
+            File.WriteAllText(Path.Combine(folder, "train", "notes.txt"), "mine");
+            var problem = SafeOutput.CheckOutputFolder(folder, _project, OverwritePolicy.Replace).Single();
+            Assert.That(problem.Reason, Does.Contain(Path.Combine(folder, "train", "notes.txt")).And.Contain("was not written by this plugin"));
+        }
+
+        [Test]
+        public void ANameTooLongForTheWorkingFolderIsRefusedUpFrontNamingTheField()
+        {
+            // 230 bytes is a legal name, but "<name>.partial-yyyyMMdd-HHmmss-xxxxxxxx~" is not.
+            var folder = _temp.Combine(new string('n', 230));
+            var problem = SafeOutput.CheckOutputFolder(folder, _project, OverwritePolicy.Never).Single();
+            Assert.That(problem.Field, Is.EqualTo("name"));
+            Assert.That(problem.Reason, Does.Contain("230 bytes"));
+            Assert.Throws<InvalidParameterException>(() => DatasetWriteSession.Begin(folder, OverwritePolicy.Never));
+            Assert.That(Directory.GetFileSystemEntries(_temp.Path).Where(e => e.Contains("nnnn")), Is.Empty, "nothing was created");
+        }
+
+        [Test]
+        public void AMountPointIsRefusedWithTheFolderToUseInstead()
+        {
+            const string mount = "/dev/shm";
+            Assume.That(MountPoints.IsMountPoint(mount), Is.True, "needs a Linux mount point");
+            var problem = SafeOutput.CheckOutputFolder(mount, _project, OverwritePolicy.Replace).First(p => p.Reason.Contains("mount point"));
+            Assert.That(problem.Field, Is.EqualTo("outputFolder"));
+            Assert.That(problem.Fix, Does.Contain(Path.Combine(mount, "dataset")));
         }
 
         [Test]

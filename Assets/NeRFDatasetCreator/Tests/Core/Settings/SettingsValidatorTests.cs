@@ -51,6 +51,16 @@ namespace NerfDatasetCreator.Tests
             Assert.That(FieldsOf(new DatasetSettings { Supersampling = k }), Is.EqualTo(new[] { "supersampling" }));
         }
 
+        [Test]
+        public void TheLargestSupersamplingTheSettingsAllowIsOneTheWriterAccepts()
+        {
+            // One limit for the window, batch configs, the capture options and the writer: RawFrame's.
+            var k = RawFrame.MaxSupersampling;
+            Assert.That(FieldsOf(new DatasetSettings { Width = 8, Height = 8, Supersampling = k }), Is.Empty);
+            Assert.That(new RawFrame(8 * k, 8 * k, k).Validate().Select(p => p.Field), Has.None.EqualTo("frame.Supersampling"));
+            Assert.That(FieldsOf(new DatasetSettings { Width = 8, Height = 8, Supersampling = k + 1 }), Is.EqualTo(new[] { "supersampling" }));
+        }
+
         [TestCase(8192, 2, false)]
         [TestCase(8192, 3, true)]
         [TestCase(4096, 4, false)]

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using Newtonsoft.Json.Linq;
@@ -299,6 +300,25 @@ namespace NerfDatasetCreator.Tests
             Assert.That(result.Succeeded, Is.True, Lines(result));
             Assert.That(result.Warnings, Is.Empty);
             Assert.That(File.ReadAllBytes(Path.Combine(output, "points3d.ply")), Is.EqualTo(new byte[] { 1, 2, 3 }));
+        }
+
+        [Test]
+        public void ThePointCloudRecordOfShardZeroDescribesTheMergedDataset()
+        {
+            var shards = ShardFolders.Create(root, 2, Counts);
+            File.WriteAllBytes(Path.Combine(shards[0], "points3d.ply"), new byte[] { 1, 2, 3 });
+            var configPath = Path.Combine(shards[0], "dataset_config.json");
+            var config = JObject.Parse(File.ReadAllText(configPath));
+            config["pointCloud"] = new PointCloudRecord("points3d.ply", PointCloudRecord.HashOf(Path.Combine(shards[0], "points3d.ply")), 1).ToJson();
+            File.WriteAllText(configPath, config.ToString());
+
+            var result = ShardMerger.Merge(shards, output, true);
+
+            Assert.That(result.Succeeded, Is.True, Lines(result));
+            Assert.That(result.Warnings, Is.Empty, "only shard 0 writes the cloud and its record: not a difference worth a warning");
+            var merged = JObject.Parse(File.ReadAllText(Path.Combine(output, "dataset_config.json")));
+            Assert.That(JToken.DeepEquals(merged["pointCloud"], config["pointCloud"]), Is.True);
+            Assert.That(PointCloudOwnership.IsOwn(output, new List<ValidationProblem>()), Is.True, "the copied file still has the recorded hash");
         }
 
         [Test]

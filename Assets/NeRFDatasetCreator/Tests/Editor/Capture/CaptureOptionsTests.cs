@@ -22,6 +22,15 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         }
 
         [Test]
+        public void SupersamplingBeyondCoresLimitIsRefused()
+        {
+            // The writer (RawFrame) refuses k > 4: the capture must refuse it before rendering anything.
+            Assert.That(new CaptureOptions { Supersampling = RawFrame.MaxSupersampling }.Validate(), Is.Empty);
+            var problem = new CaptureOptions { Supersampling = RawFrame.MaxSupersampling + 1 }.Validate().Single();
+            Assert.That(problem.Field, Is.EqualTo("capture.supersampling"));
+        }
+
+        [Test]
         public void SupersampledSizeBeyondGpuLimitsIsRefused()
         {
             var options = new CaptureOptions { Width = 8000, Height = 100, Supersampling = 4 };
@@ -31,10 +40,10 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         }
 
         [Test]
-        public void ColourAlwaysBringsTheMask()
+        public void ColourNoLongerBringsTheMaskItsAlphaComesFromMatting()
         {
             var options = new CaptureOptions { Passes = CapturePasses.Color | CapturePasses.Depth };
-            Assert.That(options.EffectivePasses, Is.EqualTo(CapturePasses.Color | CapturePasses.Mask | CapturePasses.Depth));
+            Assert.That(options.EffectivePasses, Is.EqualTo(CapturePasses.Color | CapturePasses.Depth));
         }
 
         [Test]

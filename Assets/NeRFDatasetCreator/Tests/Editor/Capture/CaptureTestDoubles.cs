@@ -10,12 +10,33 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         public int ViewIndex;
         public UnityPose Pose;
         public int Width, Height, DataWidth, DataHeight;
-        public byte[] Color, Mask;
+        public ushort[] OverBlack, OverWhite;
+        public bool GammaEncoded;
+        public byte[] Mask;
         public float[] Depth, Normal;
 
         public byte MaskAt(int x, int y) => Mask[y * Width + x];
         public float DepthAt(int x, int y) => Depth[y * DataWidth + x];
-        public byte ColorAt(int x, int y, int channel) => Color[(y * Width + x) * 4 + channel];
+
+        /// <summary>The colour render over black at a sample, as written by the shaders (linear, or gamma in a Gamma project).</summary>
+        public float OverBlackAt(int x, int y, int channel) => HalfFloat.ToFloat(OverBlack[(y * Width + x) * 4 + channel]);
+
+        public float OverWhiteAt(int x, int y, int channel) => HalfFloat.ToFloat(OverWhite[(y * Width + x) * 4 + channel]);
+
+        /// <summary>A sample's alpha by difference matting: 1 − mean over RGB of (over white − over black).</summary>
+        public float AlphaAt(int x, int y)
+        {
+            float t = 0;
+            for (var c = 0; c < 3; c++) t += OverWhiteAt(x, y, c) - OverBlackAt(x, y, c);
+            return 1f - t / 3f;
+        }
+
+        /// <summary>The 8-bit sRGB value of an opaque sample's colour (what the PNG stores where alpha is 1).</summary>
+        public byte ColorAt(int x, int y, int channel)
+        {
+            var value = OverBlackAt(x, y, channel);
+            return GammaEncoded ? (byte)Math.Round(Math.Max(0, Math.Min(1, value)) * 255) : Srgb.EncodeByteExact(value);
+        }
 
         public Vector3d NormalAt(int x, int y, out float coverage)
         {
@@ -42,7 +63,9 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
                 Height = view.Height,
                 DataWidth = view.DataWidth,
                 DataHeight = view.DataHeight,
-                Color = (byte[])view.Color?.Clone(),
+                OverBlack = (ushort[])view.ColorOverBlack?.Clone(),
+                OverWhite = (ushort[])view.ColorOverWhite?.Clone(),
+                GammaEncoded = view.ColorIsGammaEncoded,
                 Mask = (byte[])view.Mask?.Clone(),
                 Depth = (float[])view.Depth?.Clone(),
                 Normal = (float[])view.Normal?.Clone(),

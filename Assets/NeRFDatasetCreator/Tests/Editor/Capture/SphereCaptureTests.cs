@@ -91,7 +91,8 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
                 Assert.That(view.ViewIndex, Is.EqualTo(i));
                 Assert.That(view.Pose.Position, Is.EqualTo(poses[i].Position));
                 Assert.That(view.Width, Is.EqualTo(Size * Supersampling));
-                Assert.That(view.Color, Has.Length.EqualTo(Size * Supersampling * Size * Supersampling * 4));
+                Assert.That(view.OverBlack, Has.Length.EqualTo(Size * Supersampling * Size * Supersampling * 4));
+                Assert.That(view.OverWhite, Has.Length.EqualTo(Size * Supersampling * Size * Supersampling * 4));
                 Assert.That(view.Mask, Has.Length.EqualTo(Size * Supersampling * Size * Supersampling));
                 Assert.That(view.Depth, Has.Length.EqualTo(Size * Size));
                 Assert.That(view.Normal, Has.Length.EqualTo(Size * Size * 4));
@@ -112,10 +113,14 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
                 {
                     Assert.That(view.MaskAt(x, y), Is.EqualTo(0), $"view {view.ViewIndex} corner ({x},{y}) mask");
                     for (var c = 0; c < 3; c++)
-                        Assert.That(view.ColorAt(x, y, c), Is.EqualTo(0), $"view {view.ViewIndex} corner ({x},{y}) colour");
+                    {
+                        Assert.That(view.OverBlackAt(x, y, c), Is.EqualTo(0f), $"view {view.ViewIndex} corner ({x},{y}) colour over black");
+                        Assert.That(view.OverWhiteAt(x, y, c), Is.EqualTo(1f), $"view {view.ViewIndex} corner ({x},{y}) colour over white");
+                    }
                     Assert.That(view.DepthAt(x * Size / w, y * Size / w), Is.EqualTo(0f), "no geometry → depth 0");
                 }
                 Assert.That(view.MaskAt(w / 2, w / 2), Is.EqualTo(255), $"view {view.ViewIndex} centre mask");
+                Assert.That(view.AlphaAt(w / 2, w / 2), Is.EqualTo(1f).Within(1e-3), $"view {view.ViewIndex} centre alpha (opaque sphere)");
             }
         }
 

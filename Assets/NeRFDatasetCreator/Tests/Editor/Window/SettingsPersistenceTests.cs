@@ -1,3 +1,4 @@
+using System.IO;
 using NUnit.Framework;
 using UnityEditor;
 using UnityEngine;
@@ -107,6 +108,37 @@ namespace NerfDatasetCreator.Editor.Tests
             {
                 Undo.ClearUndo(holder);
                 Object.DestroyImmediate(holder);
+            }
+        }
+
+        [Test]
+        public void AnUndoOfSomethingElseDoesNotRewriteTheSettingsFile()
+        {
+            // Undo.undoRedoPerformed fires for every undo in the editor; the window must save only its own changes.
+            // Reads the user's settings file's time stamp only: with the fix, nothing writes it.
+            var path = Path.Combine(Path.GetDirectoryName(Application.dataPath), "UserSettings", "NeRFDatasetCreator.asset");
+            var existed = File.Exists(path);
+            var stamp = existed ? File.GetLastWriteTimeUtc(path) : default;
+            var window = EditorWindow.GetWindow<NerfDatasetCreatorWindow>("NeRF Dataset Creator");
+            var other = ScriptableObject.CreateInstance<NerfDatasetPreset>();
+            other.hideFlags = HideFlags.HideAndDontSave;
+            try
+            {
+                other.StoreSettings(new DatasetSettings());
+                Undo.IncrementCurrentGroup();
+                Undo.RecordObject(other, "An edit elsewhere");
+                other.StoreSettings(new DatasetSettings { Width = 400 });
+                Undo.FlushUndoRecordObjects();
+                Undo.PerformUndo();
+                Assert.That(NerfDatasetCreatorSettings.instance.SaveIfChanged(), Is.False, "the plugin's settings did not change");
+                Assert.That(File.Exists(path), Is.EqualTo(existed));
+                if (existed) Assert.That(File.GetLastWriteTimeUtc(path), Is.EqualTo(stamp), "the settings file was not rewritten");
+            }
+            finally
+            {
+                Undo.ClearUndo(other);
+                Object.DestroyImmediate(other);
+                window.Close();
             }
         }
 

@@ -1,0 +1,65 @@
+using System.Collections.Generic;
+using System.IO;
+using Newtonsoft.Json;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// How far the target reaches from the output origin, in output units, as a dataset's own
+    /// <c>dataset_config.json</c> records it: |s·(P·c_Unity − centre)| + s·b with c_Unity = <c>target.unityCentre</c>,
+    /// b = <c>target.boundingRadius</c> and s, centre = <c>scene_normalisation</c> — the same quantity
+    /// <see cref="CapturePlan.TargetReach"/> computed when the dataset was captured. Null when the dataset does not say
+    /// (nerf_synthetic, a target without renderers, an older config); a record that is there but malformed is a warning,
+    /// never a failed conversion.
+    /// </summary>
+    public static class DatasetTargetReach
+    {
+        public static double? Read(string datasetDirectory, ICollection<ValidationProblem> warnings = null)
+        {
+            var path = Path.Combine(datasetDirectory, DatasetLayout.ConfigFileName);
+            if (!File.Exists(path)) return null;
+            JObject config;
+            try { config = JObject.Parse(File.ReadAllText(path)); }
+            catch (JsonException e)
+            {
+                warnings?.Add(new ValidationProblem(DatasetLayout.ConfigFileName, path, "is not valid JSON (" + e.Message + "), so the target's size is unknown.",
+                    "Restore the file from the capture, or ignore this if the dataset is not from this plugin."));
+                return null;
+            }
+            return FromConfig(config, warnings);
+        }
+
+        /// <summary>The reach recorded in a parsed <c>dataset_config.json</c>, or null.</summary>
+        public static double? FromConfig(JObject config, ICollection<ValidationProblem> warnings = null)
+        {
+            var target = config["target"] as JObject;
+            var radius = target?["boundingRadius"];
+            if (target == null || radius == null || radius.Type == JTokenType.Null) return null;
+            var centre = target["unityCentre"] as JArray;
+            if (!IsNumber(radius) || !((double)radius >= 0) || centre == null || centre.Count != 3 || !IsNumber(centre[0]) || !IsNumber(centre[1]) || !IsNumber(centre[2]))
+            {
+                warnings?.Add(new ValidationProblem(DatasetLayout.ConfigFileName + ": target", target.ToString(Formatting.None),
+                    "is not a record with a \"unityCentre\" of 3 numbers and a \"boundingRadius\" ≥ 0, so the target's size is unknown.",
+                    "Restore the file from the capture."));
+                return null;
+            }
+            SceneNormalisation normalisation;
+            try
+            {
+                normalisation = config[BlenderTransformsWriter.SceneNormalisationKey] == null
+                    ? SceneNormalisation.Identity
+                    : SceneNormalisation.FromJson(config[BlenderTransformsWriter.SceneNormalisationKey]);
+            }
+            catch (InvalidParameterException e)
+            {
+                foreach (var p in e.Problems) warnings?.Add(new ValidationProblem(DatasetLayout.ConfigFileName + ": " + p.Field, p.Value, p.Reason + " The target's size is unknown.", p.Fix));
+                return null;
+            }
+            var unityCentre = new Vector3d((double)centre[0], (double)centre[1], (double)centre[2]);
+            return normalisation.ApplyToUnityPoint(unityCentre).Length + (double)radius * normalisation.Scale;
+        }
+
+        static bool IsNumber(JToken t) => t.Type == JTokenType.Float || t.Type == JTokenType.Integer;
+    }
+}

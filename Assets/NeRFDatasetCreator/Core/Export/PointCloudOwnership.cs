@@ -1,0 +1,72 @@
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using Newtonsoft.Json;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Whether a dataset's <c>points3d.ply</c> is the target's surface this plugin sampled: its SHA-256 must equal the
+    /// <see cref="PointCloudRecord"/> in dataset_config.json (and the file carries <see cref="PlyWriter.Signature"/>).
+    /// Any other file under that name is foreign — typically the random [−1.3, 1.3]³ cloud 3DGS writes into a Blender
+    /// dataset that has none — and is never used as the target's surface: no nerfstudio <c>ply_file_path</c>, no COLMAP
+    /// points3D from it. Shared by convert and validate so both say the same thing.
+    /// </summary>
+    public static class PointCloudOwnership
+    {
+        public const string FileName = "points3d.ply";
+
+        /// <summary>
+        /// True when <c>points3d.ply</c> exists and is ours. Adds a warning for a foreign file, and for a recorded cloud
+        /// that is missing.
+        /// </summary>
+        public static bool IsOwn(string datasetDirectory, ICollection<ValidationProblem> warnings)
+        {
+            var path = Path.Combine(datasetDirectory, FileName);
+            var record = ReadRecord(datasetDirectory);
+            if (!File.Exists(path))
+            {
+                if (record != null)
+                    warnings?.Add(new ValidationProblem(FileName, "missing",
+                        "is recorded in " + DatasetLayout.ConfigFileName + " (" + record.Points + " points) but is not in the dataset; 3DGS will start from random points.",
+                        "Copy the file back from the original capture, or re-capture."));
+                return false;
+            }
+            string why;
+            if (record == null || record.File != FileName)
+                why = HasSignature(path)
+                    ? "carries this plugin's header comment but " + DatasetLayout.ConfigFileName + " holds no record of it, so it cannot be checked"
+                    : "was not written by this plugin (no record in " + DatasetLayout.ConfigFileName + ", no " + PluginInfo.Name + " header comment)";
+            else if (PointCloudRecord.HashOf(path) != record.Sha256)
+                why = "differs from the cloud this plugin wrote (its SHA-256 is not the one in " + DatasetLayout.ConfigFileName + ")";
+            else return true;
+            warnings?.Add(new ValidationProblem(FileName, "foreign",
+                why + ". It is most likely the random [−1.3, 1.3]³ cloud 3DGS writes into a Blender dataset without one, and is NOT used as the target's surface (no nerfstudio ply_file_path, no COLMAP points3D from it).",
+                "Delete it (3DGS makes a new random one when it needs it), or capture with pointCloudPoints > 0 for the target's real surface."));
+            return false;
+        }
+
+        static PointCloudRecord ReadRecord(string datasetDirectory)
+        {
+            var config = Path.Combine(datasetDirectory, DatasetLayout.ConfigFileName);
+            if (!File.Exists(config)) return null;
+            try { return PointCloudRecord.FromConfig(JObject.Parse(File.ReadAllText(config))); }
+            catch (JsonException) { return null; }
+        }
+
+        static bool HasSignature(string path)
+        {
+            using (var reader = new StreamReader(path, System.Text.Encoding.ASCII))
+            {
+                for (var i = 0; i < 16; i++)
+                {
+                    var line = reader.ReadLine();
+                    if (line == null || line == "end_header") return false;
+                    if (line == "comment " + PlyWriter.Signature) return true;
+                }
+            }
+            return false;
+        }
+    }
+}

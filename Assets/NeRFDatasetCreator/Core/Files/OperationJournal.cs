@@ -1,0 +1,122 @@
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using Newtonsoft.Json;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// The small record every multi-step operation keeps in its working folder (<see cref="FileName"/>), so that
+    /// the next run on the same output can finish it or roll it back (<see cref="Recovery"/>):
+    /// <code>
+    /// { "format": "nerf-dataset-creator/operation", "version": 1, "operation": "write", "output": "/abs/lego",
+    ///   "state": "writing", "aside": null, "moves": [], "files": [] }
+    /// </code>
+    /// <see cref="State"/> is <see cref="Writing"/> while files are being produced (the output is untouched: roll
+    /// back) and <see cref="Committing"/> once everything is complete in the working folder (finish). Rewritten through
+    /// a temporary file so that a kill leaves either the old or the new record readable.
+    /// </summary>
+    public sealed class OperationJournal
+    {
+        public const string FileName = ".nerf-operation.json";
+        const string TempName = FileName + ".tmp";
+        public const string FormatName = "nerf-dataset-creator/operation";
+
+        public const string Writing = "writing";
+        public const string Committing = "committing";
+
+        /// <summary>"write" (plan and capture), "merge" or "convert".</summary>
+        public string Operation;
+
+        /// <summary>The absolute output folder the operation produces.</summary>
+        public string Output;
+
+        public string State = Writing;
+
+        /// <summary>write: where the replaced dataset is moved while the new one takes its name.</summary>
+        public string Aside;
+
+        /// <summary>merge --files move: each shard file (absolute) and its path relative to the working folder.</summary>
+        public List<KeyValuePair<string, string>> Moves = new List<KeyValuePair<string, string>>();
+
+        /// <summary>convert: the files, relative to the working folder and to the output alike, to move into place.</summary>
+        public List<string> Files = new List<string>();
+
+        /// <summary>convert: the output folder did not exist and was created by the operation (removed again on roll-back when empty).</summary>
+        public bool CreatedOutput;
+
+        public static string PathIn(string folder) => Path.Combine(folder, FileName);
+
+        public void Save(string folder)
+        {
+            var json = new JObject
+            {
+                ["format"] = FormatName,
+                ["version"] = 1,
+                ["operation"] = Operation,
+                ["output"] = Output,
+                ["state"] = State,
+                ["aside"] = Aside,
+                ["createdOutput"] = CreatedOutput,
+                ["moves"] = new JArray(Moves.Select(m => new JObject { ["from"] = m.Key, ["to"] = m.Value })),
+                ["files"] = new JArray(Files.Cast<object>().ToArray()),
+            };
+            var temp = Path.Combine(folder, TempName);
+            var path = PathIn(folder);
+            FileOps.WriteText(temp, json.ToString(Formatting.Indented) + "\n");
+            if (File.Exists(path)) FileOps.DeleteFile(path);
+            FileOps.MoveFile(temp, path);
+        }
+
+        /// <summary>Removes the record (the operation is complete).</summary>
+        public static void Delete(string folder)
+        {
+            foreach (var name in new[] { TempName, FileName })
+            {
+                var path = Path.Combine(folder, name);
+                if (File.Exists(path)) FileOps.DeleteFile(path);
+            }
+        }
+
+        /// <summary>The record in <paramref name="folder"/>, or null when it has none or it is unreadable (never throws for a bad file).</summary>
+        public static OperationJournal Load(string folder)
+        {
+            foreach (var name in new[] { FileName, TempName })
+            {
+                var path = Path.Combine(folder, name);
+                if (!File.Exists(path)) continue;
+                try
+                {
+                    if (JToken.Parse(FileOps.ReadText(path)) is JObject o && (string)o["format"] == FormatName) return FromJson(o);
+                }
+                catch (JsonException) { }
+                catch (System.ArgumentException) { }
+                catch (System.FormatException) { }
+                catch (System.InvalidCastException) { }
+                catch (IOException) { }
+                catch (System.UnauthorizedAccessException) { }
+            }
+            return null;
+        }
+
+        static OperationJournal FromJson(JObject o)
+        {
+            var journal = new OperationJournal
+            {
+                Operation = (string)o["operation"],
+                Output = (string)o["output"],
+                State = (string)o["state"] ?? Writing,
+                Aside = (string)o["aside"],
+                CreatedOutput = o["createdOutput"]?.Type == JTokenType.Boolean && (bool)o["createdOutput"],
+            };
+            if (o["moves"] is JArray moves)
+                foreach (var m in moves.OfType<JObject>())
+                    if ((string)m["from"] != null && (string)m["to"] != null)
+                        journal.Moves.Add(new KeyValuePair<string, string>((string)m["from"], (string)m["to"]));
+            if (o["files"] is JArray files)
+                journal.Files.AddRange(files.Where(f => f.Type == JTokenType.String).Select(f => (string)f));
+            return journal;
+        }
+    }
+}

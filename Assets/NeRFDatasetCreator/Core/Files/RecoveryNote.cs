@@ -1,0 +1,23 @@
+namespace NerfDatasetCreator
+{
+    /// <summary>What <see cref="Recovery"/> did about one interrupted operation: finished it, or rolled it back (or could not), in a sentence.</summary>
+    public sealed class RecoveryNote
+    {
+        public RecoveryNote(string operation, bool finished, string text)
+        {
+            Operation = operation;
+            Finished = finished;
+            Text = text;
+        }
+
+        /// <summary>"write" (plan, capture), "merge" or "convert".</summary>
+        public string Operation { get; }
+
+        /// <summary>True when the interrupted operation is now complete and in place.</summary>
+        public bool Finished { get; }
+
+        public string Text { get; }
+
+        public override string ToString() => Text;
+    }
+}

@@ -1,0 +1,97 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Files written into an output folder that may already hold other files (convert writes <c>transforms.json</c>
+    /// into the dataset itself): each goes first into a working folder inside the output
+    /// (<c>.convert.partial-&lt;stamp&gt;~</c>), and <see cref="Commit"/> moves them into place — renames within one
+    /// file system — once all are complete. The journal lists them, so a run killed while writing is rolled back and
+    /// one killed while moving is finished by the next run on the same output (<see cref="Recovery"/>).
+    /// Nothing is ever overwritten.
+    /// </summary>
+    public sealed class StagedOutput
+    {
+        readonly OperationJournal _journal;
+        readonly List<string> _files = new List<string>();
+
+        StagedOutput(string output, string working, OperationJournal journal)
+        {
+            Output = output;
+            Working = working;
+            _journal = journal;
+        }
+
+        public string Output { get; }
+        public string Working { get; }
+
+        /// <summary>True once <see cref="Commit"/> has started moving files (a failure then is finished by the next run, not undone).</summary>
+        public bool Placing { get; private set; }
+
+        public static StagedOutput Begin(string output, string operation, DateTime? now = null)
+        {
+            output = Path.GetFullPath(output).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
+            var created = !Directory.Exists(output);
+            FileOps.CreateDirectory(output);
+            var working = WorkingFolders.NewConvert(output, now ?? DateTime.UtcNow);
+            var journal = new OperationJournal { Operation = operation, Output = output, CreatedOutput = created };
+            FileOps.CreateDirectory(working);
+            journal.Save(working);
+            return new StagedOutput(output, working, journal);
+        }
+
+        /// <summary>Writes a new text file that will be at <paramref name="finalPath"/> (inside the output).</summary>
+        public void WriteNewText(string finalPath, string text) => FileOps.WriteNewText(Stage(finalPath), text);
+
+        /// <summary>Writes a new binary file that will be at <paramref name="finalPath"/> (inside the output).</summary>
+        public void WriteNewBytes(string finalPath, byte[] bytes) => FileOps.WriteNewBytes(Stage(finalPath), bytes);
+
+        /// <summary>Copies <paramref name="from"/> to what will be <paramref name="finalPath"/>.</summary>
+        public void Copy(string from, string finalPath) => FileOps.CopyFile(from, Stage(finalPath));
+
+        string Stage(string finalPath)
+        {
+            var relative = Path.GetRelativePath(Output, Path.GetFullPath(finalPath));
+            if (relative.StartsWith("..", StringComparison.Ordinal) || Path.IsPathRooted(relative))
+                throw new ArgumentException(finalPath + " is not inside " + Output + ".", nameof(finalPath));
+            var staged = Path.Combine(Working, relative);
+            FileOps.CreateDirectory(Path.GetDirectoryName(staged));
+            _files.Add(relative.Replace(Path.DirectorySeparatorChar, '/'));
+            return staged;
+        }
+
+        /// <summary>Moves every file into place (none may exist there: never overwritten) and removes the working folder.</summary>
+        public void Commit()
+        {
+            _journal.Files.AddRange(_files);
+            _journal.State = OperationJournal.Committing;
+            _journal.Save(Working);
+            Placing = true;
+            foreach (var file in _files)
+            {
+                var to = Path.Combine(Output, file.Replace('/', Path.DirectorySeparatorChar));
+                if (File.Exists(to) || Directory.Exists(to)) throw new IOException(to + " appeared while convert was writing; convert never overwrites. The remaining files are in " + Working + ".");
+                FileOps.CreateDirectory(Path.GetDirectoryName(to));
+                FileOps.MoveFile(Path.Combine(Working, file.Replace('/', Path.DirectorySeparatorChar)), to);
+            }
+            FileOps.DeleteDirectory(Working);
+        }
+
+        /// <summary>Undoes an operation that failed before <see cref="Commit"/>: the working folder goes, and the output if this created it and it is empty.</summary>
+        public void Abandon()
+        {
+            try
+            {
+                if (Directory.Exists(Working)) FileOps.DeleteDirectory(Working);
+                if (_journal.CreatedOutput && Directory.Exists(Output) && !Directory.EnumerateFileSystemEntries(Output).Any()) FileOps.DeleteDirectory(Output);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                // Left with its journal: the next run on this output rolls it back.
+            }
+        }
+    }
+}

@@ -1,0 +1,123 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// The names of the working folders the multi-step operations keep until they are complete, and where to find
+    /// those of an output: <c>&lt;name&gt;.partial-&lt;stamp&gt;~</c> (plan, capture) and <c>&lt;name&gt;.replaced-&lt;id&gt;~</c>
+    /// (the dataset a replace moves aside) beside the output, <c>.&lt;name&gt;.merging-&lt;id&gt;</c> beside it (merge),
+    /// and <c>.convert.partial-&lt;stamp&gt;~</c> inside it (convert). The '~' keeps Unity from importing them.
+    /// </summary>
+    public static class WorkingFolders
+    {
+        public const string PartialMarker = ".partial-";
+        public const string ReplacedMarker = ".replaced-";
+        public const string MergingMarker = ".merging-";
+        public const string ConvertPrefix = ".convert" + PartialMarker;
+
+        /// <summary>The longest suffix any working folder adds to an output's name (<c>.partial-yyyyMMdd-HHmmss-xxxxxxxx~</c>).</summary>
+        public const int LongestSuffix = 35;
+
+        public static string NewPartial(string output, DateTime now) =>
+            output + PartialMarker + Stamp(now) + "~";
+
+        public static string NewReplaced(string output) => output + ReplacedMarker + Id() + "~";
+
+        public static string NewMerging(string output) =>
+            Path.Combine(Path.GetDirectoryName(output) ?? ".", "." + Path.GetFileName(output) + MergingMarker + Id());
+
+        public static string NewConvert(string output, DateTime now) => Path.Combine(output, ConvertPrefix + Stamp(now) + "~");
+
+        static string Stamp(DateTime now) => now.ToString("yyyyMMdd-HHmmss", CultureInfo.InvariantCulture) + "-" + Id();
+
+        static string Id() => Guid.NewGuid().ToString("N").Substring(0, 8); // hex digits: culture-independent
+
+        /// <summary>What kind of working folder <paramref name="name"/> is, or null for any other name.</summary>
+        public static string KindOf(string name)
+        {
+            if (name.StartsWith(ConvertPrefix, StringComparison.Ordinal) && name.EndsWith("~", StringComparison.Ordinal)) return "convert";
+            if (name.IndexOf(PartialMarker, StringComparison.Ordinal) > 0 && name.EndsWith("~", StringComparison.Ordinal)) return "write";
+            if (name.IndexOf(ReplacedMarker, StringComparison.Ordinal) > 0 && name.EndsWith("~", StringComparison.Ordinal)) return "replaced";
+            if (name.StartsWith(".", StringComparison.Ordinal) && name.IndexOf(MergingMarker, StringComparison.Ordinal) > 1) return "merge";
+            return null;
+        }
+
+        /// <summary>The output a working folder's name belongs to (its journal, when readable, says the same).</summary>
+        public static string OutputOf(string workingFolder)
+        {
+            var name = Path.GetFileName(workingFolder);
+            var parent = Path.GetDirectoryName(workingFolder) ?? ".";
+            switch (KindOf(name))
+            {
+                case "convert": return parent;
+                case "write": return Path.Combine(parent, name.Substring(0, name.LastIndexOf(PartialMarker, StringComparison.Ordinal)));
+                case "replaced": return Path.Combine(parent, name.Substring(0, name.LastIndexOf(ReplacedMarker, StringComparison.Ordinal)));
+                case "merge": return Path.Combine(parent, name.Substring(1, name.LastIndexOf(MergingMarker, StringComparison.Ordinal) - 1));
+                default: return null;
+            }
+        }
+
+        /// <summary>Every working folder of <paramref name="output"/> (absolute): beside it and, for convert, inside it.</summary>
+        public static IReadOnlyList<string> Of(string output)
+        {
+            var found = new List<string>();
+            var parent = Path.GetDirectoryName(output);
+            if (parent != null && Directory.Exists(parent))
+                foreach (var dir in Directory.EnumerateDirectories(parent))
+                    if (KindOf(Path.GetFileName(dir)) != null && KindOf(Path.GetFileName(dir)) != "convert" && SamePath(OutputOf(dir), output))
+                        found.Add(dir);
+            if (Directory.Exists(output))
+                foreach (var dir in Directory.EnumerateDirectories(output))
+                    if (KindOf(Path.GetFileName(dir)) == "convert") found.Add(dir);
+            found.Sort(StringComparer.Ordinal);
+            return found;
+        }
+
+        /// <summary>Files and bytes under <paramref name="folder"/> (0, 0 when it cannot be read).</summary>
+        public static (int files, long bytes) SizeOf(string folder)
+        {
+            int files = 0;
+            long bytes = 0;
+            try
+            {
+                foreach (var file in new DirectoryInfo(folder).EnumerateFiles("*", SearchOption.AllDirectories))
+                {
+                    files++;
+                    bytes += file.Length;
+                }
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException) { }
+            return (files, bytes);
+        }
+
+        /// <summary>"3 files, 1.2 MB".</summary>
+        public static string DescribeSize(string folder)
+        {
+            var (files, bytes) = SizeOf(folder);
+            return files.ToString(CultureInfo.InvariantCulture) + (files == 1 ? " file, " : " files, ") + FormatBytes(bytes);
+        }
+
+        public static string FormatBytes(long bytes)
+        {
+            if (bytes < 1000) return bytes.ToString(CultureInfo.InvariantCulture) + " B";
+            string[] units = { "kB", "MB", "GB", "TB" };
+            double value = bytes;
+            var unit = -1;
+            do
+            {
+                value /= 1000;
+                unit++;
+            } while (value >= 1000 && unit < units.Length - 1);
+            return value.ToString(value < 10 ? "0.0" : "0", CultureInfo.InvariantCulture) + " " + units[unit];
+        }
+
+        public static bool SamePath(string a, string b) =>
+            a != null && b != null && string.Equals(Trim(Path.GetFullPath(a)), Trim(Path.GetFullPath(b)), StringComparison.Ordinal);
+
+        static string Trim(string p) => p.TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
+    }
+}

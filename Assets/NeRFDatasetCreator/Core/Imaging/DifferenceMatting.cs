@@ -1,0 +1,151 @@
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// The colour image from two renders of the same view, one over a black clear (K) and one over a white clear (W):
+    /// per-pixel alpha and straight colour, k×k box-filtered in linear light, as 8-bit sRGB RGBA, top row first.
+    /// <para>
+    /// Why it works for every kind of content: whatever a shader does — opaque, alpha-clipped, two-sided, blended glass,
+    /// particles, sprites, lines, terrain — the GPU composites it over the clear colour B as out = F + T·B, where F is
+    /// what the content adds and T how much of B still shows through (per channel). Over black out = F, over white
+    /// out = F + T, so T = W − K and F = K, in the space the GPU blends in (linear light in a Linear project, gamma
+    /// space in a Gamma one). Alpha is 1 − T: the coverage of what the colour pass shows, anti-aliased by the
+    /// supersampling, with no help from the lit shader's alpha or a separate mask pass.
+    /// </para>
+    /// <para>
+    /// One alpha for three channels: T differs per channel only for tinted transmission (coloured glass drawn with a
+    /// multiplicative blend). A straight-alpha PNG has one alpha, so the solve takes the least-squares fit over the two
+    /// backgrounds: alpha = 1 − mean(T) and premultiplied colour (K + W − (1 − alpha))/2, the mean of what black and white
+    /// say. For ordinary blending (one alpha for all channels) this is exact; for tinted glass the error is split evenly
+    /// between dark and light backgrounds. The mean, not the max, because the max of three noisy estimates is biased
+    /// upwards (empty pixels would get alpha > 0) while the mean is unbiased and a third as noisy. Light added without
+    /// covering anything (additive particles, glows: K = F, W = 1 + F) has alpha 0 and cannot be stored in a
+    /// straight-alpha pixel on its own; over covered content it is kept in the colour.
+    /// </para>
+    /// </summary>
+    public static class DifferenceMatting
+    {
+        /// <summary>
+        /// Writes OutputWidth×OutputHeight×4 bytes (R G B A) into <paramref name="rgba"/> from
+        /// <see cref="RawFrame.ColorOverBlack"/> and <see cref="RawFrame.ColorOverWhite"/>. Transparent background (the
+        /// default): alpha = round(255·mean alpha), colour = Σ premultiplied / Σ alpha in linear light, clamped to [0, 1],
+        /// sRGB-encoded; alpha 0 gives (0,0,0,0). Solid background B: each sample is composited exactly, per channel,
+        /// as K + T·B — what rendering over B would have given, tinted glass included — averaged in linear light, alpha 255.
+        /// </summary>
+        public static void Resolve(RawFrame frame, byte[] rgba, Background background = default)
+        {
+            var problems = frame.Validate();
+            if (frame.ColorOverBlack == null && frame.ColorOverWhite == null)
+                problems.Add(new ValidationProblem("frame.ColorOverBlack", "null", "is required: difference matting reads the colour pass over black and over white.",
+                    "Read back both colour renders into frame.ColorOverBlack and frame.ColorOverWhite."));
+            if (problems.Count > 0) throw new InvalidParameterException(problems);
+            int ow = frame.OutputWidth, oh = frame.OutputHeight;
+            RawFrame.RequireOutput("rgba", rgba, (long)ow * oh * 4, "bytes (4 per output pixel)");
+
+            int k = frame.Supersampling, width = frame.Width;
+            float inverseSamples = 1f / (k * k);
+            ushort[] black = frame.ColorOverBlack, white = frame.ColorOverWhite;
+            float[] half = HalfFloat.Lookup;
+            bool gamma = frame.ColorIsGammaEncoded;
+            // The solid background in the space the GPU blends in: T·B must be added where the blend happened.
+            float br = background.LinearR, bg = background.LinearG, bb = background.LinearB;
+            if (gamma) { br = ToGamma(br); bg = ToGamma(bg); bb = ToGamma(bb); }
+
+            for (int oy = 0; oy < oh; oy++)
+            {
+                int blockRow = RowOrder.SourceBlockRow(oy, oh, k);
+                int o = oy * ow * 4;
+                for (int ox = 0; ox < ow; ox++, o += 4)
+                {
+                    int first = blockRow * width + ox * k;
+                    float alphaSum = 0, r = 0, g = 0, b = 0;
+                    for (int dy = 0; dy < k; dy++)
+                    {
+                        int c = (first + dy * width) * 4;
+                        for (int dx = 0; dx < k; dx++, c += 4)
+                        {
+                            float kr = half[black[c]], kg = half[black[c + 1]], kb = half[black[c + 2]];
+                            float tr = half[white[c]] - kr, tg = half[white[c + 1]] - kg, tb = half[white[c + 2]] - kb;
+                            if (background.IsSolid)
+                            {
+                                r += Linear(kr + tr * br, gamma);
+                                g += Linear(kg + tg * bg, gamma);
+                                b += Linear(kb + tb * bb, gamma);
+                                continue;
+                            }
+                            float a = Clamp01(1f - (tr + tg + tb) * (1f / 3f));
+                            if (a <= 0) continue; // nothing covers this sample: it adds neither alpha nor colour
+                            float t = 1f - a;
+                            // Least-squares premultiplied colour: the mean of the over-black (K) and over-white (W − T) estimates.
+                            float pr = (kr + kr + tr - t) * 0.5f, pg = (kg + kg + tg - t) * 0.5f, pb = (kb + kb + tb - t) * 0.5f;
+                            if (gamma)
+                            {
+                                // Blended in gamma space: un-premultiply there, then weight the linear straight colour by alpha.
+                                float inverse = 1f / a;
+                                pr = a * Linear(Clamp01(pr * inverse), true);
+                                pg = a * Linear(Clamp01(pg * inverse), true);
+                                pb = a * Linear(Clamp01(pb * inverse), true);
+                            }
+                            alphaSum += a;
+                            r += pr;
+                            g += pg;
+                            b += pb;
+                        }
+                    }
+
+                    if (background.IsSolid)
+                    {
+                        rgba[o] = Srgb.Encode(r * inverseSamples);
+                        rgba[o + 1] = Srgb.Encode(g * inverseSamples);
+                        rgba[o + 2] = Srgb.Encode(b * inverseSamples);
+                        rgba[o + 3] = 255;
+                        continue;
+                    }
+                    // round(255·mean alpha), halves up.
+                    int alpha = (int)(alphaSum * inverseSamples * 255f + 0.5f);
+                    if (alpha <= 0)
+                    {
+                        rgba[o] = rgba[o + 1] = rgba[o + 2] = rgba[o + 3] = 0;
+                        continue;
+                    }
+                    float unpremultiply = 1f / alphaSum;
+                    rgba[o] = Srgb.Encode(r * unpremultiply);
+                    rgba[o + 1] = Srgb.Encode(g * unpremultiply);
+                    rgba[o + 2] = Srgb.Encode(b * unpremultiply);
+                    rgba[o + 3] = alpha > 255 ? (byte)255 : (byte)alpha;
+                }
+            }
+        }
+
+        // NaN (a broken shader) becomes 0 rather than poisoning the sums.
+        static float Clamp01(float v) => v > 1 ? 1 : v > 0 ? v : 0;
+
+        static float Linear(float value, bool gamma) => gamma ? GammaToLinear(value) : value;
+
+        const int GammaSegments = 4096;
+        static readonly float[] GammaTable = BuildGammaTable();
+
+        static float[] BuildGammaTable()
+        {
+            var table = new float[GammaSegments + 2];
+            for (int i = 0; i <= GammaSegments; i++) table[i] = (float)Srgb.DecodeExact(i / (double)GammaSegments);
+            table[GammaSegments + 1] = table[GammaSegments];
+            return table;
+        }
+
+        /// <summary>
+        /// The sRGB decode of a gamma-space value, clamped to [0, 1], by linear interpolation in a 4097-entry table
+        /// (error below 3e-8: the curve's second derivative is under 3 and the step 1/4096).
+        /// </summary>
+        internal static float GammaToLinear(float value)
+        {
+            if (!(value > 0)) return 0;
+            if (value >= 1) return 1;
+            float x = value * GammaSegments;
+            int i = (int)x;
+            float f = x - i;
+            return GammaTable[i] + (GammaTable[i + 1] - GammaTable[i]) * f;
+        }
+
+        static float ToGamma(float linear) => (float)Srgb.EncodeExact(linear);
+    }
+}

@@ -1,0 +1,84 @@
+using System;
+using System.Collections.Generic;
+using Newtonsoft.Json;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// The config-file form of <see cref="TimeSettings"/>, the <c>"time"</c> object of a settings file
+    /// (Documentation~/dynamic-capture.md). Written only for a dynamic capture, so static configs keep their shape.
+    /// </summary>
+    public static class TimeSettingsJson
+    {
+        public const string Key = "time";
+
+        public static void WriteObject(JsonWriter w, TimeSettings t)
+        {
+            w.WriteStartObject();
+            w.WritePropertyName("mode"); w.WriteValue(TimeModes.IsDefined(t.Mode) ? TimeModes.Name(t.Mode) : ((int)t.Mode).ToString(System.Globalization.CultureInfo.InvariantCulture));
+            w.WritePropertyName("sources");
+            w.WriteStartArray();
+            foreach (var name in TimeSourceNames.NamesOf(t.Sources)) w.WriteValue(name);
+            w.WriteEndArray();
+            Number(w, "start", t.StartSeconds);
+            if (t.EndAtClipLength)
+            {
+                w.WritePropertyName("end");
+                w.WriteValue("clip");
+            }
+            else Number(w, "end", t.EndSeconds);
+            w.WritePropertyName("steps"); w.WriteValue(t.Steps);
+            Number(w, "fps", t.Fps);
+            w.WriteEndObject();
+        }
+
+        static void Number(JsonWriter w, string name, double value)
+        {
+            w.WritePropertyName(name);
+            // As DatasetSettingsJson: NaN is written as a string so the file stays JSON and validation reports it.
+            if (double.IsNaN(value) || double.IsInfinity(value)) w.WriteValue(value.ToString(System.Globalization.CultureInfo.InvariantCulture));
+            else JsonNumbers.Write(w, value);
+        }
+
+        internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, TimeSettings t)
+        {
+            reader.Object(token, path, new Dictionary<string, Action<JToken, string>>
+            {
+                ["mode"] = (v, p) =>
+                {
+                    if (!TimeModes.TryParse(reader.String(v, p), out var mode))
+                        throw reader.Error(v, p, "must be one of " + TimeModes.NameList() + ".");
+                    t.Mode = mode;
+                },
+                ["sources"] = (v, p) =>
+                {
+                    if (v.Type != JTokenType.Array) throw reader.Error(v, p, "must be a list such as [\"timeline\", \"animator\"].");
+                    var sources = TimeSources.None;
+                    var index = 0;
+                    foreach (var item in (JArray)v)
+                    {
+                        var itemPath = p + "[" + index++ + "]";
+                        if (!TimeSourceNames.TryParse(reader.String(item, itemPath), out var source))
+                            throw reader.Error(item, itemPath, "is not a time source; use one of " + TimeSourceNames.NameList() + ".");
+                        sources |= source;
+                    }
+                    t.Sources = sources;
+                },
+                ["start"] = (v, p) => t.StartSeconds = reader.Double(v, p, "a number of seconds"),
+                ["end"] = (v, p) =>
+                {
+                    if (v.Type == JTokenType.String && string.Equals((string)v, "clip", StringComparison.OrdinalIgnoreCase))
+                        t.EndAtClipLength = true;
+                    else
+                    {
+                        t.EndAtClipLength = false;
+                        t.EndSeconds = reader.Double(v, p, "a number of seconds or \"clip\"");
+                    }
+                },
+                ["steps"] = (v, p) => t.Steps = reader.Int(v, p),
+                ["fps"] = (v, p) => t.Fps = reader.Double(v, p),
+            });
+        }
+    }
+}

@@ -1,0 +1,135 @@
+using System;
+using System.Collections.Generic;
+using NerfDatasetCreator.Editor.Capture;
+using UnityEditor;
+using UnityEditor.SceneManagement;
+using UnityEngine;
+using UnityEngine.SceneManagement;
+using Object = UnityEngine.Object;
+
+namespace NerfDatasetCreator.Editor
+{
+    /// <summary>
+    /// What a dynamic capture needs to know about its target before planning: the clip length (for
+    /// <c>time.end: "clip"</c>), the bounds over the whole time range (they decide the automatic distance, the
+    /// normalisation and aabb_scale), and what will not follow time (physics, scripts). Bounds are measured on a
+    /// temporary copy in a preview scene, posed by <see cref="ContentClock"/>; the user's objects are only read.
+    /// </summary>
+    static class TimeMeasurement
+    {
+        /// <summary>Times sampled for the bounds: every step up to this many, else this many spread over the range.</summary>
+        public const int MaxBoundsSamples = 16;
+
+        public static PlanTarget Measure(GameObject target, DatasetSettings settings, PlanTarget still, List<ValidationProblem> warnings)
+        {
+            var time = settings.Time;
+            if (target == null || time == null || !time.Enabled) return still;
+            Warn(target, warnings);
+            var clip = ContentClock.ClipLength(target, time.Sources);
+            TimeRange range;
+            try
+            {
+                range = TimePlanning.Resolve(settings, clip);
+            }
+            catch (InvalidParameterException)
+            {
+                return new PlanTarget(still.Centre, still.BoundingRadius, clip); // CapturePlan.Check reports it
+            }
+            if (range == null) return new PlanTarget(still.Centre, still.BoundingRadius, clip);
+            var bounds = BoundsOverRange(target, range, settings.Seed);
+            if (!bounds.HasValue) return new PlanTarget(still.Centre, still.BoundingRadius, clip);
+            var b = bounds.Value;
+            return new PlanTarget(new Vector3d(b.center.x, b.center.y, b.center.z), b.extents.magnitude, clip);
+        }
+
+        static void Warn(GameObject target, List<ValidationProblem> warnings)
+        {
+            var scripts = 0;
+            foreach (var behaviour in target.GetComponentsInChildren<MonoBehaviour>(true))
+                if (behaviour != null && behaviour.enabled) scripts++;
+            if (scripts > 0)
+                warnings.Add(new ValidationProblem("time.sources", scripts + " enabled script" + (scripts == 1 ? "" : "s"),
+                    "on the target will not run during the capture: motion made in Update or by coroutines is not captured, only Timeline, Animator, Animation and particle time.",
+                    "Drive the motion with an Animator, a Timeline or an animation clip (record it with the Animation window if needed)."));
+            // By type name: Rigidbody lives in the physics module, which this package does not require.
+            var bodies = 0;
+            foreach (var component in target.GetComponentsInChildren<Component>(true))
+            {
+                var name = component == null ? null : component.GetType().FullName;
+                if (name == "UnityEngine.Rigidbody" || name == "UnityEngine.Rigidbody2D") bodies++;
+            }
+            if (bodies > 0)
+                warnings.Add(new ValidationProblem("time.sources", bodies + " Rigidbod" + (bodies == 1 ? "y" : "ies"),
+                    "on the target: physics is not simulated during the capture, so bodies stay where they are at every time step.",
+                    "Bake the simulation into an animation clip (e.g. with the Recorder's Animation Clip recorder) and capture that."));
+        }
+
+        static Bounds? BoundsOverRange(GameObject target, TimeRange range, long seed)
+        {
+            var scene = EditorSceneManager.NewPreviewScene();
+            GameObject holder = null;
+            try
+            {
+                // As CaptureStage: copied under an inactive holder, scripts off before it is activated.
+                holder = EditorUtility.CreateGameObjectWithHideFlags("NeRF Dataset Creator bounds", HideFlags.HideAndDontSave);
+                SceneManager.MoveGameObjectToScene(holder, scene);
+                holder.SetActive(false);
+                var copy = Object.Instantiate(target, holder.transform, true);
+                foreach (var t in copy.GetComponentsInChildren<Transform>(true)) t.gameObject.hideFlags = HideFlags.HideAndDontSave;
+                foreach (var script in copy.GetComponentsInChildren<MonoBehaviour>(true))
+                    if (script != null) script.enabled = false;
+                copy.SetActive(true);
+                holder.SetActive(true);
+                var clock = new ContentClock(range.Sources, seed);
+                var samples = Math.Min(range.Steps, MaxBoundsSamples);
+                Bounds? all = null;
+                for (var i = 0; i < samples; i++)
+                {
+                    clock.Show(copy, range.SecondsAt(i / (double)(samples - 1)));
+                    var posed = PosedBounds(copy);
+                    if (posed.HasValue) all = Union(all, posed.Value);
+                }
+                return all;
+            }
+            finally
+            {
+                EditorSceneManager.ClosePreviewScene(scene);
+                if (holder != null) Object.DestroyImmediate(holder);
+            }
+        }
+
+        /// <summary>
+        /// TargetMeshes.WorldBounds, but skinned meshes measured in their current pose (BakeMesh, with the renderer's
+        /// scale, then its position and rotation) rather than their bind pose.
+        /// </summary>
+        static Bounds? PosedBounds(GameObject root)
+        {
+            Bounds? all = null;
+            var baked = new Mesh { hideFlags = HideFlags.HideAndDontSave };
+            try
+            {
+                foreach (var pair in TargetMeshes.Of(root))
+                {
+                    if (!(pair.Key is SkinnedMeshRenderer skinned)) continue;
+                    skinned.BakeMesh(baked, true);
+                    var toWorld = Matrix4x4.TRS(skinned.transform.position, skinned.transform.rotation, Vector3.one);
+                    foreach (var v in baked.vertices) all = Union(all, new Bounds(toWorld.MultiplyPoint3x4(v), Vector3.zero));
+                }
+            }
+            finally
+            {
+                Object.DestroyImmediate(baked);
+            }
+            var rigid = TargetMeshes.WorldBounds(root, includeSkinned: false);
+            return rigid.HasValue ? Union(all, rigid.Value) : all;
+        }
+
+        static Bounds? Union(Bounds? a, Bounds b)
+        {
+            if (!a.HasValue) return b;
+            var grown = a.Value;
+            grown.Encapsulate(b);
+            return grown;
+        }
+    }
+}

@@ -1,0 +1,167 @@
+using System;
+using System.IO;
+using System.Linq;
+using NerfDatasetCreator.Editor.Capture;
+using NerfDatasetCreator.Editor.Tests.Capture;
+using Newtonsoft.Json.Linq;
+using NUnit.Framework;
+using UnityEngine;
+using UnityEngine.SceneManagement;
+
+namespace NerfDatasetCreator.Editor.Tests
+{
+    /// <summary>
+    /// Dynamic capture on a cube moved and turned by a legacy clip: x goes 0 → 2 and the yaw 0 → 90° over 2 s.
+    /// ContentClock poses the copies by time alone; captures show the cube where the clip puts it, never move the
+    /// user's cube, and repeat byte for byte.
+    /// </summary>
+    [TestFixture]
+    public class DynamicCaptureTests
+    {
+        Scene _scene;
+        GameObject _cube;
+        AnimationClip _clip;
+        string _project;
+
+        [SetUp]
+        public void SetUp()
+        {
+            _scene = TestScene.Open();
+            _cube = GameObject.CreatePrimitive(PrimitiveType.Cube);
+            _cube.name = "Animated cube";
+            var light = new GameObject("Animated cube light", typeof(Light));
+            light.GetComponent<Light>().type = LightType.Directional;
+            _clip = new AnimationClip { name = "slide", legacy = true };
+            _clip.SetCurve("", typeof(Transform), "localPosition.x", AnimationCurve.Linear(0, 0, 2, 2));
+            _clip.SetCurve("", typeof(Transform), "localEulerAnglesRaw.y", AnimationCurve.Linear(0, 0, 2, 90));
+            var animation = _cube.AddComponent<Animation>();
+            animation.AddClip(_clip, _clip.name);
+            animation.clip = _clip;
+            _project = Path.Combine(Path.GetTempPath(), "nerf-dynamic-capture-" + Guid.NewGuid().ToString("N"));
+            Directory.CreateDirectory(_project);
+        }
+
+        [TearDown]
+        public void TearDown()
+        {
+            TestScene.Close(_scene);
+            if (_clip != null) UnityEngine.Object.DestroyImmediate(_clip);
+            if (_project != null && Directory.Exists(_project)) Directory.Delete(_project, true);
+        }
+
+        [Test]
+        public void TheClockPosesTheClipAtTheGivenTimeInAnyOrder()
+        {
+            var clock = new ContentClock(TimeSources.All, 0);
+            clock.Show(_cube, 1.5);
+            clock.Show(_cube, 0.5);
+            Assert.That(_cube.transform.localPosition.x, Is.EqualTo(0.5f).Within(1e-5f));
+            Assert.That(_cube.transform.localEulerAngles.y, Is.EqualTo(22.5f).Within(1e-3f));
+            Assert.That(ContentClock.ClipLength(_cube, TimeSources.All), Is.EqualTo(2.0).Within(1e-6));
+            Assert.That(ContentClock.ClipLength(_cube, TimeSources.Timeline), Is.EqualTo(0.0));
+        }
+
+        static DatasetSettings Settings()
+        {
+            var s = new DatasetSettings { Name = "cube", Width = 64, Height = 64, Supersampling = 1, Distance = 8, Seed = 1 };
+            s.Loaders = TargetLoaders.GaussianSplatting;
+            s.Train.Count = 5;
+            s.Val.Count = 0;
+            s.Test.Count = 3;
+            s.Time.Mode = TimeMode.Monocular;
+            s.Time.EndAtClipLength = true;
+            return s;
+        }
+
+        [Test]
+        public void PreparingMeasuresTheClipAndTheBoundsOverTheWholeRange()
+        {
+            var prepared = DatasetCapture.Prepare(Settings(), _cube, _project);
+            Assert.That(prepared.Problems.Select(p => p.ToString()), Is.Empty);
+            Assert.That(prepared.Plan.Time.EndSeconds, Is.EqualTo(2.0).Within(1e-6));
+            // The cube sweeps x from 0 to 2: the union of its boxes is centred near x = 1, far from the still cube's 0.
+            Assert.That(prepared.Plan.Target.Centre.X, Is.EqualTo(1.0).Within(0.1));
+            Assert.That(_cube.transform.position, Is.EqualTo(Vector3.zero), "measuring never moves the user's cube");
+        }
+
+        [Test]
+        [Category("GPU")]
+        public void EachImageShowsTheCubeWhereTheClipPutsItAtThatTime()
+        {
+            TestScene.RequireRendering();
+            var before = SceneSnapshot.Take();
+            var prepared = DatasetCapture.Prepare(Settings(), _cube, _project);
+            var result = DatasetCapture.RunBlocking(prepared, new SilentProgress());
+            Assert.That(result.Succeeded, Is.True, result.Message);
+            Assert.That(DatasetValidator.Validate(result.DatasetFolder).Problems.Select(p => p.ToString()), Is.Empty);
+
+            var camera = new GameObject("Expected projection", typeof(Camera)).GetComponent<Camera>();
+            var texture = new Texture2D(2, 2);
+            try
+            {
+                camera.fieldOfView = (float)prepared.Plan.Settings.Camera.VerticalFovDegrees;
+                camera.aspect = 1;
+                foreach (var view in prepared.Plan.Views)
+                {
+                    // Where the clip puts the cube's centre at this view's time, seen from this view's camera.
+                    var seconds = view.Time.Value.Seconds;
+                    var centre = new Vector3((float)seconds, 0, 0);
+                    camera.transform.SetPositionAndRotation(
+                        new Vector3((float)view.Pose.Position.X, (float)view.Pose.Position.Y, (float)view.Pose.Position.Z),
+                        new Quaternion((float)view.Pose.Rotation.X, (float)view.Pose.Rotation.Y, (float)view.Pose.Rotation.Z, (float)view.Pose.Rotation.W));
+                    var expected = camera.WorldToViewportPoint(centre) * 64;
+
+                    Assert.That(texture.LoadImage(File.ReadAllBytes(Path.Combine(result.DatasetFolder, view.Files[0].RelativePath))), Is.True);
+                    double sx = 0, sy = 0, sa = 0;
+                    for (var y = 0; y < 64; y++)
+                        for (var x = 0; x < 64; x++)
+                        {
+                            var a = texture.GetPixel(x, y).a;
+                            sx += a * (x + 0.5);
+                            sy += a * (y + 0.5);
+                            sa += a;
+                        }
+                    Assert.That(sa, Is.GreaterThan(0), view.FramePath);
+                    // A cube's silhouette centroid is not exactly its projected centre under perspective: 1 px at 64 px.
+                    Assert.That(sx / sa, Is.EqualTo(expected.x).Within(1.0), view.FramePath + " x at " + seconds + " s");
+                    Assert.That(sy / sa, Is.EqualTo(expected.y).Within(1.0), view.FramePath + " y at " + seconds + " s");
+                }
+            }
+            finally
+            {
+                UnityEngine.Object.DestroyImmediate(camera.gameObject);
+                UnityEngine.Object.DestroyImmediate(texture);
+            }
+            Assert.That(_cube.transform.position, Is.EqualTo(Vector3.zero));
+            Assert.That(SceneSnapshot.Lines(SceneSnapshot.Take()), Is.EqualTo(SceneSnapshot.Lines(before)), "the user's scene is unchanged");
+            Assert.That(_scene.isDirty, Is.False, "and not dirty");
+        }
+
+        [Test]
+        [Category("GPU")]
+        public void TwoRunsWriteIdenticalImages()
+        {
+            TestScene.RequireRendering();
+            var first = Settings();
+            first.Name = "first";
+            var second = Settings();
+            second.Name = "second";
+            var a = DatasetCapture.RunBlocking(DatasetCapture.Prepare(first, _cube, _project), new SilentProgress());
+            var b = DatasetCapture.RunBlocking(DatasetCapture.Prepare(second, _cube, _project), new SilentProgress());
+            Assert.That(a.Succeeded && b.Succeeded, Is.True, a.Message + " " + b.Message);
+            var files = Directory.GetFiles(a.DatasetFolder, "*.png", SearchOption.AllDirectories).Select(f => f.Substring(a.DatasetFolder.Length)).OrderBy(f => f).ToList();
+            Assert.That(files, Has.Count.EqualTo(8));
+            foreach (var file in files)
+                Assert.That(File.ReadAllBytes(b.DatasetFolder + file), Is.EqualTo(File.ReadAllBytes(a.DatasetFolder + file)), file);
+            var times = JObject.Parse(File.ReadAllText(Path.Combine(a.DatasetFolder, "transforms_test.json")))["frames"].Select(f => (double)f["time"]);
+            Assert.That(times, Is.EqualTo(new[] { 0, 0.375, 0.875 }));
+        }
+
+        sealed class SilentProgress : ICaptureProgress
+        {
+            public void Report(ThroughputMeter meter) { }
+            public bool CancelRequested => false;
+            public void Close() { }
+        }
+    }
+}

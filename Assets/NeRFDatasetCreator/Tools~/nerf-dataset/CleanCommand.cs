@@ -1,0 +1,32 @@
+using System.IO;
+
+namespace NerfDatasetCreator.Tool
+{
+    /// <summary>
+    /// <c>nerf-dataset clean &lt;folder&gt; [--dry-run]</c>: finishes or rolls back the interrupted operations on the
+    /// outputs in the folder, then removes the leftover working folders (<see cref="LeftoverCleaner"/>), printing each
+    /// with its size. Exit 0 (also when there was nothing to clean), 1 when a leftover had to be kept.
+    /// </summary>
+    public static class CleanCommand
+    {
+        public static int Run(string folder, bool dryRun, TextWriter stdout, TextWriter stderr)
+        {
+            LeftoverCleaner.Result result;
+            try
+            {
+                result = LeftoverCleaner.Clean(folder, dryRun);
+            }
+            catch (InvalidParameterException e)
+            {
+                foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
+                return Program.UsageError;
+            }
+            foreach (var note in result.Recovered) stdout.WriteLine(note);
+            foreach (var removed in result.Removed) stdout.WriteLine((dryRun ? "would remove " : "removed ") + removed);
+            foreach (var kept in result.Kept) stderr.WriteLine("kept " + kept);
+            if (result.Recovered.Count + result.Removed.Count + result.Kept.Count == 0)
+                stdout.WriteLine("nothing to clean in " + Path.GetFullPath(folder) + ": no working folder is left over.");
+            return result.Kept.Count > 0 ? Program.Failure : Program.Success;
+        }
+    }
+}
