@@ -62,34 +62,39 @@ namespace NerfDatasetCreator.Benchmarks
             var mask = new byte[pixels];
             var depth = new ushort[pixels];
             var normals = new byte[pixels * 3];
-            var colourCopy = new byte[colour.ColorSrgb.Length];
+            var blackCopy = new ushort[colour.ColorOverBlack.Length];
+            var whiteCopy = new ushort[colour.ColorOverWhite.Length];
             var maskCopy = new byte[colour.Mask.Length];
             var depthCopy = new float[data.Depth.Length];
             var normalCopy = new float[data.Normals.Length];
-            long inputBytes = colour.ColorSrgb.Length + colour.Mask.Length + 4L * data.Depth.Length + 4L * data.Normals.Length;
-            Console.WriteLine($"Post-processing one {OutputSize}×{OutputSize} view in the capture's layout: {colour.Width}×{colour.Height} RGBA8 + R8 mask, " +
+            long inputBytes = 2L * blackCopy.Length + 2L * whiteCopy.Length + colour.Mask.Length + 4L * data.Depth.Length + 4L * data.Normals.Length;
+            Console.WriteLine($"Post-processing one {OutputSize}×{OutputSize} view in the capture's layout: two {colour.Width}×{colour.Height} RGBA half renders (over black and white) + R8 mask, " +
                               $"{OutputSize}×{OutputSize} depth and RGBA float Unity-world normals ({inputBytes / 1e6:F1} MB); ms:");
             var t = Interleaved(
                 ("plain copy of the same input bytes", () =>
                 {
-                    Buffer.BlockCopy(colour.ColorSrgb, 0, colourCopy, 0, colourCopy.Length);
+                    Buffer.BlockCopy(colour.ColorOverBlack, 0, blackCopy, 0, blackCopy.Length * 2);
+                    Buffer.BlockCopy(colour.ColorOverWhite, 0, whiteCopy, 0, whiteCopy.Length * 2);
                     Buffer.BlockCopy(colour.Mask, 0, maskCopy, 0, maskCopy.Length);
                     Buffer.BlockCopy(data.Depth, 0, depthCopy, 0, depthCopy.Length * 4);
                     Buffer.BlockCopy(data.Normals, 0, normalCopy, 0, normalCopy.Length * 4);
                 }),
-                ("colour + straight alpha + mask image, one pass", () => StraightAlpha.Resolve(colour, rgba, Background.Transparent, mask)),
+                ("colour + alpha by difference matting", () => DifferenceMatting.Resolve(colour, rgba)),
+                ("mask image", () => MaskEncoding.Encode(colour, mask)),
                 ("depth, 16-bit millimetres", () => DepthEncoding.ToMillimetres(data, depth)),
                 ("normals, relabelled to the output world, 8-bit RGB", () => NormalEncoding.Encode(data, normals)),
                 ("all of the above", () =>
                 {
-                    StraightAlpha.Resolve(colour, rgba, Background.Transparent, mask);
+                    DifferenceMatting.Resolve(colour, rgba);
+                    MaskEncoding.Encode(colour, mask);
                     DepthEncoding.ToMillimetres(data, depth);
                     NormalEncoding.Encode(data, normals);
                 }));
-            Console.WriteLine($"  ratio all / copy: {t[4] / t[0]:F2}×");
+            Console.WriteLine($"  ratio all / copy: {t[5] / t[0]:F2}×");
             Record("post.copy.ms", t[0]);
-            Record("post.all.ms", t[4]);
-            Record("post.ratio", t[4] / t[0]);
+            Record("post.colour.ms", t[1]);
+            Record("post.all.ms", t[5]);
+            Record("post.ratio", t[5] / t[0]);
             Console.WriteLine();
         }
 
@@ -106,9 +111,10 @@ namespace NerfDatasetCreator.Benchmarks
                 var (colour, data) = SyntheticFrame.CaptureLayout(OutputSize, Supersampling);
                 images.Rgba = new byte[pixels * 4];
                 images.Mask = new byte[pixels];
-                StraightAlpha.Resolve(colour, images.Rgba, Background.Transparent, images.Mask);
+                DifferenceMatting.Resolve(colour, images.Rgba);
+                MaskEncoding.Encode(colour, images.Mask);
                 images.RgbaClean = new byte[pixels * 4];
-                StraightAlpha.Resolve(SyntheticFrame.CaptureLayout(OutputSize, Supersampling, noise: 0).Colour, images.RgbaClean);
+                DifferenceMatting.Resolve(SyntheticFrame.CaptureLayout(OutputSize, Supersampling, noise: 0).Colour, images.RgbaClean);
                 images.Depth = new ushort[pixels];
                 DepthEncoding.ToMillimetres(data, images.Depth);
                 images.Normals = new byte[pixels * 3];

@@ -30,6 +30,7 @@ def row(label, key, fmt, unit=""):
 print("| figure | .NET | Mono |")
 print("|---|---|---|")
 row("post-processing, capture layout: all steps (ms CPU)", "post.all.ms", "{:.2f}")
+row("of which colour + alpha by difference matting (ms CPU)", "post.colour.ms", "{:.2f}")
 row("plain copy of the same bytes (ms CPU)", "post.copy.ms", "{:.2f}")
 row("post-processing / copy", "post.ratio", "{:.2f}", "×")
 for image, label in [("rgba", "RGBA render with grain"), ("rgba-clean", "RGBA render without grain"), ("mask", "mask (gray 8)"),
