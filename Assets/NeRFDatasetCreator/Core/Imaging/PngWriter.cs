@@ -173,7 +173,9 @@ namespace NerfDatasetCreator
             return file;
         }
 
-        const long MaxHuffmanBytes = int.MaxValue - 1024;
+        // The filtered image is held whole, as ulong words, and the file is one array: 1 GiB of rows keeps both well
+        // inside an array's 2 GB (stored blocks add 5 bytes per 65 535). An 8192² RGBA image is 256 MiB.
+        const long MaxHuffmanBytes = 1L << 30;
 
         /// <summary>
         /// Copies each row into 64-bit words, filters it there (<see cref="PngWordFilter"/>; Paeth, asked for by name,
