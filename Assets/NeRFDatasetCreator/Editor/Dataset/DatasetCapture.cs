@@ -204,6 +204,10 @@ namespace NerfDatasetCreator.Editor
             var message = string.Format(CultureInfo.InvariantCulture,
                 "NeRF Dataset Creator: wrote {0} views to {1} in {2:0.0} s ({3:0.00} views/s).",
                 summary.Views, session.FinalFolder, summary.Seconds, summary.ViewsPerSecond);
+            if (files.WriteSeconds > 0)
+                message += string.Format(CultureInfo.InvariantCulture,
+                    " Writer threads were busy {0:0.0} s ({1:0.0} ms per view), {2:0} % of it in PNG encoding.",
+                    files.WriteSeconds, 1000 * files.WriteSeconds / Math.Max(1, files.ViewsWritten), 100 * files.PngEncodeSeconds / files.WriteSeconds);
             if (cloud != null && cloud.Count > 0)
                 message += string.Format(CultureInfo.InvariantCulture, " points3d.ply holds {0} surface points.", cloud.Count);
             if (files.ClampedDepthPixels > 0)
