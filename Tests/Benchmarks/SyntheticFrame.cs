@@ -8,6 +8,46 @@ namespace NerfDatasetCreator.Benchmarks
     /// </summary>
     static class SyntheticFrame
     {
+        /// <summary>
+        /// The same scene in the capture's own layout: colour rendered twice at k× the output size, over black and
+        /// over white, as half floats (difference matting, pixels.md §2) with a 1-byte (R8) mask; depth and Unity
+        /// world normals rendered at the output size (supersampling 1) — what DatasetViewWriter hands to Core.
+        /// </summary>
+        public static (RawFrame Colour, RawFrame Data) CaptureLayout(int outputSize, int k, double noise = 0.02)
+        {
+            var linear = Sphere(outputSize, k, linearFloatColour: true, noise: noise);
+            int samples = linear.Width * linear.Height;
+            var black = new ushort[samples * 4];
+            var white = new ushort[samples * 4];
+            var r8 = new byte[samples];
+            for (int i = 0; i < samples; i++)
+            {
+                bool covered = linear.Mask[4 * i] != 0;
+                r8[i] = linear.Mask[4 * i];
+                for (int c = 0; c < 3; c++)
+                {
+                    ushort h = Half(linear.ColorLinear[4 * i + c]);
+                    black[4 * i + c] = covered ? h : (ushort)0;
+                    white[4 * i + c] = covered ? h : (ushort)0x3C00; // 1.0: the white clear
+                }
+            }
+            var colour = new RawFrame(linear.Width, linear.Height, k) { ColorOverBlack = black, ColorOverWhite = white, Mask = r8, MaskBytesPerPixel = 1 };
+            var atOutput = Sphere(outputSize, 1, noise: noise);
+            var data = new RawFrame(outputSize, outputSize, 1) { Depth = atOutput.Depth, Normals = atOutput.Normals, NormalsInUnityWorld = true };
+            return (colour, data);
+        }
+
+        /// <summary>IEEE half bits of a value clamped to [0, 1], rounded to nearest (setup only, not timed).</summary>
+        static ushort Half(float value)
+        {
+            if (!(value > 0)) return 0;
+            if (value >= 1) return 0x3C00;
+            int bits = BitConverter.ToInt32(BitConverter.GetBytes(value), 0);
+            int exponent = ((bits >> 23) & 0xFF) - 127 + 15, mantissa = (bits & 0x7FFFFF) | 0x800000;
+            if (exponent <= 0) return (ushort)((mantissa + (1 << (13 - exponent))) >> (14 - exponent)); // subnormal
+            return (ushort)(((exponent << 10) | ((mantissa & 0x7FFFFF) >> 13)) + ((mantissa >> 12) & 1));
+        }
+
         public static RawFrame Sphere(int outputSize, int k, bool linearFloatColour = false, double noise = 0.02)
         {
             int size = outputSize * k;

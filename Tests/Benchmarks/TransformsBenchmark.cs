@@ -3,73 +3,84 @@ using System.Collections.Generic;
 using System.Diagnostics;
 using System.Globalization;
 using System.IO;
-using System.Linq;
 
 namespace NerfDatasetCreator.Benchmarks
 {
     /// <summary>
-    /// Plans 100 000 views and writes the dataset's JSON files (the three transforms files and dataset_config.json)
-    /// through the same write session a capture uses, into a temp folder deleted afterwards.
+    /// Plans the largest dataset the settings allow (3 × 100 000 views) and writes its JSON files (the three transforms
+    /// files, streamed, and dataset_config.json) through the same write session a capture uses, into a temp folder
+    /// deleted afterwards. Peak memory is the process's peak working set, meaningful when this runs alone
+    /// (--only plan), as run-all does.
     /// </summary>
     static class TransformsBenchmark
     {
-        // nerf_synthetic's proportions (100 / 100 / 200) scaled to 100 000 views, with its default formations.
-        const int Train = 25000;
-        const int Val = 25000;
-        const int Test = 50000;
-        const int Rounds = 5;
+        // Every split at its maximum (DatasetSettings.MaxViews), with the default formations.
+        const int Train = DatasetSettings.MaxViews;
+        const int Val = DatasetSettings.MaxViews;
+        const int Test = DatasetSettings.MaxViews;
+        const int Rounds = 3;
 
-        public static void Run()
+        public static void Run(Action<string, double> record)
         {
             var settings = new DatasetSettings { Name = "bench" };
             settings.Train.Count = Train;
             settings.Val.Count = Val;
             settings.Test.Count = Test;
             var root = Path.Combine(Path.GetTempPath(), "nerf-bench-" + Guid.NewGuid().ToString("N"));
-            Console.WriteLine($"Plan and write the transforms files for {Thousands(Train + Val + Test)} views (train {Thousands(Train)} semi-sphere, val {Thousands(Val)} random, test {Thousands(Test)} orbit),");
-            Console.WriteLine($"single thread, 1 warm-up + {Rounds} rounds, fastest and median in ms:");
+            Console.WriteLine($"Plan and write the JSON files for {Thousands(Train + Val + Test)} views (train {Thousands(Train)} semi-sphere, val {Thousands(Val)} random, test {Thousands(Test)} orbit),");
+            Console.WriteLine($"single thread, 1 warm-up + {Rounds} rounds, fastest in ms of wall time (and of this process's CPU time):");
             try
             {
-                var plan = new List<double>();
-                var text = new List<double>();
-                var write = new List<double>();
+                double plan = double.MaxValue, write = double.MaxValue, total = double.MaxValue, cpu = double.MaxValue;
+                var process = Process.GetCurrentProcess();
                 long bytes = 0;
-                var files = new List<(string Name, long Length)>();
+                int files = 0;
                 for (var round = 0; round <= Rounds; round++)
                 {
+                    // Each round starts clean, as a capture in a fresh editor would: the peak is one plan's, not two.
+                    GC.Collect();
+                    GC.WaitForPendingFinalizers();
+                    process.Refresh();
+                    var cpuStart = process.TotalProcessorTime;
                     var watch = Stopwatch.StartNew();
                     var built = CapturePlan.Build(settings, PlanTarget.AtOrigin);
                     var planMs = watch.Elapsed.TotalMilliseconds;
 
-                    // The same JSON text in memory only, to split the write below into serialisation and disk.
                     var provenance = new Provenance(DateTime.UtcNow, null, "benchmark", imagesRendered: false);
-                    watch.Restart();
-                    DatasetConfigWriter.Write(built, provenance);
-                    foreach (var split in DatasetSplits.All) BlenderTransformsWriter.Write(built, split);
-                    var textMs = watch.Elapsed.TotalMilliseconds;
-
-                    var folder = Path.Combine(root, "round-" + round);
+                    var folder = Path.Combine(root, "round-" + round.ToString(CultureInfo.InvariantCulture));
                     watch.Restart();
                     var session = DatasetWriteSession.Begin(folder, OverwritePolicy.Never);
                     DatasetMetadataFiles.Write(session, built, provenance);
                     session.Commit();
                     var writeMs = watch.Elapsed.TotalMilliseconds;
+                    process.Refresh();
+                    var cpuMs = (process.TotalProcessorTime - cpuStart).TotalMilliseconds;
 
-                    files = Directory.GetFiles(folder).Select(f => (Path.GetFileName(f), new FileInfo(f).Length)).OrderBy(f => f.Item1, StringComparer.Ordinal).ToList();
-                    bytes = files.Sum(f => f.Length);
+                    bytes = 0;
+                    files = 0;
+                    foreach (var file in Directory.GetFiles(folder))
+                    {
+                        bytes += new FileInfo(file).Length;
+                        files++;
+                    }
                     Directory.Delete(folder, true);
                     if (round == 0) continue;
-                    plan.Add(planMs);
-                    text.Add(textMs);
-                    write.Add(writeMs);
+                    plan = Math.Min(plan, planMs);
+                    write = Math.Min(write, writeMs);
+                    total = Math.Min(total, planMs + writeMs);
+                    cpu = Math.Min(cpu, cpuMs);
                 }
-                var total = plan.Zip(write, (p, w) => p + w).ToList();
-                Print("CapturePlan.Build (poses, c2w matrices, file names)", plan);
-                Print("JSON text + write + commit (DatasetMetadataFiles.Write)", write);
-                Print("  of which the JSON text alone, in memory", text);
-                Print("plan + write", total);
-                Console.WriteLine($"  written: {bytes / 1e6:F1} MB in {files.Count} files ({string.Join(", ", files.Select(f => f.Name + " " + Size(f.Length)))})");
-                Console.WriteLine($"  per view: {total.Min() * 1000 / (Train + Val + Test):F1} µs, {bytes / (double)(Train + Val + Test):F0} bytes; text + disk {bytes / 1e6 / (write.Min() / 1000):F0} MB/s");
+                long peak = Process.GetCurrentProcess().PeakWorkingSet64;
+                Console.WriteLine($"  CapturePlan.Build (poses, c2w matrices, file names)         {plan,8:F0}");
+                Console.WriteLine($"  JSON streamed to the working folder + commit                {write,8:F0}");
+                Console.WriteLine($"  plan + write                                                {total,8:F0}  ({cpu:F0} ms CPU)");
+                Console.WriteLine($"  written: {bytes / 1e6:F1} MB in {files} files; peak working set of this process: {peak / 1e6:F0} MB");
+                record("plan.build.ms", plan);
+                record("plan.write.ms", write);
+                record("plan.total.ms", total);
+                record("plan.cpu.ms", cpu);
+                record("plan.peak.mb", peak / 1e6);
+                record("plan.written.mb", bytes / 1e6);
             }
             finally
             {
@@ -79,13 +90,5 @@ namespace NerfDatasetCreator.Benchmarks
         }
 
         static string Thousands(int n) => n.ToString("N0", CultureInfo.InvariantCulture).Replace(",", " ");
-
-        static string Size(long bytes) => bytes >= 100000 ? (bytes / 1e6).ToString("F1", CultureInfo.InvariantCulture) + " MB" : (bytes / 1e3).ToString("F1", CultureInfo.InvariantCulture) + " KB";
-
-        static void Print(string name, List<double> times)
-        {
-            var sorted = times.OrderBy(t => t).ToList();
-            Console.WriteLine($"  {name,-58} {sorted[0],8:F1} {sorted[sorted.Count / 2],8:F1}");
-        }
     }
 }

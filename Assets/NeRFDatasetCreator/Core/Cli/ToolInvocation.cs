@@ -36,7 +36,7 @@ namespace NerfDatasetCreator
         /// <summary><c>clean --dry-run</c>: list the leftovers without changing anything.</summary>
         public bool DryRun { get; internal set; }
 
-        /// <summary><c>convert --to nerfstudio|colmap|ngp</c>.</summary>
+        /// <summary><c>convert --to nerfstudio|colmap|ngp|dynamic3dgs</c>.</summary>
         public ExportTarget? Target { get; internal set; }
 
         /// <summary><c>convert --to colmap --depths</c>: also write 3DGS's inverse-depth maps and depth_params.json.</summary>
@@ -51,7 +51,7 @@ namespace NerfDatasetCreator
             "  plan --config <settings.json> --out <dir>               the JSON files and a rig preview, no images\n" +
             "  validate <dir>                                          check a Blender-format dataset\n" +
             "  merge --out <dir> [--files copy|move] <shard-dir>...    join the folders of a sharded capture\n" +
-            "  convert <dir> --to nerfstudio|colmap|ngp [--out <dir>] [--depths]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps)\n" +
+            "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs [--out <dir>] [--depths]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; dynamic3dgs: multi-view dynamic captures)\n" +
             "  clean <dir> [--dry-run]                                 finish or roll back interrupted runs, remove their leftover folders\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
     }

@@ -9,7 +9,11 @@ namespace NerfDatasetCreator
         public static void Write(DatasetWriteSession session, CapturePlan plan, Provenance provenance, PointCloudRecord pointCloud = null)
         {
             foreach (var split in DatasetSplits.All)
-                session.WriteText(DatasetLayout.TransformsFileName(split), BlenderTransformsWriter.Write(plan, split));
+            {
+                // Streamed: the text of a large plan's file is never held in memory whole.
+                var s = split;
+                session.WriteText(DatasetLayout.TransformsFileName(split), text => BlenderTransformsWriter.Write(plan, s, text));
+            }
             session.WriteText(DatasetLayout.ConfigFileName, DatasetConfigWriter.Write(plan, provenance, pointCloud));
         }
     }

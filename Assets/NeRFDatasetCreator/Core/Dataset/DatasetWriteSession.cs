@@ -93,6 +93,14 @@ namespace NerfDatasetCreator
             FileOps.WriteText(path, text);
         }
 
+        /// <summary>Like <see cref="WriteText(string, string)"/>, with the text streamed by <paramref name="write"/>.</summary>
+        public void WriteText(string relativePath, Action<TextWriter> write)
+        {
+            var path = PathOf(relativePath);
+            FileOps.CreateDirectory(Path.GetDirectoryName(path));
+            FileOps.WriteText(path, write);
+        }
+
         /// <summary>
         /// Moves the complete dataset to its final name. Under <see cref="OverwritePolicy.Replace"/> an existing
         /// dataset there — only one this plugin provably wrote (<see cref="OwnDataset"/>) — is first moved aside and

@@ -6,10 +6,11 @@ using System.Linq;
 namespace NerfDatasetCreator
 {
     /// <summary>
-    /// <c>nerf-dataset convert &lt;dir&gt; --to nerfstudio|colmap|ngp</c>: turns any Blender-format dataset (nerf_synthetic
+    /// <c>nerf-dataset convert &lt;dir&gt; --to nerfstudio|colmap|ngp|dynamic3dgs</c>: turns any Blender-format dataset (nerf_synthetic
     /// included) into another loader's format without touching the source. Default output locations:
     /// nerfstudio → <c>&lt;dir&gt;/transforms.json</c>; ngp → <c>&lt;dir&gt;/ngp/transforms.json</c>; colmap →
-    /// <c>&lt;dir&gt;/colmap/</c> with <c>images/</c> (copies, flattened names) and <c>sparse/0/</c>. Nothing is ever
+    /// <c>&lt;dir&gt;/colmap/</c> with <c>images/</c> (copies, flattened names) and <c>sparse/0/</c>; dynamic3dgs →
+    /// <c>&lt;dir&gt;/dynamic3dgs/</c> (multi-view dynamic captures only). Nothing is ever
     /// overwritten: every destination is checked before the first byte is written, and the files are written into a
     /// working folder inside the output and moved into place only when all are complete (<see cref="StagedOutput"/>).
     /// </summary>
@@ -24,7 +25,7 @@ namespace NerfDatasetCreator
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
-            var time = TimeDatasetChecks.ConversionWarning(datasetDir);
+            var time = target == ExportTarget.Dynamic3dgs ? null : TimeDatasetChecks.ConversionWarning(datasetDir);
             if (time != null) warnings.Add(time);
             return Export(scene, target, outDir, null, null, warnings, depths);
         }
@@ -52,6 +53,7 @@ namespace NerfDatasetCreator
                     case ExportTarget.Nerfstudio: result = ToNerfstudio(scene, output, warnings, staged); break;
                     case ExportTarget.Ngp: result = ToNgp(scene, output, sceneRadius, warnings, staged); break;
                     case ExportTarget.Colmap: result = ToColmap(scene, output, points, warnings, depths, staged); break;
+                    case ExportTarget.Dynamic3dgs: result = Dynamic3DGaussiansExport.Write(scene, output, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 staged.Commit();
@@ -72,6 +74,7 @@ namespace NerfDatasetCreator
             {
                 case ExportTarget.Ngp: return Path.GetFullPath(Path.Combine(root, NgpWriter.FolderName));
                 case ExportTarget.Colmap: return Path.GetFullPath(Path.Combine(root, ColmapFolderName));
+                case ExportTarget.Dynamic3dgs: return Path.GetFullPath(Path.Combine(root, Dynamic3DGaussians.FolderName));
                 default: return Path.GetFullPath(root);
             }
         }

@@ -9,11 +9,14 @@ namespace NerfDatasetCreator
         Nerfstudio,
         Colmap,
         Ngp,
+
+        /// <summary>Dynamic 3D Gaussians' per-time-step multi-view layout (<see cref="Dynamic3DGaussiansExport"/>).</summary>
+        Dynamic3dgs,
     }
 
     public static class ExportTargets
     {
-        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp" };
+        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs" };
 
         public static string Name(ExportTarget target) => Names[(int)target];
 

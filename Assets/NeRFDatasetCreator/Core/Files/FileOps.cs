@@ -30,6 +30,16 @@ namespace NerfDatasetCreator
             File.WriteAllText(path, text, new UTF8Encoding(false));
         }
 
+        /// <summary>
+        /// Writes UTF-8 text without a byte-order mark, creating or truncating the file, as <paramref name="write"/>
+        /// produces it: for files too large to build as one string (invariant culture, "\n" line ends).
+        /// </summary>
+        public static void WriteText(string path, Action<TextWriter> write)
+        {
+            Step("write", path);
+            using (var file = JsonNumbers.CreateFile(path)) write(file);
+        }
+
         /// <summary>Writes UTF-8 text into a file that must not exist yet (never overwrites).</summary>
         public static void WriteNewText(string path, string text) => WriteNewBytes(path, new UTF8Encoding(false).GetBytes(text));
 

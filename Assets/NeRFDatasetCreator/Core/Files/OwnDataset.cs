@@ -18,10 +18,23 @@ namespace NerfDatasetCreator
         static readonly Regex ViewFile = new Regex(@"^r_\d+(\.png|_depth_0000\.png|_depth_0000\.exr|_normal_0000\.png|_normal_0000\.exr|_mask_0000\.png)$", RegexOptions.CultureInvariant);
         static readonly string[] RootFiles =
         {
-            DatasetLayout.ConfigFileName, DatasetLayout.RigPreviewFileName, TargetPointCloud.FileName, ShardManifest.FileName,
+            DatasetLayout.ConfigFileName, DatasetLayout.RigPreviewFileName, RigPreviewPicture.FileName, TargetPointCloud.FileName, ShardManifest.FileName,
             NerfstudioWriter.FileName, OperationJournal.FileName, OperationJournal.FileName + ".tmp",
         };
-        static readonly string[] ColmapSparseFiles = { "cameras.txt", "images.txt", "points3D.txt", "points3D.ply", "test.txt" };
+        static readonly string[] ColmapSparseFiles = { "cameras.txt", "images.txt", "points3D.txt", "points3D.ply", "test.txt", GaussianSplattingDepths.ParamsFileName };
+
+        // The export folders convert writes into a dataset by default, as trees of the names each may hold.
+        static readonly Tree SplitFolder = new Tree(f => ViewFile.IsMatch(f));
+        static readonly Tree Png = new Tree(f => f.EndsWith(".png", StringComparison.OrdinalIgnoreCase));
+        static readonly Tree CameraPaths = new Tree(f => DatasetSplits.Names.Any(s => s + ".json" == f));
+        static readonly Tree Ngp = new Tree(f => f == NgpWriter.FileName).With(CameraPathFiles.FolderName, CameraPaths);
+        static readonly Tree Colmap = new Tree(f => false)
+            .With(ColmapTextWriter.ImagesFolder, Png)
+            .With("sparse", new Tree(f => false).With("0", new Tree(f => ColmapSparseFiles.Contains(f))))
+            .With(GaussianSplattingDepths.FolderName, Png);
+        static readonly Tree Dynamic3dgs = new Tree(f => f == Dynamic3DGaussians.TrainMetaFileName || f == Dynamic3DGaussians.TestMetaFileName || f == Dynamic3DGaussians.PointCloudFileName)
+            .With(Dynamic3DGaussians.ImagesFolder, new Tree(f => false, Png))
+            .With(Dynamic3DGaussians.SegmentationFolder, new Tree(f => false, Png));
 
         /// <summary>Null when <paramref name="folder"/> is provably this plugin's dataset and nothing else; otherwise why not.</summary>
         public static string WhyNotOurs(string folder)
@@ -61,9 +74,11 @@ namespace NerfDatasetCreator
                     return Stray(entry) + " was not written by this plugin";
                 }
                 string inside;
-                if (DatasetSplits.Names.Contains(name)) inside = Only(entry.FullName, f => ViewFile.IsMatch(f));
-                else if (name == NgpWriter.FolderName) inside = Only(entry.FullName, f => f == NgpWriter.FileName);
-                else if (name == DatasetConverter.ColmapFolderName) inside = Colmap(entry.FullName);
+                if (DatasetSplits.Names.Contains(name)) inside = SplitFolder.Foreign(entry.FullName);
+                else if (name == NgpWriter.FolderName) inside = Ngp.Foreign(entry.FullName);
+                else if (name == DatasetConverter.ColmapFolderName) inside = Colmap.Foreign(entry.FullName);
+                else if (name == Dynamic3DGaussians.FolderName) inside = Dynamic3dgs.Foreign(entry.FullName);
+                else if (name == CameraPathFiles.FolderName) inside = CameraPaths.Foreign(entry.FullName);
                 else if (WorkingFolders.KindOf(name) == "convert") continue;
                 else return Stray(entry) + " was not written by this plugin";
                 if (inside != null) return inside;
@@ -71,43 +86,46 @@ namespace NerfDatasetCreator
             return null;
         }
 
-        static string Colmap(string folder)
-        {
-            foreach (var entry in new DirectoryInfo(folder).EnumerateFileSystemInfos())
-            {
-                if (IsLink(entry)) return Stray(entry) + " is a symbolic link";
-                if (entry is DirectoryInfo && entry.Name == ColmapTextWriter.ImagesFolder)
-                {
-                    var bad = Only(entry.FullName, f => f.EndsWith(".png", StringComparison.OrdinalIgnoreCase));
-                    if (bad != null) return bad;
-                }
-                else if (entry is DirectoryInfo && entry.Name == "sparse")
-                {
-                    foreach (var sub in new DirectoryInfo(entry.FullName).EnumerateFileSystemInfos())
-                    {
-                        if (IsLink(sub)) return Stray(sub) + " is a symbolic link";
-                        if (!(sub is DirectoryInfo) || sub.Name != "0") return Stray(sub) + " was not written by this plugin";
-                        var bad = Only(sub.FullName, f => ColmapSparseFiles.Contains(f));
-                        if (bad != null) return bad;
-                    }
-                }
-                else return Stray(entry) + " was not written by this plugin";
-            }
-            return null;
-        }
-
-        /// <summary>Null when <paramref name="folder"/> holds only files whose names <paramref name="accept"/> accepts.</summary>
-        static string Only(string folder, Func<string, bool> accept)
-        {
-            foreach (var entry in new DirectoryInfo(folder).EnumerateFileSystemInfos())
-            {
-                if (IsLink(entry)) return Stray(entry) + " is a symbolic link";
-                if (!(entry is FileInfo) || !accept(entry.Name)) return Stray(entry) + " was not written by this plugin";
-            }
-            return null;
-        }
-
         static string Stray(FileSystemInfo entry) => entry.FullName;
+
+        /// <summary>The names a folder may hold: files <c>accept</c>s, the named sub-folders, and any other sub-folder if <c>anyFolder</c> is given.</summary>
+        sealed class Tree
+        {
+            readonly Func<string, bool> _files;
+            readonly Tree _anyFolder;
+            readonly System.Collections.Generic.Dictionary<string, Tree> _folders = new System.Collections.Generic.Dictionary<string, Tree>(StringComparer.Ordinal);
+
+            public Tree(Func<string, bool> files, Tree anyFolder = null)
+            {
+                _files = files;
+                _anyFolder = anyFolder;
+            }
+
+            public Tree With(string folder, Tree tree)
+            {
+                _folders[folder] = tree;
+                return this;
+            }
+
+            /// <summary>The first entry under <paramref name="folder"/> this tree does not allow, described; null when there is none.</summary>
+            public string Foreign(string folder)
+            {
+                foreach (var entry in new DirectoryInfo(folder).EnumerateFileSystemInfos())
+                {
+                    if (IsLink(entry)) return Stray(entry) + " is a symbolic link";
+                    if (entry is FileInfo)
+                    {
+                        if (!_files(entry.Name)) return Stray(entry) + " was not written by this plugin";
+                        continue;
+                    }
+                    var sub = _folders.TryGetValue(entry.Name, out var named) ? named : _anyFolder;
+                    if (sub == null) return Stray(entry) + " was not written by this plugin";
+                    var inside = sub.Foreign(entry.FullName);
+                    if (inside != null) return inside;
+                }
+                return null;
+            }
+        }
 
         /// <summary>A symbolic link (or Windows junction): .NET and Mono both report it as a reparse point.</summary>
         public static bool IsLink(FileSystemInfo entry) => (entry.Attributes & FileAttributes.ReparsePoint) != 0;

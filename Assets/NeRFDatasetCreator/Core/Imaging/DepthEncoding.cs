@@ -25,6 +25,7 @@ namespace NerfDatasetCreator
 
             int k = frame.Supersampling, width = frame.Width, clamped = 0;
             float[] depth = frame.Depth;
+            if (k == 1) return MillimetresOneSamplePerPixel(depth, ow, oh, scale, millimetres);
             int[] order = PointSampling.Order(k, width);
 
             for (int oy = 0; oy < oh; oy++)
@@ -34,6 +35,37 @@ namespace NerfDatasetCreator
                 for (int ox = 0; ox < ow; ox++)
                 {
                     float z = Scaled(Sample(depth, blockRow * width + ox * k, order), scale);
+                    ushort mm;
+                    if (!(z > 0)) mm = 0;
+                    else
+                    {
+                        float scaled = z * 1000f + 0.5f;
+                        if (scaled >= 65536f) { mm = 65535; clamped++; }
+                        else if (scaled < 2f) mm = 1;
+                        else mm = (ushort)scaled;
+                    }
+                    millimetres[o + ox] = mm;
+                }
+            }
+            return clamped;
+        }
+
+        /// <summary>
+        /// Supersampling 1 (the capture renders its data passes at the output size): each pixel is its own sample, so
+        /// the loop needs no sampling order and no helper calls, which Mono would not inline. Same values as above.
+        /// </summary>
+        static int MillimetresOneSamplePerPixel(float[] depth, int ow, int oh, double scale, ushort[] millimetres)
+        {
+            int clamped = 0;
+            bool unscaled = scale == 1;
+            for (int oy = 0; oy < oh; oy++)
+            {
+                int d = (oh - 1 - oy) * ow; // source rows are bottom-up
+                int o = oy * ow;
+                for (int ox = 0; ox < ow; ox++)
+                {
+                    float z = depth[d + ox];
+                    if (!unscaled) z = (float)(z * scale);
                     ushort mm;
                     if (!(z > 0)) mm = 0;
                     else

@@ -17,6 +17,13 @@ namespace NerfDatasetCreator
 
             int stride = frame.NormalFloatsPerPixel;
             float[] normals = frame.Normals;
+            // Offsets of the output's y and z in a source pixel: swapped for Unity world normals.
+            int yAt = frame.NormalsInUnityWorld ? 2 : 1, zAt = 3 - yAt;
+            if (frame.Supersampling == 1)
+            {
+                EncodeOneSamplePerPixel(normals, stride, yAt, zAt, ow, oh, rgb);
+                return;
+            }
             int[] order = PointSampling.Order(frame.Supersampling, frame.Width);
 
             for (int oy = 0; oy < oh; oy++)
@@ -33,8 +40,35 @@ namespace NerfDatasetCreator
                         continue;
                     }
                     rgb[o] = Component(normals[hit]);
-                    rgb[o + 1] = Component(normals[hit + 1]);
-                    rgb[o + 2] = Component(normals[hit + 2]);
+                    rgb[o + 1] = Component(normals[hit + yAt]);
+                    rgb[o + 2] = Component(normals[hit + zAt]);
+                }
+            }
+        }
+
+        /// <summary>
+        /// Supersampling 1 — the capture renders its data passes at the output size — so each pixel is its own
+        /// sample: one flat loop with <see cref="Component"/> written out, because Mono does not inline it.
+        /// </summary>
+        static void EncodeOneSamplePerPixel(float[] normals, int stride, int yAt, int zAt, int ow, int oh, byte[] rgb)
+        {
+            for (int oy = 0; oy < oh; oy++)
+            {
+                int n = (oh - 1 - oy) * ow * stride; // source rows are bottom-up
+                int o = oy * ow * 3;
+                for (int ox = 0; ox < ow; ox++, n += stride, o += 3)
+                {
+                    float x = normals[n], y = normals[n + yAt], z = normals[n + zAt];
+                    if (!(x * x + y * y + z * z > 0.25f))
+                    {
+                        rgb[o] = 0;
+                        rgb[o + 1] = 0;
+                        rgb[o + 2] = 0;
+                        continue;
+                    }
+                    rgb[o] = !(x > -1) ? (byte)0 : x >= 1 ? (byte)255 : (byte)(x * 127.5f + 128f);
+                    rgb[o + 1] = !(y > -1) ? (byte)0 : y >= 1 ? (byte)255 : (byte)(y * 127.5f + 128f);
+                    rgb[o + 2] = !(z > -1) ? (byte)0 : z >= 1 ? (byte)255 : (byte)(z * 127.5f + 128f);
                 }
             }
         }
@@ -51,6 +85,7 @@ namespace NerfDatasetCreator
             RawFrame.RequireOutput("rgba", rgba, (long)ow * oh * 4, "floats (4 per output pixel)");
 
             float[] normals = frame.Normals;
+            int yAt = frame.NormalsInUnityWorld ? 2 : 1, zAt = 3 - yAt;
             int[] order = PointSampling.Order(frame.Supersampling, frame.Width);
             for (int oy = 0; oy < oh; oy++)
             {
@@ -59,8 +94,8 @@ namespace NerfDatasetCreator
                 {
                     int hit = Hit(frame, order, ox, oy);
                     rgba[o] = hit < 0 ? 0 : normals[hit];
-                    rgba[o + 1] = hit < 0 ? 0 : normals[hit + 1];
-                    rgba[o + 2] = hit < 0 ? 0 : normals[hit + 2];
+                    rgba[o + 1] = hit < 0 ? 0 : normals[hit + yAt];
+                    rgba[o + 2] = hit < 0 ? 0 : normals[hit + zAt];
                     rgba[o + 3] = hit < 0 ? 0 : 1;
                 }
             }

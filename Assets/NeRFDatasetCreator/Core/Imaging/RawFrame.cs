@@ -79,10 +79,18 @@ namespace NerfDatasetCreator
         public float[] Depth { get; set; }
 
         /// <summary>
-        /// Unit normals, <see cref="NormalFloatsPerPixel"/> floats per pixel (x y z [w]), already in the frame the
-        /// dataset uses (see pixels.md); (0,0,0) (the clear value) where no surface was hit.
+        /// Unit normals, <see cref="NormalFloatsPerPixel"/> floats per pixel (x y z [w]), in the frame the dataset
+        /// uses (see pixels.md) — or in Unity's world frame when <see cref="NormalsInUnityWorld"/> is set; (0,0,0)
+        /// (the clear value) where no surface was hit.
         /// </summary>
         public float[] Normals { get; set; }
+
+        /// <summary>
+        /// The normals are Unity world normals, as the normal pass renders them: the encoders relabel them into the
+        /// output world (<see cref="BlenderConvention.FromUnity"/>: y and z swap) as they read them, which gives the
+        /// same bits as <see cref="NormalFrames.ToOutputWorld"/> first, without a pass of its own.
+        /// </summary>
+        public bool NormalsInUnityWorld { get; set; }
 
         /// <summary>4 for an <c>R16G16B16A16_SFloat</c>/<c>R32G32B32A32_SFloat</c> normal texture (w ignored), 3 for packed xyz.</summary>
         public int NormalFloatsPerPixel { get; set; } = 4;

@@ -71,5 +71,12 @@ namespace NerfDatasetCreator
 
         /// <summary>The decode table itself, for hot loops that index it directly (do not modify).</summary>
         internal static float[] DecodeLookup => DecodeTable;
+
+        /// <summary>The tables behind <see cref="EncodeUnit"/>, for hot loops that write it out (do not modify).</summary>
+        internal static byte[] EncodeBucketLookup => EncodeTable;
+
+        internal static float[] EncodeThresholdLookup => Threshold;
+
+        internal const float EncodeBucketScale = EncodeBuckets;
     }
 }

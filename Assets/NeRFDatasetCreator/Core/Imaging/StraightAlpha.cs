@@ -28,6 +28,11 @@ namespace NerfDatasetCreator
             int k = frame.Supersampling, kk = k * k, width = frame.Width, stride = frame.MaskBytesPerPixel;
             byte[] coverageBytes = frame.Mask;
             byte[] colorBytes = frame.ColorSrgb;
+            if (k == 2 && colorBytes != null && !background.IsSolid)
+            {
+                ResolveTwoByTwo(coverageBytes, stride, colorBytes, width, ow, oh, rgba, mask);
+                return;
+            }
             float[] colorFloats = frame.ColorLinear;
             float[] decode = Srgb.DecodeLookup;
             int fullCoverage = 255 * kk;
@@ -128,6 +133,69 @@ namespace NerfDatasetCreator
                     rgba[o + 1] = Srgb.EncodeUnit(g);
                     rgba[o + 2] = Srgb.EncodeUnit(b);
                     rgba[o + 3] = alpha;
+                }
+            }
+        }
+
+        /// <summary>
+        /// The capture's usual case — 2×2 supersampling, sRGB bytes, transparent background — as one loop with every
+        /// helper written out (Mono inlines none of them) and a fast path for fully covered pixels, which need no
+        /// clamp and have alpha 255. The same bytes as the general loop above.
+        /// </summary>
+        static void ResolveTwoByTwo(byte[] coverageBytes, int stride, byte[] colorBytes, int width, int ow, int oh, byte[] rgba, byte[] mask)
+        {
+            float[] decode = Srgb.DecodeLookup;
+            byte[] bucket = Srgb.EncodeBucketLookup;
+            float[] threshold = Srgb.EncodeThresholdLookup;
+            const float buckets = Srgb.EncodeBucketScale;
+            int maskUp = width * stride, colourUp = width * 4;
+            for (int oy = 0; oy < oh; oy++)
+            {
+                int blockRow = RowOrder.SourceBlockRow(oy, oh, 2);
+                int o = oy * ow * 4;
+                int m = blockRow * width * stride;
+                int c = blockRow * width * 4;
+                int p = oy * ow;
+                for (int ox = 0; ox < ow; ox++, o += 4, m += 2 * stride, c += 8, p++)
+                {
+                    int coverage = coverageBytes[m] + coverageBytes[m + stride] + coverageBytes[m + maskUp] + coverageBytes[m + maskUp + stride];
+                    int alpha = (2 * coverage + 4) >> 3; // MaskEncoding.AlphaOf(coverage, 4)
+                    if (mask != null) mask[p] = (byte)alpha;
+                    if (alpha == 0)
+                    {
+                        rgba[o] = 0;
+                        rgba[o + 1] = 0;
+                        rgba[o + 2] = 0;
+                        rgba[o + 3] = 0;
+                        continue;
+                    }
+                    float r = decode[colorBytes[c]] + decode[colorBytes[c + 4]] + decode[colorBytes[c + colourUp]] + decode[colorBytes[c + colourUp + 4]];
+                    float g = decode[colorBytes[c + 1]] + decode[colorBytes[c + 5]] + decode[colorBytes[c + colourUp + 1]] + decode[colorBytes[c + colourUp + 5]];
+                    float b = decode[colorBytes[c + 2]] + decode[colorBytes[c + 6]] + decode[colorBytes[c + colourUp + 2]] + decode[colorBytes[c + colourUp + 6]];
+                    if (coverage == 4 * 255)
+                    {
+                        // The mean of four values in [0, 1] stays in [0, 1]: no clamp.
+                        r *= 0.25f;
+                        g *= 0.25f;
+                        b *= 0.25f;
+                    }
+                    else
+                    {
+                        float unpremultiply = 255f / coverage;
+                        r *= unpremultiply;
+                        g *= unpremultiply;
+                        b *= unpremultiply;
+                        r = r > 1 ? 1 : r > 0 ? r : 0;
+                        g = g > 1 ? 1 : g > 0 ? g : 0;
+                        b = b > 1 ? 1 : b > 0 ? b : 0;
+                    }
+                    int e = bucket[(int)(r * buckets)];
+                    rgba[o] = r >= threshold[e + 1] ? (byte)(e + 1) : (byte)e;
+                    e = bucket[(int)(g * buckets)];
+                    rgba[o + 1] = g >= threshold[e + 1] ? (byte)(e + 1) : (byte)e;
+                    e = bucket[(int)(b * buckets)];
+                    rgba[o + 2] = b >= threshold[e + 1] ? (byte)(e + 1) : (byte)e;
+                    rgba[o + 3] = (byte)alpha;
                 }
             }
         }

@@ -152,7 +152,9 @@ namespace NerfDatasetCreator
                 foreach (var slot in TimePlanning.Slots(time, split, poses.Count))
                 {
                     var pose = poses[slot.Camera];
-                    var files = kinds.Select(k => new PlannedFile(k, DatasetLayout.RelativePath(split, slot.Index, k))).ToList();
+                    // A plain loop: this runs once per view, up to 300 000 times.
+                    var files = new PlannedFile[kinds.Count];
+                    for (var k = 0; k < files.Length; k++) files[k] = new PlannedFile(kinds[k], DatasetLayout.RelativePath(split, slot.Index, kinds[k]));
                     var matrix = cameras != null
                         ? PosePlacement.ToOutput(cameras.Cameras[slot.Camera].FileCameraToWorld, cameras.Poses.Normalisation, normalisation)
                         : normalisation.ApplyToCameraToWorld(BlenderConvention.CameraToWorld(pose));

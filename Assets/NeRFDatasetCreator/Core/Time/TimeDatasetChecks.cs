@@ -41,7 +41,7 @@ namespace NerfDatasetCreator
             if (frames == null || !frames.Any(f => f[TimeKeys.Time] != null)) return null;
             return new ValidationProblem("time", "per-frame time keys",
                 "are dropped: nerfstudio's, instant-ngp's and COLMAP's formats hold no time, so the export is a static dataset of moving content.",
-                "Train dynamic methods on the Blender layout itself (D-NeRF, 4DGaussians, ns-train … dnerf-data), see Documentation~/dynamic-capture.md.");
+                "Train dynamic methods on the Blender layout itself (D-NeRF, 4DGaussians, ns-train … dnerf-data), or convert a multi-view capture with --to dynamic3dgs; see Documentation~/dynamic-capture.md.");
         }
 
         sealed class Record

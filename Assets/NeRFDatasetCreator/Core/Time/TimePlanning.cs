@@ -64,8 +64,8 @@ namespace NerfDatasetCreator
                 if (!(clipLength > 0) || double.IsInfinity(clipLength))
                 {
                     problems.Add(new ValidationProblem("time.end", "\"clip\"",
-                        "needs the length of the target's clips or Timeline, which is unknown here (the headless tool does not open the scene).",
-                        "Give the end time in seconds, or plan in Unity."));
+                        "needs the length of the target's clips or Timeline, which is unknown: the target has no clip, Timeline or particle system with a length among time.sources, or this is the headless tool, which does not open the scene.",
+                        "Give the end time in seconds, or animate the target (in Unity)."));
                     return null;
                 }
                 end = clipLength;

@@ -29,6 +29,12 @@ namespace NerfDatasetCreator
         public const string Normalisation = "normalisation";
         public const string NormalisedTargetRadius = "normalisedTargetRadius";
         public const string PointCloudPoints = "pointCloudPoints";
+        public const string TimeModeField = "time.mode";
+        public const string TimeSourcesField = "time.sources";
+        public const string TimeStart = "time.start";
+        public const string TimeEnd = "time.end";
+        public const string TimeSteps = "time.steps";
+        public const string TimeFps = "time.fps";
 
         /// <summary>"splits.train.count" and the like.</summary>
         public static string SplitField(DatasetSplit split, string key) => "splits." + DatasetSplits.Name(split) + "." + key;
@@ -45,6 +51,7 @@ namespace NerfDatasetCreator
                 Target, Scene, Distance, AutoDistanceMargin, VerticalFov, NearClip, FarClip, CopyFromCamera, Width, Height,
                 Supersampling, Background, Seed, Name, OutputFolder, Overwrite, Loaders,
                 Normalisation, NormalisedTargetRadius, PointCloudPoints,
+                TimeModeField, TimeSourcesField, TimeStart, TimeEnd, TimeSteps, TimeFps,
             };
             foreach (var split in DatasetSplits.All)
             {
@@ -87,6 +94,7 @@ namespace NerfDatasetCreator
             if (Covers("camera", field) || Covers(Width, field) || Covers(Height, field) || Covers(Supersampling, field) || Covers(Background, field))
                 return WindowStep.Camera;
             if (Covers(Seed, field)) return WindowStep.Rig;
+            if (Covers("time", field)) return WindowStep.Time;
             if (Covers(Name, field) || Covers(OutputFolder, field) || Covers(Overwrite, field) || Covers(Loaders, field))
                 return WindowStep.OutputFolder;
             if (Covers(Normalisation, field) || Covers(NormalisedTargetRadius, field) || Covers(PointCloudPoints, field))

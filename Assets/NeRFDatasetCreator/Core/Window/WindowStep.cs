@@ -6,8 +6,9 @@ namespace NerfDatasetCreator
         Target = 1,
         Camera = 2,
         Rig = 3,
-        Outputs = 4,
-        OutputFolder = 5,
-        Create = 6,
+        Time = 4,
+        Outputs = 5,
+        OutputFolder = 6,
+        Create = 7,
     }
 }

@@ -112,6 +112,20 @@ namespace NerfDatasetCreator
             }
         }
 
+        /// <summary>The Time step's mode popup, in <see cref="TimeMode"/> order.</summary>
+        public static readonly string[] TimeModeLabels =
+        {
+            "Static (no time)",
+            "Monocular (D-NeRF: one train view per step)",
+            "Multi-view (every camera at every step)",
+        };
+
+        /// <summary>The Time step's source mask, bit i = option i as <see cref="TimeSources"/> numbers them.</summary>
+        public static readonly string[] TimeSourceLabels = { "Timeline (PlayableDirector)", "Animator", "Animation (legacy)", "Particles" };
+
+        /// <summary>How the Time step counts steps: a number of steps, or a frame rate.</summary>
+        public static readonly string[] TimeStepsLabels = { "Number of steps", "Frame rate" };
+
         /// <summary>The depth and normal popups' entries, in <see cref="ExtraOutput"/> order.</summary>
         public static readonly string[] ExtraOutputLabels = { "None", "PNG (16-bit / 8-bit)", "EXR (float)", "PNG + EXR" };
 

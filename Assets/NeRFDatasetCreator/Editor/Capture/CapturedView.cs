@@ -68,7 +68,7 @@ namespace NerfDatasetCreator.Editor.Capture
 
         /// <summary>
         /// 4 floats per pixel: the unit geometry normal in Unity's world frame (x, y, z) and 1 where geometry covers,
-        /// all 0 elsewhere. <see cref="NormalFrames.ToOutputWorld"/> relabels them into the dataset's world frame.
+        /// all 0 elsewhere. The encoders relabel them into the dataset's world frame as they read them (<see cref="RawFrame.NormalsInUnityWorld"/>).
         /// </summary>
         public float[] Normal { get; internal set; }
 

@@ -212,6 +212,10 @@ namespace NerfDatasetCreator.Editor
             var message = string.Format(CultureInfo.InvariantCulture,
                 "NeRF Dataset Creator: wrote {0} views to {1} in {2:0.0} s ({3:0.00} views/s).",
                 summary.Views, session.FinalFolder, summary.Seconds, summary.ViewsPerSecond);
+            if (files.WriteSeconds > 0)
+                message += string.Format(CultureInfo.InvariantCulture,
+                    " Writer threads were busy {0:0.0} s ({1:0.0} ms per view), {2:0} % of it in PNG encoding.",
+                    files.WriteSeconds, 1000 * files.WriteSeconds / Math.Max(1, files.ViewsWritten), 100 * files.PngEncodeSeconds / files.WriteSeconds);
             if (cloud != null && cloud.Count > 0)
                 message += string.Format(CultureInfo.InvariantCulture, " points3d.ply holds {0} surface points.", cloud.Count);
             if (files.ClampedDepthPixels > 0)
@@ -255,10 +259,12 @@ namespace NerfDatasetCreator.Editor
         {
             if (!prepared.Run.WritesPointCloud) return null;
             var warnings = new List<ValidationProblem>();
-            // A whole-scene capture (an inside-out volume) samples every mesh it renders, not only the target's.
+            // A dynamic capture's cloud is the surface at its first time step (the user's target is only read); a
+            // whole-scene capture (an inside-out volume) samples every mesh it renders, not only the target's.
+            var plan = prepared.Run.Plan;
             prepared.Surface = prepared.Options.Isolation == CaptureIsolation.WholeScene
                 ? TargetSurface.CollectScene(warnings)
-                : TargetSurface.Collect(prepared.Target, warnings);
+                : TimeMeasurement.SurfaceAtStart(prepared.Target, plan.Time, plan.Settings.Seed, warnings) ?? TargetSurface.Collect(prepared.Target, warnings);
             foreach (var warning in warnings) Debug.LogWarning("NeRF Dataset Creator: " + warning);
             var problems = TargetPointCloud.Check(prepared.Run.Plan.Settings, prepared.Surface);
             return problems.Count == 0 ? null : Refused(problems);

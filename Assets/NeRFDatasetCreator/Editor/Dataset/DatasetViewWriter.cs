@@ -5,7 +5,8 @@ namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// The capture's worker-thread writer for datasets: wraps a view's readback arrays as Core's raw frames (no copy),
-    /// relabels its normals into the output world frame, and hands it to Core's <see cref="ViewFileWriter"/>.
+    /// marks its normals as Unity world normals (the encoders relabel them into the output world as they read them),
+    /// and hands it to Core's <see cref="ViewFileWriter"/>.
     /// The consumer releases the view afterwards.
     /// </summary>
     sealed class DatasetViewWriter : IViewWriter
@@ -30,11 +31,12 @@ namespace NerfDatasetCreator.Editor
                 Mask = view.Mask,
                 MaskBytesPerPixel = 1,
             };
-            if (view.Normal != null) NormalFrames.ToOutputWorld(view.Normal);
             var atOutputSize = view.DataWidth != view.Width || view.DataHeight != view.Height;
             var data = atOutputSize ? new RawFrame(view.DataWidth, view.DataHeight, 1) : colour;
             data.Depth = view.Depth;
             data.Normals = view.Normal;
+            // The normal pass writes Unity world normals; the encoders relabel them as they read them.
+            data.NormalsInUnityWorld = true;
             _files.Write(_views[view.ViewIndex], colour, data);
         }
     }

@@ -12,7 +12,7 @@ namespace NerfDatasetCreator.Editor
     /// <summary>
     /// What a dynamic capture needs to know about its target before planning: the clip length (for
     /// <c>time.end: "clip"</c>), the bounds over the whole time range (they decide the automatic distance, the
-    /// normalisation and aabb_scale), and what will not follow time (physics, scripts). Bounds are measured on a
+    /// normalisation and aabb_scale), the surface at the first step (points3d.ply), and what will not follow time (physics, scripts). Bounds are measured on a
     /// temporary copy in a preview scene, posed by <see cref="ContentClock"/>; the user's objects are only read.
     /// </summary>
     static class TimeMeasurement
@@ -64,14 +64,44 @@ namespace NerfDatasetCreator.Editor
                     "Bake the simulation into an animation clip (e.g. with the Recorder's Animation Clip recorder) and capture that."));
         }
 
-        static Bounds? BoundsOverRange(GameObject target, TimeRange range, long seed)
+        static Bounds? BoundsOverRange(GameObject target, TimeRange range, long seed) => WithCopy(target, copy =>
+        {
+            var clock = new ContentClock(range.Sources, seed);
+            var samples = Math.Min(range.Steps, MaxBoundsSamples);
+            Bounds? all = null;
+            for (var i = 0; i < samples; i++)
+            {
+                clock.Show(copy, range.SecondsAt(i / (double)(samples - 1)));
+                var posed = PosedBounds(copy);
+                if (posed.HasValue) all = Union(all, posed.Value);
+            }
+            return all;
+        });
+
+        /// <summary>
+        /// The target's surface for points3d.ply at the first time step (what Dynamic 3D Gaussians' init_pt_cld.npz and
+        /// 3DGS start from), read from a copy posed by <see cref="ContentClock"/>; null for a static capture (the target
+        /// as it stands is read instead).
+        /// </summary>
+        public static List<SurfaceMesh> SurfaceAtStart(GameObject target, TimeRange range, long seed, List<ValidationProblem> warnings)
+        {
+            if (target == null || range == null) return null;
+            return WithCopy(target, copy =>
+            {
+                new ContentClock(range.Sources, seed).Show(copy, range.StartSeconds);
+                return TargetSurface.Collect(copy, warnings);
+            });
+        }
+
+        /// <summary>Runs <paramref name="use"/> on a temporary copy of the target in a preview scene, scripts off, then destroys it.</summary>
+        static T WithCopy<T>(GameObject target, Func<GameObject, T> use)
         {
             var scene = EditorSceneManager.NewPreviewScene();
             GameObject holder = null;
             try
             {
                 // As CaptureStage: copied under an inactive holder, scripts off before it is activated.
-                holder = EditorUtility.CreateGameObjectWithHideFlags("NeRF Dataset Creator bounds", HideFlags.HideAndDontSave);
+                holder = EditorUtility.CreateGameObjectWithHideFlags("NeRF Dataset Creator time copy", HideFlags.HideAndDontSave);
                 SceneManager.MoveGameObjectToScene(holder, scene);
                 holder.SetActive(false);
                 var copy = Object.Instantiate(target, holder.transform, true);
@@ -80,16 +110,7 @@ namespace NerfDatasetCreator.Editor
                     if (script != null) script.enabled = false;
                 copy.SetActive(true);
                 holder.SetActive(true);
-                var clock = new ContentClock(range.Sources, seed);
-                var samples = Math.Min(range.Steps, MaxBoundsSamples);
-                Bounds? all = null;
-                for (var i = 0; i < samples; i++)
-                {
-                    clock.Show(copy, range.SecondsAt(i / (double)(samples - 1)));
-                    var posed = PosedBounds(copy);
-                    if (posed.HasValue) all = Union(all, posed.Value);
-                }
-                return all;
+                return use(copy);
             }
             finally
             {

@@ -5,7 +5,7 @@ using UnityEngine;
 
 namespace NerfDatasetCreator.Editor
 {
-    /// <summary>Step 6: what will be made, anything still wrong, how to run, the Create button, progress with Cancel, and the result.</summary>
+    /// <summary>Step 7: what will be made, anything still wrong, how to run, the Create button, progress with Cancel, and the result.</summary>
     static class CreateSection
     {
         static readonly GUIContent RunLabel = new GUIContent("Run",

@@ -167,6 +167,7 @@ namespace NerfDatasetCreator.Editor
                 TargetSection.Draw(context);
                 CameraSection.Draw(context);
                 RigSection.Draw(context);
+                TimeSection.Draw(context);
                 OutputsSection.Draw(context);
                 OutputFolderSection.Draw(context, ProjectRoot, ChooseFolder);
                 if (EditorGUI.EndChangeCheck()) Commit(context.Settings, EditUndoName);

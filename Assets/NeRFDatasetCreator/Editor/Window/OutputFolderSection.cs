@@ -5,7 +5,7 @@ using UnityEngine;
 
 namespace NerfDatasetCreator.Editor
 {
-    /// <summary>Step 5: the dataset's name and where its folder goes (outside Assets by default), what may be replaced, and for which loaders.</summary>
+    /// <summary>Step 6: the dataset's name and where its folder goes (outside Assets by default), what may be replaced, and for which loaders.</summary>
     static class OutputFolderSection
     {
         public static void Draw(WindowContext c, string projectRoot, Action<string> chooseFolder)

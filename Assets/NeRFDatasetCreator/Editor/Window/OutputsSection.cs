@@ -2,7 +2,7 @@ using UnityEditor;
 
 namespace NerfDatasetCreator.Editor
 {
-    /// <summary>Step 4: per split, the extra passes next to the RGBA image: depth and normals (PNG and/or EXR) and the mask.</summary>
+    /// <summary>Step 5: per split, the extra passes next to the RGBA image: depth and normals (PNG and/or EXR) and the mask.</summary>
     static class OutputsSection
     {
         public static void Draw(WindowContext c)

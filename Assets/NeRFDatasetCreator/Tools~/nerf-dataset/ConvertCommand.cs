@@ -5,7 +5,7 @@ using System.Linq;
 namespace NerfDatasetCreator.Tool
 {
     /// <summary>
-    /// <c>nerf-dataset convert d --to nerfstudio|colmap|ngp [--out o] [--depths]</c>: <see cref="DatasetConverter.Convert"/>, then
+    /// <c>nerf-dataset convert d --to nerfstudio|colmap|ngp|dynamic3dgs [--out o] [--depths]</c>: <see cref="DatasetConverter.Convert"/>, then
     /// where the files went, the warnings, and the command that trains on the result. Exit 1 when the dataset cannot
     /// be converted or a destination file exists (nothing is overwritten).
     /// </summary>

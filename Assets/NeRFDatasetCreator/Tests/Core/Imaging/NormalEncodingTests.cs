@@ -45,5 +45,40 @@ namespace NerfDatasetCreator.Tests
             NormalEncoding.Encode(frame, rgb);
             Assert.That(rgb, Is.EqualTo(new byte[] { 128, 128, 255, 0, 0, 0 }));
         }
+
+        [TestCase(1)]
+        [TestCase(2)]
+        public void UnityWorldNormalsGiveTheSameBytesAsRelabellingFirst(int k)
+        {
+            // The capture hands Unity world normals over with NormalsInUnityWorld; the encoders must swap y and z
+            // while reading, giving exactly what NormalFrames.ToOutputWorld followed by the encoder gives.
+            const int w = 5, h = 3;
+            var random = new SeededRandom(8);
+            var unity = new float[w * k * h * k * 4];
+            for (int p = 0; p < unity.Length / 4; p++)
+            {
+                if (p % 7 == 3) continue; // background
+                double x = random.NextDouble() * 2 - 1, y = random.NextDouble() * 2 - 1, z = random.NextDouble() * 2 - 1;
+                double length = System.Math.Sqrt(x * x + y * y + z * z);
+                unity[4 * p] = (float)(x / length);
+                unity[4 * p + 1] = (float)(y / length);
+                unity[4 * p + 2] = (float)(z / length);
+            }
+            var relabelled = (float[])unity.Clone();
+            NormalFrames.ToOutputWorld(relabelled);
+
+            var expectedRgb = new byte[w * h * 3];
+            var actualRgb = new byte[w * h * 3];
+            NormalEncoding.Encode(new RawFrame(w * k, h * k, k) { Normals = relabelled }, expectedRgb);
+            NormalEncoding.Encode(new RawFrame(w * k, h * k, k) { Normals = unity, NormalsInUnityWorld = true }, actualRgb);
+            Assert.That(actualRgb, Is.EqualTo(expectedRgb));
+            Assert.That(actualRgb, Is.Not.EqualTo(new byte[actualRgb.Length]));
+
+            var expectedFloats = new float[w * h * 4];
+            var actualFloats = new float[w * h * 4];
+            NormalEncoding.ToFloats(new RawFrame(w * k, h * k, k) { Normals = relabelled }, expectedFloats, RowDirection.TopRowFirst);
+            NormalEncoding.ToFloats(new RawFrame(w * k, h * k, k) { Normals = unity, NormalsInUnityWorld = true }, actualFloats, RowDirection.TopRowFirst);
+            Assert.That(actualFloats, Is.EqualTo(expectedFloats));
+        }
     }
 }

@@ -27,6 +27,22 @@ namespace NerfDatasetCreator.Tests
             yield return Case("semisphere bottom", s => s.Train.Formation.BottomElevationDegrees = 95, "splits.train.formation.bottomElevationDegrees", WindowStep.Rig);
             yield return Case("normalised radius", s => s.NormalisedTargetRadius = double.NaN, "normalisedTargetRadius", WindowStep.Outputs);
             yield return Case("point cloud", s => s.PointCloudPoints = -5, "pointCloudPoints", WindowStep.Outputs);
+            yield return Case("time steps", s =>
+            {
+                s.Time.Mode = TimeMode.MultiView;
+                s.Time.Steps = 1;
+            }, "time.steps", WindowStep.Time);
+            yield return Case("time sources", s =>
+            {
+                s.Time.Mode = TimeMode.Monocular;
+                s.Time.Sources = TimeSources.None;
+            }, "time.sources", WindowStep.Time);
+            yield return Case("time end", s =>
+            {
+                s.Time.Mode = TimeMode.Monocular;
+                s.Time.StartSeconds = 3;
+                s.Time.EndSeconds = 2;
+            }, "time.end", WindowStep.Time);
             yield return Case("halo elevation", s =>
             {
                 s.Train.Formation.Kind = FormationKind.Halo;

@@ -99,6 +99,21 @@ namespace NerfDatasetCreator.Tests
             Assert.That(WindowText.FormationLabels()[(int)FormationKind.SemiSphere], Does.StartWith("Semi-sphere"));
             Assert.That(WindowText.ExtraOutputLabels.Length, Is.EqualTo(System.Enum.GetValues(typeof(ExtraOutput)).Length));
             Assert.That(WindowText.ExtraOutputLabels[(int)ExtraOutput.PngAndExr], Is.EqualTo("PNG + EXR"));
+            Assert.That(WindowText.TimeModeLabels.Length, Is.EqualTo(TimeModes.All.Count));
+            for (var i = 0; i < TimeModes.All.Count; i++) Assert.That((int)TimeModes.All[i], Is.EqualTo(i));
+            Assert.That(WindowText.TimeModeLabels[(int)TimeMode.MultiView], Does.StartWith("Multi-view"));
+        }
+
+        [Test]
+        public void TheTimeSourceMaskBitsAreTheSourceFlags()
+        {
+            // EditorGUILayout.MaskField sets bit i for option i: option i must be the flag 1 << i.
+            Assert.That(WindowText.TimeSourceLabels.Length, Is.EqualTo(4));
+            Assert.That((int)TimeSources.Timeline, Is.EqualTo(1 << 0));
+            Assert.That((int)TimeSources.Animator, Is.EqualTo(1 << 1));
+            Assert.That((int)TimeSources.Animation, Is.EqualTo(1 << 2));
+            Assert.That((int)TimeSources.Particles, Is.EqualTo(1 << 3));
+            Assert.That(WindowText.TimeSourceLabels[2], Does.StartWith("Animation"));
         }
     }
 }

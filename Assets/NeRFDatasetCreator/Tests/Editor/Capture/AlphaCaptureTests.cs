@@ -15,26 +15,9 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
     /// </summary>
     [TestFixture]
     [Category("GPU")]
-    public class AlphaCaptureTests
+    public class AlphaCaptureTests : GpuSceneFixture
     {
         const int Size = 32, K = 2, W = Size * K;
-        Scene _scene;
-        readonly List<Object> _assets = new List<Object>();
-
-        [SetUp]
-        public void SetUp()
-        {
-            TestScene.RequireRendering();
-            _scene = TestScene.Open();
-        }
-
-        [TearDown]
-        public void TearDown()
-        {
-            TestScene.Close(_scene);
-            foreach (var asset in _assets) Object.DestroyImmediate(asset);
-            _assets.Clear();
-        }
 
         RecordedView CaptureFront(GameObject target)
         {
@@ -55,7 +38,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
             var shader = Shader.Find(shaderName);
             Assume.That(shader, Is.Not.Null, "Unity's built-in " + shaderName + " shader");
             var material = new Material(shader);
-            _assets.Add(material);
+            Own(material);
             return material;
         }
 
@@ -64,7 +47,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
             var texture = new Texture2D(width, pixels.Length / width, TextureFormat.RGBA32, false) { filterMode = FilterMode.Point, wrapMode = TextureWrapMode.Clamp };
             texture.SetPixels32(pixels);
             texture.Apply();
-            _assets.Add(texture);
+            Own(texture);
             return texture;
         }
 

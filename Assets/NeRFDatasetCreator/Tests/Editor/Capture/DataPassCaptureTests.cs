@@ -17,30 +17,12 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
     /// </summary>
     [TestFixture]
     [Category("GPU")]
-    public class DataPassCaptureTests
+    public class DataPassCaptureTests : GpuSceneFixture
     {
         const int Size = 64;
         const double FovDegrees = 40.0;
         const double Distance = 2.0;
 
-        Scene _scene;
-        readonly List<Object> _owned = new List<Object>();
-
-        [SetUp]
-        public void SetUp()
-        {
-            TestScene.RequireRendering();
-            _scene = TestScene.Open();
-        }
-
-        [TearDown]
-        public void TearDown()
-        {
-            TestScene.Close(_scene);
-            foreach (var o in _owned)
-                if (o != null) Object.DestroyImmediate(o);
-            _owned.Clear();
-        }
 
         static bool UrpIsActive
         {
@@ -71,7 +53,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
             mesh.normals = new[] { Vector3.back, Vector3.back, Vector3.back, Vector3.back };
             // Clockwise as seen from −Z: Unity's front faces.
             mesh.triangles = new[] { 0, 1, 2, 0, 2, 3 };
-            _owned.Add(mesh);
+            Own(mesh);
             var plane = new GameObject("Test plane", typeof(MeshFilter), typeof(MeshRenderer));
             plane.GetComponent<MeshFilter>().sharedMesh = mesh;
             plane.GetComponent<MeshRenderer>().sharedMaterial = material;
@@ -80,7 +62,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
 
         Material Owned(Material material)
         {
-            _owned.Add(material);
+            Own(material);
             return material;
         }
 
@@ -97,7 +79,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
             var texture = new Texture2D(2, 2, TextureFormat.RGBA32, false) { filterMode = FilterMode.Point, wrapMode = TextureWrapMode.Clamp };
             texture.SetPixels32(new[] { new Color32(255, 255, 255, 255), new Color32(255, 255, 255, 0), new Color32(255, 255, 255, 0), new Color32(255, 255, 255, 255) });
             texture.Apply(false);
-            _owned.Add(texture);
+            Own(texture);
             return texture;
         }
 

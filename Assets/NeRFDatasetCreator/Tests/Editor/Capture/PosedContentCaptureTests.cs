@@ -17,30 +17,12 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
     /// </summary>
     [TestFixture]
     [Category("GPU")]
-    public class PosedContentCaptureTests
+    public class PosedContentCaptureTests : GpuSceneFixture
     {
         const int Size = 32;
         const double FovDegrees = 40.0;
         const double CameraDistance = 3.0;
 
-        Scene _scene;
-        readonly List<Object> _owned = new List<Object>();
-
-        [SetUp]
-        public void SetUp()
-        {
-            TestScene.RequireRendering();
-            _scene = TestScene.Open();
-        }
-
-        [TearDown]
-        public void TearDown()
-        {
-            TestScene.Close(_scene);
-            foreach (var owned in _owned)
-                if (owned != null) Object.DestroyImmediate(owned);
-            _owned.Clear();
-        }
 
         static List<RecordedView> Capture(GameObject target, int views, Action<GameObject, int> beforeView)
         {
@@ -127,7 +109,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
             bone.SetParent(body.transform, false);
             var cube = GameObject.CreatePrimitive(PrimitiveType.Cube);
             var mesh = Object.Instantiate(cube.GetComponent<MeshFilter>().sharedMesh);
-            _owned.Add(mesh);
+            Own(mesh);
             var material = cube.GetComponent<MeshRenderer>().sharedMaterial; // the pipeline's default material (an asset)
             Object.DestroyImmediate(cube);
             mesh.boneWeights = Enumerable.Repeat(new BoneWeight { boneIndex0 = 0, weight0 = 1 }, mesh.vertexCount).ToArray();

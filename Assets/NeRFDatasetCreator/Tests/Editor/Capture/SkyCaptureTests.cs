@@ -2,8 +2,6 @@ using System.Collections.Generic;
 using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
 using UnityEngine;
-using UnityEngine.SceneManagement;
-using Object = UnityEngine.Object;
 
 namespace NerfDatasetCreator.Editor.Tests.Capture
 {
@@ -15,27 +13,15 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
     /// </summary>
     [TestFixture]
     [Category("GPU")]
-    public class SkyCaptureTests
+    public class SkyCaptureTests : GpuSceneFixture
     {
         const int Size = 32, K = 2, W = Size * K;
-        Scene _scene;
-        Material _sky;
 
-        [SetUp]
-        public void SetUp()
+        Material Sky()
         {
-            TestScene.RequireRendering();
-            _scene = TestScene.Open();
             var shader = Shader.Find("Skybox/Procedural");
             Assume.That(shader, Is.Not.Null, "Unity's built-in Skybox/Procedural shader");
-            _sky = new Material(shader);
-        }
-
-        [TearDown]
-        public void TearDown()
-        {
-            TestScene.Close(_scene);
-            Object.DestroyImmediate(_sky);
+            return Own(new Material(shader));
         }
 
         RecordedView Capture(Material sky)
@@ -57,7 +43,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         [Test]
         public void WithASkyEverySampleIsOpaqueAndTheSkyIsInTheColour()
         {
-            var view = Capture(_sky);
+            var view = Capture(Sky());
             for (var y = 0; y < W; y++)
             for (var x = 0; x < W; x++)
                 Assert.That(view.AlphaAt(x, y), Is.EqualTo(1f), "sample " + x + ", " + y + ": the two halves are one render");

@@ -77,6 +77,8 @@ namespace NerfDatasetCreator.Editor.Tests
 
             var config = JObject.Parse(File.ReadAllText(Path.Combine(result.DatasetFolder, "dataset_config.json")));
             Assert.That(config.ToString(), Does.Contain("viewsPerSecond"), "the run's speed is recorded for comparison");
+            Assert.That(result.Message, Does.Contain("views/s").And.Contain("% of it in PNG encoding"),
+                "the closing log line gives the writers' busy time and the encoder's share (capture.md)");
         }
 
         [Test]

@@ -157,6 +157,25 @@ namespace NerfDatasetCreator.Editor.Tests
             Assert.That(times, Is.EqualTo(new[] { 0, 0.375, 0.875 }));
         }
 
+        [Test]
+        [Category("GPU")]
+        public void ThePointCloudIsTheSurfaceAtTheFirstTimeStep()
+        {
+            // From 1 s the clip holds the cube at x = 1 (turned 45°): points3d.ply samples it there, not at rest (x = 0).
+            TestScene.RequireRendering();
+            var settings = Settings();
+            settings.Time.StartSeconds = 1;
+            settings.PointCloudPoints = 2000;
+            settings.Normalisation = NormalisationMode.None; // output (x, y, z) = Unity (x, z, y)
+            var result = DatasetCapture.RunBlocking(DatasetCapture.Prepare(settings, _cube, _project), new SilentProgress());
+            Assert.That(result.Succeeded, Is.True, result.Message);
+            var points = PlyReader.Read(Path.Combine(result.DatasetFolder, PointCloudOwnership.FileName));
+            Assert.That(points.Average(p => p.Position.X), Is.EqualTo(1.0).Within(0.05));
+            // Turned 45° about Unity's y: the cube's corners reach √½ from its centre along x.
+            Assert.That(points.Max(p => p.Position.X), Is.EqualTo(1 + Math.Sqrt(0.5)).Within(0.05));
+            Assert.That(_cube.transform.position, Is.EqualTo(Vector3.zero), "the user's cube stays at rest");
+        }
+
         sealed class SilentProgress : ICaptureProgress
         {
             public void Report(ThroughputMeter meter) { }

@@ -38,5 +38,30 @@ namespace NerfDatasetCreator.Editor.Tests
                 Directory.Delete(root, true);
             }
         }
+
+        [Test]
+        public void AnEndAtTheClipLengthOfATargetWithoutClipsIsReportedUnderTheTimeStep()
+        {
+            var root = Path.Combine(Path.GetTempPath(), "nerf-window-test-" + System.Guid.NewGuid().ToString("N"));
+            Directory.CreateDirectory(root);
+            var still = UnityEngine.GameObject.CreatePrimitive(UnityEngine.PrimitiveType.Cube); // no Animator, Animation, Timeline or particles
+            try
+            {
+                var settings = new DatasetSettings();
+                settings.Time.Mode = TimeMode.MultiView;
+                settings.Time.Steps = 3;
+                settings.Time.EndAtClipLength = true;
+                var prepared = DatasetCapture.Prepare(settings, still, root);
+                var problems = new FieldProblems(prepared.Problems, prepared.Warnings);
+                Assert.That(problems.ErrorsFor(WindowFields.TimeEnd), Is.Not.Empty,
+                    "fields reported: " + string.Join("; ", prepared.Problems.Select(p => p.Field)));
+                Assert.That(problems.StepHasErrors(WindowStep.Time), Is.True);
+            }
+            finally
+            {
+                UnityEngine.Object.DestroyImmediate(still);
+                Directory.Delete(root, true);
+            }
+        }
     }
 }

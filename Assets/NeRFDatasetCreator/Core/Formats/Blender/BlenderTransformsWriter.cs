@@ -26,49 +26,67 @@ namespace NerfDatasetCreator
         /// The split's file. The depth scale keys follow the split's settings, not its frames: a shard that drew no
         /// view of a split still declares them, so all shards' files agree and merge.
         /// </summary>
-        public static string Write(CapturePlan plan, DatasetSplit split) =>
+        public static string Write(CapturePlan plan, DatasetSplit split)
+        {
+            using (var text = JsonNumbers.CreateText())
+            {
+                Write(plan, split, text);
+                return text.ToString();
+            }
+        }
+
+        /// <summary>The same text as <see cref="Write(CapturePlan, DatasetSplit)"/>, streamed into <paramref name="output"/> (a file: no string of the whole file is built).</summary>
+        public static void Write(CapturePlan plan, DatasetSplit split, System.IO.TextWriter output) =>
             Write(plan.Intrinsics, plan.RotationOf(split), plan.ViewsOf(split).ToList(),
-                ExtraOutputs.HasPng(plan.Settings.Split(split).Depth), plan.AabbScale, plan.Normalisation);
+                ExtraOutputs.HasPng(plan.Settings.Split(split).Depth), plan.AabbScale, plan.Normalisation, output);
 
         /// <param name="aabbScale">instant-ngp's scene cube (<see cref="NerfDatasetCreator.AabbScale"/>); 1 for one object at nerf_synthetic's scale.</param>
         /// <param name="normalisation">Written as <c>scene_normalisation</c>, which every loader ignores; null writes none.</param>
         public static string Write(CameraIntrinsics intrinsics, double rotation, IReadOnlyList<PlannedView> views, bool declareDepthScale,
             int aabbScale, SceneNormalisation normalisation)
         {
-            if (intrinsics == null) throw new ArgumentNullException(nameof(intrinsics));
-            var anyDepthPng = declareDepthScale || views.Any(v => v.Writes(DatasetFileKind.DepthPng));
             using (var text = JsonNumbers.CreateText())
             {
-                using (var w = JsonNumbers.CreateWriter(text, 4))
-                {
-                    w.WriteStartObject();
-                    Number(w, "camera_angle_x", intrinsics.CameraAngleX);
-                    Number(w, "camera_angle_y", intrinsics.CameraAngleY);
-                    Number(w, "fl_x", intrinsics.FlX);
-                    Number(w, "fl_y", intrinsics.FlY);
-                    Number(w, "cx", intrinsics.Cx);
-                    Number(w, "cy", intrinsics.Cy);
-                    w.WritePropertyName("w"); w.WriteValue(intrinsics.Width);
-                    w.WritePropertyName("h"); w.WriteValue(intrinsics.Height);
-                    w.WritePropertyName("aabb_scale"); w.WriteValue(aabbScale);
-                    if (anyDepthPng)
-                    {
-                        Number(w, "integer_depth_scale", DepthUnitScale);
-                        Number(w, "depth_unit_scale_factor", DepthUnitScale);
-                    }
-                    if (normalisation != null)
-                    {
-                        w.WritePropertyName(SceneNormalisationKey);
-                        JsonNumbers.WriteToken(w, normalisation.ToJson());
-                    }
-                    w.WritePropertyName("frames");
-                    w.WriteStartArray();
-                    foreach (var v in views) WriteFrame(w, v, rotation);
-                    w.WriteEndArray();
-                    w.WriteEndObject();
-                }
-                return text.ToString() + "\n"; // the writer's text, formatted by CreateText's invariant culture
+                Write(intrinsics, rotation, views, declareDepthScale, aabbScale, normalisation, text);
+                return text.ToString();
             }
+        }
+
+        static void Write(CameraIntrinsics intrinsics, double rotation, IReadOnlyList<PlannedView> views, bool declareDepthScale,
+            int aabbScale, SceneNormalisation normalisation, System.IO.TextWriter text)
+        {
+            if (intrinsics == null) throw new ArgumentNullException(nameof(intrinsics));
+            var anyDepthPng = declareDepthScale || views.Any(v => v.Writes(DatasetFileKind.DepthPng));
+            using (var w = JsonNumbers.CreateWriter(text, 4))
+            {
+                w.CloseOutput = false; // the final line end follows
+                w.WriteStartObject();
+                Number(w, "camera_angle_x", intrinsics.CameraAngleX);
+                Number(w, "camera_angle_y", intrinsics.CameraAngleY);
+                Number(w, "fl_x", intrinsics.FlX);
+                Number(w, "fl_y", intrinsics.FlY);
+                Number(w, "cx", intrinsics.Cx);
+                Number(w, "cy", intrinsics.Cy);
+                w.WritePropertyName("w"); w.WriteValue(intrinsics.Width);
+                w.WritePropertyName("h"); w.WriteValue(intrinsics.Height);
+                w.WritePropertyName("aabb_scale"); w.WriteValue(aabbScale);
+                if (anyDepthPng)
+                {
+                    Number(w, "integer_depth_scale", DepthUnitScale);
+                    Number(w, "depth_unit_scale_factor", DepthUnitScale);
+                }
+                if (normalisation != null)
+                {
+                    w.WritePropertyName(SceneNormalisationKey);
+                    JsonNumbers.WriteToken(w, normalisation.ToJson());
+                }
+                w.WritePropertyName("frames");
+                w.WriteStartArray();
+                foreach (var v in views) WriteFrame(w, v, rotation);
+                w.WriteEndArray();
+                w.WriteEndObject();
+            }
+            text.Write("\n");
         }
 
         static void WriteFrame(JsonWriter w, PlannedView v, double rotation)

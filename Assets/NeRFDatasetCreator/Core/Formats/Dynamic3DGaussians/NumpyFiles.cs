@@ -1,0 +1,67 @@
+using System;
+using System.Globalization;
+using System.IO;
+using System.IO.Compression;
+using System.Text;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// NumPy's file formats, for loaders that <c>np.load</c> their input. A <c>.npy</c> file (NumPy's
+    /// "format.rst", version 1.0): the magic <c>\x93NUMPY</c>, bytes 1 and 0 (the version), the header's length as a
+    /// little-endian uint16, then the header — a Python dict literal with <c>descr</c>, <c>fortran_order</c> and
+    /// <c>shape</c>, padded with spaces and ended by a newline so that the data starts at a multiple of 64 bytes — then
+    /// the array's bytes in C order. A <c>.npz</c> is a zip of such files, each named &lt;key&gt;.npy
+    /// (<c>np.savez</c> stores them uncompressed, as here).
+    /// </summary>
+    public static class NumpyFiles
+    {
+        static readonly byte[] Magic = { 0x93, (byte)'N', (byte)'U', (byte)'M', (byte)'P', (byte)'Y', 1, 0 };
+
+        /// <summary>The alignment of the data that NumPy 1.x/2.x writes (format.rst: "evenly divisible by 64").</summary>
+        public const int Alignment = 64;
+
+        /// <summary>A 2-D little-endian float32 array (<c>'&lt;f4'</c>) of <paramref name="rows"/> × <paramref name="columns"/>, row-major.</summary>
+        public static byte[] Float32Matrix(float[] values, int rows, int columns)
+        {
+            if (values == null) throw new ArgumentNullException(nameof(values));
+            if (rows < 0 || columns < 0 || (long)rows * columns != values.Length)
+                throw new ArgumentException("values holds " + values.Length + " numbers, not " + rows + " × " + columns + ".", nameof(values));
+            var dict = "{'descr': '<f4', 'fortran_order': False, 'shape': (" +
+                       rows.ToString(CultureInfo.InvariantCulture) + ", " + columns.ToString(CultureInfo.InvariantCulture) + "), }";
+            var unpadded = Magic.Length + 2 + dict.Length + 1;
+            var padding = (Alignment - unpadded % Alignment) % Alignment;
+            var header = Encoding.ASCII.GetBytes(dict + new string(' ', padding) + "\n");
+            var bytes = new byte[Magic.Length + 2 + header.Length + 4L * values.Length];
+            Buffer.BlockCopy(Magic, 0, bytes, 0, Magic.Length);
+            bytes[8] = (byte)(header.Length & 0xFF);
+            bytes[9] = (byte)(header.Length >> 8);
+            Buffer.BlockCopy(header, 0, bytes, 10, header.Length);
+            var data = 10 + header.Length;
+            for (var i = 0; i < values.Length; i++)
+            {
+                var bits = BitConverter.SingleToInt32Bits(values[i]);
+                bytes[data + 4 * i] = (byte)bits;
+                bytes[data + 4 * i + 1] = (byte)(bits >> 8);
+                bytes[data + 4 * i + 2] = (byte)(bits >> 16);
+                bytes[data + 4 * i + 3] = (byte)(bits >> 24);
+            }
+            return bytes;
+        }
+
+        /// <summary>Writes a new <c>.npz</c> holding one array under <paramref name="key"/> (<c>np.load(path)[key]</c>); never overwrites.</summary>
+        public static void WriteNpz(string path, string key, byte[] npy) => FileOps.WriteNewBytes(path, Npz(key, npy));
+
+        /// <summary>The bytes of an <c>.npz</c> (a zip archive) holding one array under <paramref name="key"/>.</summary>
+        public static byte[] Npz(string key, byte[] npy)
+        {
+            var buffer = new MemoryStream();
+            using (var zip = new ZipArchive(buffer, ZipArchiveMode.Create, leaveOpen: true))
+            {
+                var entry = zip.CreateEntry(key + ".npy", CompressionLevel.NoCompression);
+                using (var stream = entry.Open()) stream.Write(npy, 0, npy.Length);
+            }
+            return buffer.ToArray();
+        }
+    }
+}

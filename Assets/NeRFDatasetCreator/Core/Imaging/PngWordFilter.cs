@@ -1,0 +1,131 @@
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// PNG's None, Sub, Up and Average filters (PNG spec §9.2) on a row held as 64-bit words, eight bytes at a time:
+    /// byte k of a word is row byte 8·j + k (the words are filled with Buffer.BlockCopy on a little-endian machine).
+    /// Bytes are subtracted and averaged within their own 8 bits (SWAR) so that no borrow or carry crosses into the
+    /// next byte. Mono, which runs the editor, neither vectorises nor removes the bounds checks of a byte loop, and a
+    /// word loop does an eighth of the iterations. Paeth needs byte-wise comparisons and stays in
+    /// <see cref="PngRowFilter"/>.
+    /// </summary>
+    internal static class PngWordFilter
+    {
+        const ulong High = 0x8080808080808080UL;
+        const ulong Low7 = 0x7F7F7F7F7F7F7F7FUL;
+        const ulong EvenBytes = 0x00FF00FF00FF00FFUL;
+        const ulong NotLowBits = 0xFEFEFEFEFEFEFEFEUL;
+        const ulong LaneSum = 0x0001000100010001UL;
+
+        /// <summary>Words per pair of adjacent words that <see cref="Choose"/> samples.</summary>
+        internal const int SampleEvery = 4;
+
+        /// <summary>
+        /// Writes the residuals of filter <paramref name="type"/> (0–3) for the row <paramref name="row"/>[0…words)
+        /// with the row above <paramref name="up"/> (zeros for the first row) at <paramref name="output"/>[at].
+        /// <paramref name="shift"/> is 8 × bytes per pixel (8…32).
+        /// </summary>
+        internal static void Apply(int type, ulong[] row, ulong[] up, int words, int shift, ulong[] output, int at)
+        {
+            int back = 64 - shift;
+            switch (type)
+            {
+                case 0:
+                    System.Array.Copy(row, 0, output, at, words);
+                    break;
+                case 1:
+                {
+                    ulong before = 0;
+                    for (int j = 0; j < words; j++)
+                    {
+                        ulong x = row[j];
+                        ulong a = (x << shift) | (before >> back);
+                        output[at + j] = ((x | High) - (a & Low7)) ^ ((x ^ ~a) & High);
+                        before = x;
+                    }
+                    break;
+                }
+                case 2:
+                    for (int j = 0; j < words; j++)
+                    {
+                        ulong x = row[j], b = up[j];
+                        output[at + j] = ((x | High) - (b & Low7)) ^ ((x ^ ~b) & High);
+                    }
+                    break;
+                default:
+                {
+                    ulong before = 0;
+                    for (int j = 0; j < words; j++)
+                    {
+                        ulong x = row[j], b = up[j];
+                        ulong a = (x << shift) | (before >> back);
+                        // floor((a + b) / 2) per byte: the common bits plus half the differing ones.
+                        ulong average = (a & b) + (((a ^ b) & NotLowBits) >> 1);
+                        output[at + j] = ((x | High) - (average & Low7)) ^ ((x ^ ~average) & High);
+                        before = x;
+                    }
+                    break;
+                }
+            }
+        }
+
+        /// <summary>
+        /// The filter among None, Sub, Up and Average that leaves the least to code, estimated on pairs of adjacent
+        /// words, one pair in every <see cref="SampleEvery"/> words: the sum of |signed residual| (the heuristic the
+        /// PNG specification recommends) over the second word's bytes, leaving out the bytes that equal the residual
+        /// a pixel earlier, because <see cref="HuffmanDeflate"/> sends runs of those as matches that cost next to
+        /// nothing (this is what makes Up win on normal maps). Paeth is left out: it cannot be computed on words.
+        /// Ties go to the lower type, so an all-zero row gets None, whose type byte 0 lets a run of zeros go on into
+        /// the next row.
+        /// </summary>
+        internal static int Choose(ulong[] row, ulong[] up, int words, int shift)
+        {
+            int back = 64 - shift;
+            long none = 0, sub = 0, upSum = 0, average = 0;
+            for (int j = 0; j + 1 < words; j += SampleEvery)
+            {
+                ulong x0 = row[j], x1 = row[j + 1], b0 = up[j], b1 = up[j + 1];
+                ulong a0 = (x0 << shift) | ((j == 0 ? 0 : row[j - 1]) >> back), a1 = (x1 << shift) | (x0 >> back);
+
+                none += Cost(x0, x1, shift, back);
+                sub += Cost(Subtract(x0, a0), Subtract(x1, a1), shift, back);
+                upSum += Cost(Subtract(x0, b0), Subtract(x1, b1), shift, back);
+                average += Cost(Subtract(x0, (a0 & b0) + (((a0 ^ b0) & NotLowBits) >> 1)),
+                    Subtract(x1, (a1 & b1) + (((a1 ^ b1) & NotLowBits) >> 1)), shift, back);
+            }
+            int best = 0;
+            long bestSum = none;
+            if (sub < bestSum) { best = 1; bestSum = sub; }
+            if (upSum < bestSum) { best = 2; bestSum = upSum; }
+            if (average < bestSum) best = 3;
+            return best;
+        }
+
+        // Per-row helpers, called a few hundred times a row rather than per byte, so Mono's not inlining them costs little.
+        static ulong Subtract(ulong x, ulong y) => ((x | High) - (y & Low7)) ^ ((x ^ ~y) & High);
+
+        /// <summary>Σ |signed byte| of <paramref name="r1"/> over the bytes that differ from the byte a pixel earlier (in r0, r1).</summary>
+        static long Cost(ulong r0, ulong r1, int shift, int back)
+        {
+            ulong equal = r1 ^ ((r1 << shift) | (r0 >> back));
+            ulong differs = equal | (equal >> 4);
+            differs |= differs >> 2;
+            differs |= differs >> 1;
+            differs = (differs & 0x0101010101010101UL) * 0xFF;
+            // |r| per byte: negate the bytes whose top bit is set (~r + 1 cannot carry out of a byte here).
+            ulong negative = (r1 & High) >> 7;
+            ulong magnitude = ((r1 ^ (negative * 0xFF)) + negative) & differs;
+            ulong lanes = (magnitude & EvenBytes) + ((magnitude >> 8) & EvenBytes);
+            return (long)((lanes * LaneSum) >> 48);
+        }
+
+        /// <summary>Swaps the two bytes of every 16-bit lane: little-endian ushorts become PNG's big-endian samples.</summary>
+        internal static void SwapBytePairs(ulong[] row, int words)
+        {
+            for (int j = 0; j < words; j++)
+            {
+                ulong w = row[j];
+                row[j] = ((w & EvenBytes) << 8) | ((w >> 8) & EvenBytes);
+            }
+        }
+    }
+}

@@ -1,0 +1,59 @@
+"""Prints run-all's figures (the .tsv files in the folder given) as one table, .NET beside Mono."""
+import glob
+import os
+import sys
+
+folder = sys.argv[1]
+
+
+def load(runtime):
+    figures = {}
+    for path in glob.glob(os.path.join(folder, f"{runtime}-*.tsv")) + ([os.path.join(folder, runtime + ".tsv")] if runtime == "pillow" else []):
+        if os.path.exists(path):
+            for line in open(path):
+                key, value = line.rstrip("\n").split("\t")
+                figures[key] = float(value)
+    return figures
+
+
+net, mono, pillow = load("dotnet"), load("mono"), load("pillow")
+
+
+def cell(figures, key, fmt):
+    return fmt.format(figures[key]) if key in figures else "—"
+
+
+def row(label, key, fmt, unit=""):
+    print(f"| {label} | {cell(net, key, fmt)}{unit if key in net else ''} | {cell(mono, key, fmt)}{unit if key in mono else ''} |")
+
+
+print("| figure | .NET | Mono |")
+print("|---|---|---|")
+row("post-processing, capture layout: all steps (ms CPU)", "post.all.ms", "{:.2f}")
+row("of which colour + alpha by difference matting (ms CPU)", "post.colour.ms", "{:.2f}")
+row("plain copy of the same bytes (ms CPU)", "post.copy.ms", "{:.2f}")
+row("post-processing / copy", "post.ratio", "{:.2f}", "×")
+for image, label in [("rgba", "RGBA render with grain"), ("rgba-clean", "RGBA render without grain"), ("mask", "mask (gray 8)"),
+                     ("depth", "depth (gray 16)"), ("normal", "normals (RGB 8)")]:
+    for encoder, name in [("huffman", "Huffman (default)"), ("zlib6", "DeflateStream level 6, Sub (old default)"), ("zlib1", "DeflateStream level 1, Sub")]:
+        k = f"png.{image}.{encoder}"
+        if k + ".ms" not in net and k + ".ms" not in mono:
+            continue
+        size = net.get(k + ".kb", mono.get(k + ".kb"))
+        print(f"| PNG {label}, {name}: {size:.1f} KB (MB/s) | {cell(net, k + '.mbs', '{:.0f}')} | {cell(mono, k + '.mbs', '{:.0f}')} |")
+    for level in (1, 6):
+        k = f"png.{image}.pillow{level}"
+        if k + ".ms" in pillow:
+            print(f"| PNG {label}, Pillow (zlib level {level}): {pillow[k + '.kb']:.1f} KB (MB/s) | {pillow[k + '.mbs']:.0f} (CPython) | |")
+    if f"png.{image}.huffman.mbs" in net and f"png.{image}.zlib6.mbs" in net:
+        print(f"| PNG {label}: Huffman speed / level 6 speed | {net[f'png.{image}.huffman.mbs'] / net[f'png.{image}.zlib6.mbs']:.1f}× | "
+              + (f"{mono[f'png.{image}.huffman.mbs'] / mono[f'png.{image}.zlib6.mbs']:.1f}×" if f"png.{image}.huffman.mbs" in mono else "—") + " |")
+row("whole view, 1 thread (ms CPU per view)", "view.1.ms", "{:.1f}")
+row("whole view, 1 thread (views/s per core)", "view.1.vps", "{:.1f}")
+row("PNG encoding's share of the whole view", "view.png-share", "{:.0%}")
+row(f"whole view, {int(net.get('view.n.workers', 0))} threads (views/s, wall clock)", "view.n.vps", "{:.1f}")
+row("plan 300 000 views (ms)", "plan.build.ms", "{:.0f}")
+row("stream their JSON files + commit (ms)", "plan.write.ms", "{:.0f}")
+row("plan + JSON (ms wall)", "plan.total.ms", "{:.0f}")
+row("plan + JSON (ms CPU of the process)", "plan.cpu.ms", "{:.0f}")
+row("peak working set of that process (MB)", "plan.peak.mb", "{:.0f}")
