@@ -11,6 +11,7 @@ namespace NerfDatasetCreator
     /// <c>{"kind": "imported", "path", "fileSplit", "useFileIntrinsics"}</c>,
     /// <c>{"kind": "sceneCameras", "parent", "useCameraIntrinsics"}</c>,
     /// <c>{"kind": "animatedCamera", "camera", "useCameraIntrinsics", "samples", "frameStep", "frameRate", "start", "end"}</c>.
+    /// <c>{"kind": "volume", "box", "look", "density", "jitterDegrees", "clearance"}</c>.
     /// Reading accepts every key whatever the kind (they are ignored by other kinds) and goes through
     /// <see cref="DatasetSettingsJson"/>'s reader, so errors and unknown keys are reported alike.
     /// </summary>
@@ -40,6 +41,14 @@ namespace NerfDatasetCreator
                     w.WritePropertyName("end"); JsonNumbers.Write(w, s.End);
                 }
             }
+            else if (s.IsVolume)
+            {
+                w.WritePropertyName("box"); w.WriteValue(s.ObjectPath ?? "");
+                w.WritePropertyName("look"); w.WriteValue(VolumePlanning.LookName(s.Look));
+                w.WritePropertyName("density"); JsonNumbers.Write(w, s.Density);
+                w.WritePropertyName("jitterDegrees"); JsonNumbers.Write(w, s.JitterDegrees);
+                w.WritePropertyName("clearance"); JsonNumbers.Write(w, s.Clearance);
+            }
             w.WriteEndObject();
         }
 
@@ -54,7 +63,7 @@ namespace NerfDatasetCreator
                 ["kind"] = (t, p) =>
                 {
                     if (!CameraSourceSettings.TryParseKind(readString(t, p), out var kind))
-                        throw error(t, p, "must be \"formation\", \"imported\", \"sceneCameras\" or \"animatedCamera\", not \"" + (string)t + "\".");
+                        throw error(t, p, "must be \"formation\", \"imported\", \"sceneCameras\", \"animatedCamera\" or \"volume\", not \"" + (string)t + "\".");
                     s.Kind = kind;
                 },
                 ["path"] = (t, p) => s.Path = readString(t, p),
@@ -68,6 +77,16 @@ namespace NerfDatasetCreator
                 ["frameRate"] = (t, p) => s.FrameRate = readDouble(t, p),
                 ["start"] = (t, p) => s.Start = readDouble(t, p),
                 ["end"] = (t, p) => s.End = readDouble(t, p),
+                ["box"] = (t, p) => s.ObjectPath = readString(t, p),
+                ["look"] = (t, p) =>
+                {
+                    if (!VolumePlanning.TryParseLook(readString(t, p), out var look))
+                        throw error(t, p, "must be \"ring\", \"sphere\" or \"forward\", not \"" + (string)t + "\".");
+                    s.Look = look;
+                },
+                ["density"] = (t, p) => s.Density = readDouble(t, p),
+                ["jitterDegrees"] = (t, p) => s.JitterDegrees = readDouble(t, p),
+                ["clearance"] = (t, p) => s.Clearance = readDouble(t, p),
             }, "");
         }
     }

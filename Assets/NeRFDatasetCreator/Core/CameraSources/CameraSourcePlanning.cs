@@ -45,6 +45,12 @@ namespace NerfDatasetCreator
             {
                 var source = settings.Split(split)?.Source;
                 var field = "splits." + DatasetSplits.Name(split) + ".source";
+                if (source != null && source.IsVolume)
+                {
+                    var volume = VolumePlanning.Resolve(source, field, settings.Split(split).Count, VolumePlanning.Seed(settings.Seed, DatasetSplits.Name(split)), DatasetSplits.Name(split), problems);
+                    if (volume != null) result[split] = volume;
+                    continue;
+                }
                 if (source != null && source.IsFromScene)
                 {
                     var fromScene = SceneCameraPlanning.Resolve(source, field, settings.Width, settings.Height, problems);
@@ -143,6 +149,12 @@ namespace NerfDatasetCreator
         {
             foreach (var pair in imported)
             {
+                if (pair.Value.Poses.Format == VolumePlanning.Format)
+                {
+                    // Rendered with the dataset's own camera: only the sampling's notes.
+                    foreach (var w in pair.Value.Poses.Warnings) yield return w;
+                    continue;
+                }
                 foreach (var w in pair.Value.Poses.Warnings) yield return Inner(pair.Value.Field + ".path", w);
                 var k = ImportedPoses.SharedIntrinsics(pair.Value.Cameras);
                 if (k == null)

@@ -17,6 +17,9 @@ namespace NerfDatasetCreator
 
         /// <summary>One scene camera driven by an Animator, Animation or Timeline, sampled over its time range (<see cref="AnimatedCameraSampling"/>).</summary>
         AnimatedCamera,
+
+        /// <summary>Inside-out: cameras sampled in a scene box (<see cref="CameraSourceSettings.ObjectPath"/>), looking outwards, never inside obstacles (<see cref="VolumeSampling"/>).</summary>
+        Volume,
     }
 
     /// <summary>
@@ -69,6 +72,24 @@ namespace NerfDatasetCreator
         public double Start;
         public double End;
 
+        /// <summary>Volume: where the cameras look.</summary>
+        public VolumeLook Look = VolumeLook.Ring;
+
+        /// <summary>Volume: cameras per cubic unit of the box; 0 to use the split's count.</summary>
+        public double Density;
+
+        /// <summary>Volume, <see cref="VolumeLook.Forward"/>: the largest tilt from the box's +Z, in degrees.</summary>
+        public double JitterDegrees = 10;
+
+        /// <summary>Volume: the least distance, in Unity units, from a camera to an obstacle box (keeps the near clip plane out of walls).</summary>
+        public double Clearance = 0.25;
+
+        /// <summary>
+        /// The box and the obstacles the Unity editor read for a volume source; null until it looked (the headless tool
+        /// never does, and refuses such a split). Not saved.
+        /// </summary>
+        [NonSerialized] public VolumeScene Volume;
+
         /// <summary>
         /// The cameras the Unity editor found for a scene or animated source, in order; null until it looked (the
         /// headless tool never does, and refuses such a split). Not saved: the scene is read again at every plan.
@@ -85,12 +106,15 @@ namespace NerfDatasetCreator
         /// <summary>Cameras the Unity editor reads from the scene (scene cameras, an animated camera).</summary>
         public bool IsFromScene => Kind == CameraSourceKind.SceneCameras || Kind == CameraSourceKind.AnimatedCamera;
 
+        /// <summary>Inside-out cameras sampled in a scene box.</summary>
+        public bool IsVolume => Kind == CameraSourceKind.Volume;
+
         /// <summary>Whether the source's own intrinsics replace the Camera step's.</summary>
         public bool UsesSourceIntrinsics => IsImported ? UseFileIntrinsics : IsFromScene && UseCameraIntrinsics;
 
         public CameraSourceSettings Clone() => (CameraSourceSettings)MemberwiseClone();
 
-        static readonly string[] Names = { "formation", "imported", "sceneCameras", "animatedCamera" };
+        static readonly string[] Names = { "formation", "imported", "sceneCameras", "animatedCamera", "volume" };
 
         /// <summary>The config-file names of the kinds.</summary>
         public static string KindName(CameraSourceKind kind) => Names[(int)kind];
@@ -130,6 +154,8 @@ namespace NerfDatasetCreator
                         "Give the hierarchy path of the animated camera, e.g. \"Flythrough/Camera\"."));
                 problems.AddRange(AnimatedCameraSampling.Validate(fieldPrefix, Samples, FrameStep, FrameRate, Start, End));
             }
+            else if (IsVolume)
+                problems.AddRange(VolumePlanning.Validate(this, fieldPrefix));
             return problems;
         }
     }

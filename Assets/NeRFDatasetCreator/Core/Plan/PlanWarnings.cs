@@ -20,9 +20,13 @@ namespace NerfDatasetCreator
             var loaders = settings.Loaders;
             var reach = TargetReach(target, normalisation);
             var warnings = new List<ValidationProblem>();
+            // Inside-out views: near/far from the target mean nothing; one plain warning replaces them.
+            var volume = VolumePlanning.InsideOutWarning(settings);
+            if (volume != null && (loaders & TargetLoaders.Nerf) != 0) warnings.Add(volume);
             foreach (var problem in LoaderRangeCheck.ForCapture(poses, normalisation, target.Centre, Radius(target)))
             {
                 var isRange = problem.Field == LoaderRangeCheck.Field + ".near" || problem.Field == LoaderRangeCheck.Field + ".far";
+                if (isRange && volume != null) continue;
                 var keep = isRange
                     ? (loaders & TargetLoaders.Nerf) != 0
                     : ((loaders & TargetLoaders.GaussianSplatting) != 0 && settings.PointCloudPoints == 0)

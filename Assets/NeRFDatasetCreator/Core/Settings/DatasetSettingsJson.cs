@@ -208,7 +208,7 @@ namespace NerfDatasetCreator
                 ["background"] = (t, p) =>
                 {
                     var background = BackgroundSettings.Parse(reader.String(t, p));
-                    if (background == null) throw reader.Error(t, p, "must be \"transparent\" or a colour \"#rrggbb\", not " + Describe(t) + ".");
+                    if (background == null) throw reader.Error(t, p, "must be \"transparent\", \"sky\" or a colour \"#rrggbb\", not " + Describe(t) + ".");
                     s.Background = background;
                 },
                 ["seed"] = (t, p) => s.Seed = reader.Long(t, p),

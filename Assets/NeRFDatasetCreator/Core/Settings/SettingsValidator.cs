@@ -65,7 +65,7 @@ namespace NerfDatasetCreator
                     "Lower the supersampling or the size so that size × supersampling ≤ " + DatasetSettings.MaxRenderSize + "."));
 
             var background = settings.Background ?? new BackgroundSettings();
-            if (!background.Transparent)
+            if (!background.Transparent && !background.Sky)
             {
                 Add(ValidationProblem.OutsideRange("background.r", background.R, 0, 1));
                 Add(ValidationProblem.OutsideRange("background.g", background.G, 0, 1));

@@ -1,5 +1,6 @@
 using System;
 using System.Globalization;
+using System.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -42,12 +43,20 @@ namespace NerfDatasetCreator
             return new PreviewPlanKey(text);
         }
 
-        /// <summary>The poses and fields of view read from the scene: moving a scene camera changes the key.</summary>
+        /// <summary>The poses and fields of view read from the scene, and the volume boxes: moving a scene camera or a box changes the key.</summary>
         static string SceneCamerasText(DatasetSettings settings)
         {
             var text = new System.Text.StringBuilder();
             foreach (var split in DatasetSplits.All)
             {
+                var volume = settings.Split(split)?.Source?.Volume;
+                if (volume != null)
+                {
+                    // Moving the box or any obstacle moves the volume's cameras.
+                    text.Append("|volume ").Append(DatasetSplits.Name(split));
+                    foreach (var box in new[] { volume.Box }.Concat(volume.Obstacles))
+                        text.Append(';').Append(box.Centre.ToString()).Append(box.Rotation.ToString()).Append(box.Size.ToString());
+                }
                 var cameras = settings.Split(split)?.Source?.SceneCameras;
                 if (cameras == null) continue;
                 text.Append('|').Append(DatasetSplits.Name(split));

@@ -7,12 +7,13 @@ namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// A split's camera source in the Rig step: its formation, the cameras of an existing dataset (a transforms JSON
-    /// file or a COLMAP text model folder), the cameras under a scene object, or an animated scene camera sampled over
-    /// its clip (see <see cref="CameraSourceSettings"/>). Scene objects are stored by hierarchy path, like the target.
+    /// file or a COLMAP text model folder), the cameras under a scene object, an animated scene camera sampled over
+    /// its clip, or cameras sampled inside a box looking out (see <see cref="CameraSourceSettings"/>). Scene objects are stored by hierarchy path, like the target.
     /// </summary>
     static class CameraSourceSection
     {
-        static readonly string[] KindLabels = { "Formation", "Imported cameras", "Scene cameras", "Animated camera" };
+        static readonly string[] KindLabels = { "Formation", "Imported cameras", "Scene cameras", "Animated camera", "Inside-out volume" };
+        static readonly string[] LookLabels = { "Horizontal ring", "Full sphere", "Forward with jitter" };
         static readonly string[] FileSplitLabels = { "All cameras", "train", "val", "test" };
         static readonly string[] FileSplitValues = { "", "train", "val", "test" };
         static readonly string[] SamplingLabels = { "Views spread evenly", "Every k-th frame" };
@@ -36,6 +37,9 @@ namespace NerfDatasetCreator.Editor
                     break;
                 case CameraSourceKind.AnimatedCamera:
                     DrawAnimated(c, source, field);
+                    break;
+                case CameraSourceKind.Volume:
+                    DrawVolume(c, split, source, field);
                     break;
                 default:
                     return false;
@@ -80,6 +84,29 @@ namespace NerfDatasetCreator.Editor
             ValidationMessages.For(c, field + ".start");
             ValidationMessages.For(c, field + ".end");
             DrawUseCameraIntrinsics(source);
+        }
+
+        static void DrawVolume(WindowContext c, DatasetSplit split, CameraSourceSettings source, string field)
+        {
+            source.ObjectPath = PickObject(c, "Capture box", "An object whose Transform (position, rotation, scale) is the box the cameras are sampled in; e.g. a scaled empty.", source.ObjectPath, typeof(GameObject));
+            ValidationMessages.For(c, field + ".box");
+            source.Look = (VolumeLook)EditorGUILayout.Popup(new GUIContent("Look", "Where each camera looks: level at a random heading, any direction, or along the box's blue (+Z) axis within the jitter."), (int)source.Look, LookLabels);
+            if (source.Look == VolumeLook.Forward)
+            {
+                source.JitterDegrees = EditorGUILayout.DoubleField(new GUIContent("Jitter (°)", "Largest tilt from the box's +Z."), source.JitterDegrees);
+                ValidationMessages.For(c, field + ".jitterDegrees");
+            }
+            source.Density = EditorGUILayout.DoubleField(new GUIContent("Density (per unit³)", "Cameras per cubic unit of the box; 0 to give the number of views."), source.Density);
+            ValidationMessages.For(c, field + ".density");
+            if (source.Density <= 0)
+            {
+                var splitSettings = c.Settings.Split(split);
+                splitSettings.Count = EditorGUILayout.IntField("Views", splitSettings.Count);
+                ValidationMessages.For(c, WindowFields.SplitField(split, "count"));
+            }
+            source.Clearance = EditorGUILayout.DoubleField(new GUIContent("Clearance", "Least distance from a camera to a collider's box; keep it above the near clip plane."), source.Clearance);
+            ValidationMessages.For(c, field + ".clearance");
+            EditorGUILayout.HelpBox("Positions inside an enabled, non-trigger collider (box, sphere, capsule, convex mesh) grown by the clearance are rejected; the plan's warnings count them.", MessageType.None);
         }
 
         static void DrawUseCameraIntrinsics(CameraSourceSettings source) =>

@@ -7,7 +7,8 @@ namespace NerfDatasetCreator.Editor
     /// <summary>
     /// Reads the scene for every split whose cameras come from it, before Core plans: the cameras under a parent
     /// (<see cref="CameraSourceKind.SceneCameras"/>) or the samples of an animated camera
-    /// (<see cref="AnimatedCameraSampler"/>), as <see cref="CameraSourceSettings.SceneCameras"/>, or the reason they
+    /// (<see cref="AnimatedCameraSampler"/>), as <see cref="CameraSourceSettings.SceneCameras"/>, a volume's box and
+    /// obstacles (<see cref="VolumeSource"/>) as <see cref="CameraSourceSettings.Volume"/>, or the reason they
     /// cannot be read as <see cref="CameraSourceSettings.SceneProblem"/>. The user's objects are only read.
     /// </summary>
     public static class SceneCameraSources
@@ -18,8 +19,13 @@ namespace NerfDatasetCreator.Editor
             foreach (var split in DatasetSplits.All)
             {
                 var source = settings.Split(split)?.Source;
-                if (source == null || !source.IsFromScene) continue;
                 var field = "splits." + DatasetSplits.Name(split) + ".source";
+                if (source != null && source.IsVolume)
+                {
+                    source.Volume = VolumeSource.Read(source.ObjectPath, field, out source.SceneProblem);
+                    continue;
+                }
+                if (source == null || !source.IsFromScene) continue;
                 source.SceneCameras = null;
                 source.SceneProblem = null;
                 if (source.Kind == CameraSourceKind.SceneCameras)

@@ -43,6 +43,13 @@ namespace NerfDatasetCreator.Editor.Capture
 
         public CaptureIsolation Isolation = CaptureIsolation.TargetOnly;
 
+        /// <summary>
+        /// Environment capture: the skybox material drawn behind everything (clear flags Skybox, through a Skybox
+        /// component on the capture camera); null for the difference-matting clears over black and white. With a sky
+        /// the colour pass renders once and that image is both halves of the matting pair, so alpha is 255 everywhere.
+        /// </summary>
+        public Material Skybox;
+
         /// <summary>TargetOnly mode: bring copies of the scene's enabled lights into the preview scene (else it is unlit but for ambient).</summary>
         public bool CopySceneLights = true;
 

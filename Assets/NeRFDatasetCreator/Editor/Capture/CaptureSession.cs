@@ -300,6 +300,21 @@ namespace NerfDatasetCreator.Editor.Capture
         static void RenderColour(Camera camera, RenderTargetSet targets)
         {
             if (targets.ColorOverBlack == null) return;
+            if (camera.clearFlags == CameraClearFlags.Skybox)
+            {
+                // An opaque sky (CaptureOptions.Skybox; CaptureStage sets these clear flags only then): the background
+                // colour is not drawn, so a second render would be the same image. Render once and copy it, exactly,
+                // as the other half: K = W gives alpha 1 and colour K in every sample (DifferenceMattingTests.
+                // ASkyRenderUsedAsBothHalvesIsOpaqueEverywhereEvenWhereItIsBlack). Same size and format: CopyTexture's
+                // requirements (Scripting API Graphics.CopyTexture); without copy support, render it twice.
+                Render(camera, targets.ColorOverBlack, OverBlack);
+                if (SystemInfo.copyTextureSupport != UnityEngine.Rendering.CopyTextureSupport.None)
+                    Graphics.CopyTexture(targets.ColorOverBlack, targets.ColorOverWhite);
+                else
+                    Render(camera, targets.ColorOverWhite, OverWhite);
+                camera.targetTexture = null;
+                return;
+            }
             // Difference matting: the same colour pass over two clears; Core solves alpha and colour from the pair.
             // Black and white are fixed points of the sRGB curve, so URP's conversion of the background colour
             // to the active colour space (URP 14 UniversalRenderPipeline.cs:1333) leaves them as they are.

@@ -270,6 +270,17 @@ namespace NerfDatasetCreator.Editor.Capture
             camera.renderingPath = RenderingPath.Forward; // deferred loses alpha and needs MRT formats we do not own
             camera.clearFlags = CameraClearFlags.SolidColor;
             camera.backgroundColor = new Color(0f, 0f, 0f, 0f);
+            if (options.Skybox != null)
+            {
+                // The sky of an environment capture. A Skybox component overrides the skybox its camera draws, in the
+                // Built-in pipeline and URP (Manual: class-Skybox); URP 14 draws it for clear flags Skybox when the
+                // camera has one even if RenderSettings.skybox is null (UniversalRenderer.cs:1106-1108), which the preview
+                // scene's own lighting settings leave it. CopyFrom copies no components, so a template's is not here.
+                camera.clearFlags = CameraClearFlags.Skybox;
+                var sky = camera.GetComponent<Skybox>();
+                if (sky == null) sky = camera.gameObject.AddComponent<Skybox>();
+                sky.material = options.Skybox;
+            }
             camera.allowHDR = false;
             camera.allowMSAA = false; // anti-aliasing is supersampling: MSAA would blend depth and normals
             camera.useOcclusionCulling = false;

@@ -58,6 +58,14 @@ namespace NerfDatasetCreator.Editor
             SceneCameraSources.Resolve(settings);
             settings = CameraSourcePlanning.Resolved(settings, out _);
             var options = OptionsFor(settings, template);
+            if (settings.Background != null && settings.Background.Sky)
+            {
+                options.Skybox = SkyboxOf(template);
+                if (options.Skybox == null)
+                    problems.Add(new ValidationProblem("background", "\"sky\"", "needs a skybox material, but " +
+                        (template != null ? "the template camera has no Skybox component and " : "") + "the active scene has none.",
+                        "Assign a Skybox Material in the Lighting window (Environment), or use \"transparent\" or a colour."));
+            }
             try
             {
                 CaptureSession.CheckTarget(target, options.Isolation);
@@ -251,10 +259,12 @@ namespace NerfDatasetCreator.Editor
         {
             if (!prepared.Run.WritesPointCloud) return null;
             var warnings = new List<ValidationProblem>();
-            // A dynamic capture's cloud is the surface at its first time step (the user's target is only read).
+            // A dynamic capture's cloud is the surface at its first time step (the user's target is only read); a
+            // whole-scene capture (an inside-out volume) samples every mesh it renders, not only the target's.
             var plan = prepared.Run.Plan;
-            prepared.Surface = TimeMeasurement.SurfaceAtStart(prepared.Target, plan.Time, plan.Settings.Seed, warnings)
-                               ?? TargetSurface.Collect(prepared.Target, warnings);
+            prepared.Surface = prepared.Options.Isolation == CaptureIsolation.WholeScene
+                ? TargetSurface.CollectScene(warnings)
+                : TimeMeasurement.SurfaceAtStart(prepared.Target, plan.Time, plan.Settings.Seed, warnings) ?? TargetSurface.Collect(prepared.Target, warnings);
             foreach (var warning in warnings) Debug.LogWarning("NeRF Dataset Creator: " + warning);
             var problems = TargetPointCloud.Check(prepared.Run.Plan.Settings, prepared.Surface);
             return problems.Count == 0 ? null : Refused(problems);
@@ -267,6 +277,17 @@ namespace NerfDatasetCreator.Editor
         }
 
         static IReadOnlyList<UnityPose> Poses(PreparedCapture prepared) => prepared.Run.Plan.Views.Select(v => v.Pose).ToList();
+
+        /// <summary>
+        /// The sky an environment capture draws: the template camera's own enabled Skybox component, which is what that
+        /// camera draws (Manual: class-Skybox), else the active scene's <c>RenderSettings.skybox</c> (read here, outside
+        /// any lighting override, so it is the user's scene's).
+        /// </summary>
+        static Material SkyboxOf(Camera template)
+        {
+            if (template != null && template.TryGetComponent<Skybox>(out var own) && own.enabled && own.material != null) return own.material;
+            return RenderSettings.skybox;
+        }
 
         static CaptureOptions OptionsFor(DatasetSettings settings, Camera template)
         {
@@ -286,6 +307,9 @@ namespace NerfDatasetCreator.Editor
                 NearClip = settings.Camera.NearClip,
                 FarClip = settings.Camera.FarClip,
                 TemplateCamera = template,
+                // Inside-out views need the surroundings: a dataset with a volume split copies every root object of the
+                // loaded scenes (the mask then covers all geometry), not just the target.
+                Isolation = splits.Any(s => s.Count > 0 && s.Source != null && s.Source.IsVolume) ? CaptureIsolation.WholeScene : CaptureIsolation.TargetOnly,
             };
         }
 

@@ -18,6 +18,23 @@ namespace NerfDatasetCreator.Editor
     {
         static readonly Vector3d Grey = new Vector3d(0.5, 0.5, 0.5);
 
+        /// <summary>
+        /// The meshes of every active root object of the loaded scenes — what a whole-scene capture copies and renders
+        /// (CaptureStage's sources: DontSave and inactive roots left out) — for an environment's points3d.ply.
+        /// </summary>
+        public static List<SurfaceMesh> CollectScene(List<ValidationProblem> warnings)
+        {
+            var meshes = new List<SurfaceMesh>();
+            for (var i = 0; i < UnityEngine.SceneManagement.SceneManager.sceneCount; i++)
+            {
+                var scene = UnityEngine.SceneManagement.SceneManager.GetSceneAt(i);
+                if (!scene.isLoaded) continue;
+                foreach (var root in scene.GetRootGameObjects())
+                    if ((root.hideFlags & HideFlags.DontSave) == 0 && root.activeInHierarchy) meshes.AddRange(Collect(root, warnings));
+            }
+            return meshes;
+        }
+
         /// <summary>The meshes; renderers that cannot be read add a warning instead.</summary>
         public static List<SurfaceMesh> Collect(GameObject target, List<ValidationProblem> warnings)
         {

@@ -69,8 +69,11 @@ namespace NerfDatasetCreator.Editor
             ValidationMessages.For(c, WindowFields.Supersampling);
 
             var background = s.Background ?? (s.Background = new BackgroundSettings());
-            background.Transparent = EditorGUILayout.Toggle("Transparent background", background.Transparent);
-            if (!background.Transparent)
+            var mode = EditorGUILayout.Popup(new GUIContent("Background", "Transparent (alpha 0, what object datasets use), a solid colour, or the scene's sky (environment capture: alpha 255 everywhere)."),
+                background.Transparent ? 0 : background.Sky ? 2 : 1, BackgroundLabels);
+            background.Transparent = mode == 0;
+            background.Sky = mode == 2;
+            if (mode == 1)
             {
                 var colour = EditorGUILayout.ColorField("Background colour", new Color((float)background.R, (float)background.G, (float)background.B, 1));
                 // The field shows and returns the sRGB components, which is what the config's "#rrggbb" holds.
@@ -80,6 +83,8 @@ namespace NerfDatasetCreator.Editor
             }
             ValidationMessages.For(c, WindowFields.Background);
         }
+
+        static readonly string[] BackgroundLabels = { "Transparent", "Solid colour", "Sky (skybox)" };
 
         static void CopyFrom(Camera source, CameraSettings target)
         {

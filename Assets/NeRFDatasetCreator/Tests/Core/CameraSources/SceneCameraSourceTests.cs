@@ -119,7 +119,7 @@ namespace NerfDatasetCreator.Tests
             Assert.That(new object[] { v.Kind, v.ObjectPath, v.UseCameraIntrinsics, v.Samples, v.FrameStep, v.FrameRate, v.Start, v.End },
                 Is.EqualTo(new object[] { CameraSourceKind.AnimatedCamera, "Flythrough/Camera", true, 30, 5, 24.0, 0.5, 7.25 }));
             var bad = Assert.Throws<SettingsFormatException>(() => DatasetSettingsJson.Read("{\"splits\": {\"test\": {\"source\": {\"kind\": \"spline\"}}}}"));
-            Assert.That(bad.Message, Does.Contain("\"sceneCameras\" or \"animatedCamera\""));
+            Assert.That(bad.Message, Does.Contain("\"animatedCamera\" or \"volume\""));
         }
 
         [Test]

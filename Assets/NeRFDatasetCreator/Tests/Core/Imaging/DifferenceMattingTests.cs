@@ -21,6 +21,19 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void ASkyRenderUsedAsBothHalvesIsOpaqueEverywhereEvenWhereItIsBlack()
+        {
+            // The sky background renders the colour pass once and hands the same image as both halves (K = W): T = 0,
+            // so alpha = 1 and colour = K in every sample — a black patch of sky is opaque black, not transparent,
+            // and an HDR sun above 1 is clamped after averaging. Linear 0.25 → 137 (see above).
+            var frame = Pair(3, 1, 1);
+            Sample(frame, 0, 0, black: new[] { 0f, 0f, 0f }, white: new[] { 0f, 0f, 0f });
+            Sample(frame, 1, 0, black: new[] { 0.25f, 0.5f, 1f }, white: new[] { 0.25f, 0.5f, 1f });
+            Sample(frame, 2, 0, black: new[] { 4f, 4f, 2f }, white: new[] { 4f, 4f, 2f });
+            Assert.That(Resolve(frame), Is.EqualTo(new byte[] { 0, 0, 0, 255, 137, 188, 255, 255, 255, 255, 255, 255 }));
+        }
+
+        [Test]
         public void EmptyPixelsAndLightWithoutCoverageAreFullyTransparentZeros()
         {
             // Left: nothing (K = 0, W = 1). Right: additive glow, K = 0.25, W = 1.25 → T = 1, alpha 0.

@@ -73,10 +73,20 @@ namespace NerfDatasetCreator.Tests
         {
             var bg = BackgroundSettings.Parse(text);
             Assert.That(bg.Transparent, Is.EqualTo(transparent));
+            Assert.That(bg.Sky, Is.False);
             Assert.That(bg.R, Is.EqualTo(r).Within(1e-12));
             Assert.That(bg.G, Is.EqualTo(g).Within(1e-12));
             Assert.That(bg.B, Is.EqualTo(b).Within(1e-12));
             Assert.That(bg.ToConfigString(), Is.EqualTo(text));
+        }
+
+        [Test]
+        public void SkyIsAnOpaqueBackgroundOfItsOwn()
+        {
+            var bg = BackgroundSettings.Parse("Sky");
+            Assert.That(new[] { bg.Sky, bg.Transparent }, Is.EqualTo(new[] { true, false }));
+            Assert.That(bg.ToConfigString(), Is.EqualTo("sky"));
+            Assert.That(bg.Clone().Sky, Is.True);
         }
 
         [TestCase("white")]
