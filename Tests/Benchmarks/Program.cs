@@ -130,6 +130,7 @@ namespace NerfDatasetCreator.Benchmarks
             Console.WriteLine("  image                     encoder                          KB      ms    MB/s");
             var encoders = new (string Key, string Name, PngCompression Compression, PngFilter Filter)[]
             {
+                ("lz77", "Lz77 (greedy, one candidate)", PngCompression.Lz77, PngFilter.Adaptive),
                 ("huffman", "Huffman (default)", PngCompression.Huffman, PngFilter.Adaptive),
                 ("zlib6", "DeflateStream Optimal, Sub (old)", PngCompression.Optimal, PngFilter.Sub),
                 ("zlib1", "DeflateStream Fastest, Sub", PngCompression.Fastest, PngFilter.Sub),

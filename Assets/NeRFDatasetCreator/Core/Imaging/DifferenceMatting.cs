@@ -44,6 +44,11 @@ namespace NerfDatasetCreator
             int k = frame.Supersampling, width = frame.Width;
             float inverseSamples = 1f / (k * k);
             ushort[] black = frame.ColorOverBlack, white = frame.ColorOverWhite;
+            if (!background.IsSolid && !frame.ColorIsGammaEncoded)
+            {
+                ResolveTransparentLinear(black, white, rgba, k, width, ow, oh);
+                return;
+            }
             float[] half = HalfFloat.Lookup;
             bool gamma = frame.ColorIsGammaEncoded;
             // The solid background in the space the GPU blends in: T·B must be added where the blend happened.
@@ -114,6 +119,129 @@ namespace NerfDatasetCreator
                     rgba[o + 3] = alpha > 255 ? (byte)255 : (byte)alpha;
                 }
             }
+        }
+
+        // Half bits: 1.0, and the exponent field (all ones: infinity or NaN).
+        const int HalfOne = 0x3C00, HalfExponent = 0x7C00;
+
+        /// <summary>
+        /// The transparent-background, linear-light case of <see cref="Resolve"/> (a Linear project's capture), with
+        /// the same arithmetic in the same order, so the bytes are identical: written out without calls (Mono does not
+        /// inline small methods) and, for k = 2, two whole-block tests first — the background (black over black, white
+        /// over white: alpha 0, written as 0,0,0,0) and fully covered blocks (both renders equal, finite: alpha 1,
+        /// T = 0, so each premultiplied colour is K itself and the colour is the mean of K).
+        /// </summary>
+        static void ResolveTransparentLinear(ushort[] black, ushort[] white, byte[] rgba, int k, int width, int ow, int oh)
+        {
+            float[] half = HalfFloat.Lookup;
+            byte[] encodeTable = Srgb.EncodeBucketLookup;
+            float[] threshold = Srgb.EncodeThresholdLookup;
+            float inverseSamples = 1f / (k * k);
+            int rowStride = width * 4;
+            for (int oy = 0; oy < oh; oy++)
+            {
+                int blockRow = RowOrder.SourceBlockRow(oy, oh, k);
+                int o = oy * ow * 4;
+                for (int ox = 0; ox < ow; ox++, o += 4)
+                {
+                    int first = blockRow * width + ox * k;
+                    float alphaSum = 0, r = 0, g = 0, b = 0;
+                    if (k == 2)
+                    {
+                        int c0 = first * 4, c1 = c0 + rowStride;
+                        if ((black[c0] | black[c0 + 1] | black[c0 + 2] | black[c0 + 4] | black[c0 + 5] | black[c0 + 6]
+                             | black[c1] | black[c1 + 1] | black[c1 + 2] | black[c1 + 4] | black[c1 + 5] | black[c1 + 6]) == 0
+                            && white[c0] == HalfOne && white[c0 + 1] == HalfOne && white[c0 + 2] == HalfOne
+                            && white[c0 + 4] == HalfOne && white[c0 + 5] == HalfOne && white[c0 + 6] == HalfOne
+                            && white[c1] == HalfOne && white[c1 + 1] == HalfOne && white[c1 + 2] == HalfOne
+                            && white[c1 + 4] == HalfOne && white[c1 + 5] == HalfOne && white[c1 + 6] == HalfOne)
+                        {
+                            rgba[o] = rgba[o + 1] = rgba[o + 2] = rgba[o + 3] = 0;
+                            continue;
+                        }
+                        if (white[c0] == black[c0] && white[c0 + 1] == black[c0 + 1] && white[c0 + 2] == black[c0 + 2]
+                            && white[c0 + 4] == black[c0 + 4] && white[c0 + 5] == black[c0 + 5] && white[c0 + 6] == black[c0 + 6]
+                            && white[c1] == black[c1] && white[c1 + 1] == black[c1 + 1] && white[c1 + 2] == black[c1 + 2]
+                            && white[c1 + 4] == black[c1 + 4] && white[c1 + 5] == black[c1 + 5] && white[c1 + 6] == black[c1 + 6]
+                            && ((black[c0] & HalfExponent) != HalfExponent) && ((black[c0 + 1] & HalfExponent) != HalfExponent)
+                            && ((black[c0 + 2] & HalfExponent) != HalfExponent) && ((black[c0 + 4] & HalfExponent) != HalfExponent)
+                            && ((black[c0 + 5] & HalfExponent) != HalfExponent) && ((black[c0 + 6] & HalfExponent) != HalfExponent)
+                            && ((black[c1] & HalfExponent) != HalfExponent) && ((black[c1 + 1] & HalfExponent) != HalfExponent)
+                            && ((black[c1 + 2] & HalfExponent) != HalfExponent) && ((black[c1 + 4] & HalfExponent) != HalfExponent)
+                            && ((black[c1 + 5] & HalfExponent) != HalfExponent) && ((black[c1 + 6] & HalfExponent) != HalfExponent))
+                        {
+                            // Per sample a = 1, t = 0 and (K + K + 0 − 0)·0.5 = K exactly; sums from +0 in the same order.
+                            r += half[black[c0]];
+                            g += half[black[c0 + 1]];
+                            b += half[black[c0 + 2]];
+                            r += half[black[c0 + 4]];
+                            g += half[black[c0 + 5]];
+                            b += half[black[c0 + 6]];
+                            r += half[black[c1]];
+                            g += half[black[c1 + 1]];
+                            b += half[black[c1 + 2]];
+                            r += half[black[c1 + 4]];
+                            g += half[black[c1 + 5]];
+                            b += half[black[c1 + 6]];
+                            alphaSum = 4;
+                        }
+                        else SumSamples(black, white, half, first, width, k, ref alphaSum, ref r, ref g, ref b);
+                    }
+                    else SumSamples(black, white, half, first, width, k, ref alphaSum, ref r, ref g, ref b);
+
+                    // round(255·mean alpha), halves up.
+                    int alpha = (int)(alphaSum * inverseSamples * 255f + 0.5f);
+                    if (alpha <= 0)
+                    {
+                        rgba[o] = rgba[o + 1] = rgba[o + 2] = rgba[o + 3] = 0;
+                        continue;
+                    }
+                    float unpremultiply = 1f / alphaSum;
+                    // Srgb.Encode written out.
+                    float v = r * unpremultiply;
+                    int e;
+                    if (!(v > 0)) rgba[o] = 0;
+                    else if (v >= 1) rgba[o] = 255;
+                    else { e = encodeTable[(int)(v * Srgb.EncodeBucketScale)]; rgba[o] = v >= threshold[e + 1] ? (byte)(e + 1) : (byte)e; }
+                    v = g * unpremultiply;
+                    if (!(v > 0)) rgba[o + 1] = 0;
+                    else if (v >= 1) rgba[o + 1] = 255;
+                    else { e = encodeTable[(int)(v * Srgb.EncodeBucketScale)]; rgba[o + 1] = v >= threshold[e + 1] ? (byte)(e + 1) : (byte)e; }
+                    v = b * unpremultiply;
+                    if (!(v > 0)) rgba[o + 2] = 0;
+                    else if (v >= 1) rgba[o + 2] = 255;
+                    else { e = encodeTable[(int)(v * Srgb.EncodeBucketScale)]; rgba[o + 2] = v >= threshold[e + 1] ? (byte)(e + 1) : (byte)e; }
+                    rgba[o + 3] = alpha > 255 ? (byte)255 : (byte)alpha;
+                }
+            }
+        }
+
+        /// <summary>The per-sample solve of <see cref="Resolve"/> (transparent, linear) over one k×k block, without calls.</summary>
+        static void SumSamples(ushort[] black, ushort[] white, float[] half, int first, int width, int k,
+            ref float alphaSum, ref float r, ref float g, ref float b)
+        {
+            float sa = alphaSum, sr = r, sg = g, sb = b;
+            for (int dy = 0; dy < k; dy++)
+            {
+                int c = (first + dy * width) * 4;
+                for (int dx = 0; dx < k; dx++, c += 4)
+                {
+                    float kr = half[black[c]], kg = half[black[c + 1]], kb = half[black[c + 2]];
+                    float tr = half[white[c]] - kr, tg = half[white[c + 1]] - kg, tb = half[white[c + 2]] - kb;
+                    float a = 1f - (tr + tg + tb) * (1f / 3f);
+                    a = a > 1 ? 1 : a > 0 ? a : 0; // Clamp01
+                    if (a <= 0) continue;
+                    float t = 1f - a;
+                    sa += a;
+                    sr += (kr + kr + tr - t) * 0.5f;
+                    sg += (kg + kg + tg - t) * 0.5f;
+                    sb += (kb + kb + tb - t) * 0.5f;
+                }
+            }
+            alphaSum = sa;
+            r = sr;
+            g = sg;
+            b = sb;
         }
 
         // NaN (a broken shader) becomes 0 rather than poisoning the sums.

@@ -29,10 +29,11 @@ namespace NerfDatasetCreator
         const ulong LaneSum = 0x0001000100010001UL;
 
         // RFC 1951 §3.2.5: the length symbol, its extra-bit count and its base length for every match length 3…258.
-        static readonly short[] LengthSymbolOf = new short[MaxMatch + 1];
-        static readonly byte[] LengthExtraBits = new byte[MaxMatch + 1];
-        static readonly short[] LengthExtraValue = new short[MaxMatch + 1];
-        static readonly byte[] SymbolExtraBits = new byte[LiteralLengthSymbols];
+        // Shared with Lz77Deflate.
+        internal static readonly short[] LengthSymbolOf = new short[MaxMatch + 1];
+        internal static readonly byte[] LengthExtraBits = new byte[MaxMatch + 1];
+        internal static readonly short[] LengthExtraValue = new short[MaxMatch + 1];
+        internal static readonly byte[] SymbolExtraBits = new byte[LiteralLengthSymbols];
 
         // Per word: one bit per byte (bit 0 of each byte), gathered into one byte by a multiplication, then the
         // zero bits (repeats) at its bottom and top from these tables; LowBytes[n] masks the lowest n bytes.
@@ -564,9 +565,9 @@ namespace NerfDatasetCreator
         /// and distance code lengths run-length coded with it (RFC 1951 §3.2.7). The distance code has two 1-bit codes
         /// (a complete code, which every inflater accepts), of which only the pixel size's is used.
         /// </summary>
-        sealed class CodeLengthHeader
+        internal sealed class CodeLengthHeader
         {
-            readonly int[] _tokens = new int[LiteralLengthSymbols + 4]; // symbol | extra value << 8
+            readonly int[] _tokens = new int[LiteralLengthSymbols + 32]; // symbol | extra value << 8
             readonly int[] _counts = new int[19];
             readonly byte[] _lengths = new byte[19];
             readonly int[] _codes = new int[19];
@@ -577,10 +578,18 @@ namespace NerfDatasetCreator
             internal void Build(byte[] literalLengths, int symbols, int bytesPerPixel)
             {
                 // Two 1-bit distance codes: distance 1 and the pixel size (distances 1–4 are codes 0–3).
-                _distanceCodes = bytesPerPixel > 1 ? bytesPerPixel : 2;
-                var distanceLengths = new byte[_distanceCodes];
+                int distanceCodes = bytesPerPixel > 1 ? bytesPerPixel : 2;
+                var distanceLengths = new byte[distanceCodes];
                 distanceLengths[0] = 1;
-                distanceLengths[_distanceCodes - 1] = 1;
+                distanceLengths[distanceCodes - 1] = 1;
+                Build(literalLengths, symbols, distanceLengths, distanceCodes);
+            }
+
+            /// <summary>The header for any literal/length and distance code lengths (unused trailing codes are cut).</summary>
+            internal void Build(byte[] literalLengths, int symbols, byte[] distanceLengths, int distanceSymbols)
+            {
+                _distanceCodes = distanceSymbols;
+                while (_distanceCodes > 1 && distanceLengths[_distanceCodes - 1] == 0) _distanceCodes--;
                 _literalCodes = symbols;
                 while (_literalCodes > 257 && literalLengths[_literalCodes - 1] == 0) _literalCodes--;
                 Array.Clear(_counts, 0, _counts.Length);

@@ -7,7 +7,8 @@ namespace NerfDatasetCreator
     /// <summary>
     /// Encodes PNG files (PNG specification, 3rd ed.): 8-bit gray, RGB, RGBA and 16-bit gray, non-interlaced, one
     /// IDAT chunk holding a zlib stream (RFC 1950). The DEFLATE data comes from this project's
-    /// <see cref="HuffmanDeflate"/> (the default, <see cref="PngCompression.Huffman"/>) or from
+    /// <see cref="HuffmanDeflate"/> (the default, <see cref="PngCompression.Huffman"/>), from its greedy LZ77
+    /// counterpart <see cref="Lz77Deflate"/> (<see cref="PngCompression.Lz77"/>: smaller files, half the speed) or from
     /// System.IO.Compression.DeflateStream (the other levels, kept as the reference the tests compare against).
     /// <para>
     /// Thread-safe: every call uses its own thread's scratch buffers ([ThreadStatic]) and shares only immutable
@@ -47,6 +48,8 @@ namespace NerfDatasetCreator
             public ulong[] WordRow = new ulong[0];
             public ulong[] WordRowAbove = new ulong[0];
             public readonly HuffmanDeflate Deflate = new HuffmanDeflate();
+            public readonly Lz77Deflate Lz77 = new Lz77Deflate();
+            public byte[] Stream = new byte[0];
         }
 
         [ThreadStatic] static Scratch scratch;
@@ -87,8 +90,8 @@ namespace NerfDatasetCreator
             InvalidParameterException.ThrowIfAny(
                 ValidationProblem.OutsideRange("width", width, 1, MaxDimension),
                 ValidationProblem.OutsideRange("height", height, 1, MaxDimension));
-            if (compression < PngCompression.Fastest || compression > PngCompression.Huffman)
-                throw new ArgumentOutOfRangeException(nameof(compression), compression, "Use Huffman, Fastest, Optimal or None.");
+            if (compression < PngCompression.Fastest || compression > PngCompression.Lz77)
+                throw new ArgumentOutOfRangeException(nameof(compression), compression, "Use Lz77, Huffman, Fastest, Optimal or None.");
             if (filter < PngFilter.None || filter > PngFilter.Adaptive)
                 throw new ArgumentOutOfRangeException(nameof(filter), filter, "Use None, Sub, Up, Average, Paeth or Adaptive.");
             long rowBytes = (long)width * BytesPerPixel(format);
@@ -116,9 +119,13 @@ namespace NerfDatasetCreator
             EnsureRows(s, rowBytes);
             // The Huffman path holds the whole filtered image and reads bytes as little-endian words; beyond an
             // array's reach (or on a big-endian machine, which Unity's editor never is), DeflateStream streams it.
-            if (compression == PngCompression.Huffman && (long)(rowBytes + 1) * height <= MaxHuffmanBytes && BitConverter.IsLittleEndian)
-                return EncodeHuffman(s, pixels, samples, width, height, format, filter);
-            if (compression == PngCompression.Huffman) compression = PngCompression.Optimal;
+            bool ours = compression == PngCompression.Huffman || compression == PngCompression.Lz77;
+            if (ours && (long)(rowBytes + 1) * height <= MaxHuffmanBytes && BitConverter.IsLittleEndian)
+            {
+                FilterIntoWords(s, pixels, samples, width, height, format, filter);
+                return compression == PngCompression.Huffman ? EncodeHuffman(s, width, height, format) : EncodeLz77(s, width, height, format);
+            }
+            if (ours) compression = PngCompression.Optimal;
             if (s.Batch.Length < rowBytes + 1) s.Batch = new byte[rowBytes + 1];
 
             var output = s.Output;
@@ -178,11 +185,10 @@ namespace NerfDatasetCreator
         const long MaxHuffmanBytes = 1L << 30;
 
         /// <summary>
-        /// Copies each row into 64-bit words, filters it there (<see cref="PngWordFilter"/>; Paeth, asked for by name,
-        /// byte-wise) into the thread's <see cref="HuffmanDeflate"/>, then writes the file array in one go: its exact
-        /// size is known once the codes are built.
+        /// Copies each row into 64-bit words and filters it there (<see cref="PngWordFilter"/>; Paeth, asked for by
+        /// name, byte-wise) into the thread's <see cref="HuffmanDeflate"/>.
         /// </summary>
-        static byte[] EncodeHuffman(Scratch s, byte[] pixels, ushort[] samples, int width, int height, PngPixelFormat format, PngFilter filter)
+        static void FilterIntoWords(Scratch s, byte[] pixels, ushort[] samples, int width, int height, PngPixelFormat format, PngFilter filter)
         {
             int bpp = BytesPerPixel(format);
             int rowBytes = width * bpp;
@@ -218,7 +224,12 @@ namespace NerfDatasetCreator
             }
             s.WordRow = row;
             s.WordRowAbove = above;
+        }
 
+        /// <summary>Writes the file array in one go: its exact size is known once the codes are built.</summary>
+        static byte[] EncodeHuffman(Scratch s, int width, int height, PngPixelFormat format)
+        {
+            var deflate = s.Deflate;
             int deflateBytes = deflate.Measure(out uint adler);
             const int headerBytes = 8 + 12 + 13;
             int idatData = 2 + deflateBytes + 4;
@@ -231,7 +242,45 @@ namespace NerfDatasetCreator
             file[idat + 8] = 0x78;
             file[idat + 9] = ZlibFlags(PngCompression.Huffman);
             deflate.Write(file, idat + 10);
-            PutUInt32(file, idat + 10 + deflateBytes, adler);
+            return FinishFile(file, idat, idatData, adler);
+        }
+
+        /// <summary>
+        /// The filtered rows (already in the thread's <see cref="HuffmanDeflate"/> words) laid out as the zlib payload —
+        /// each row's type byte, then its bytes — and compressed by <see cref="Lz77Deflate"/>.
+        /// </summary>
+        static byte[] EncodeLz77(Scratch s, int width, int height, PngPixelFormat format)
+        {
+            var words = s.Deflate;
+            int rowBytes = width * BytesPerPixel(format), rowWords = words.RowWords;
+            int length = (rowBytes + 1) * height;
+            if (s.Stream.Length < length) s.Stream = new byte[length];
+            byte[] stream = s.Stream;
+            for (int y = 0, at = 0; y < height; y++, at += rowBytes + 1)
+            {
+                stream[at] = words.Types[y];
+                Buffer.BlockCopy(words.Words, y * rowWords * 8, stream, at + 1, rowBytes);
+            }
+            uint adler = Adler32.Compute(stream, 0, length);
+            int deflateBytes = s.Lz77.Compress(stream, length);
+            const int headerBytes = 8 + 12 + 13;
+            int idatData = 2 + deflateBytes + 4;
+            var file = new byte[headerBytes + 12 + idatData + 12];
+            Buffer.BlockCopy(Signature, 0, file, 0, Signature.Length);
+            WriteHeader(file, 8, width, height, format);
+            int idat = headerBytes;
+            PutUInt32(file, idat, (uint)idatData);
+            PutType(file, idat + 4, "IDAT");
+            file[idat + 8] = 0x78;
+            file[idat + 9] = ZlibFlags(PngCompression.Lz77);
+            Buffer.BlockCopy(s.Lz77.Output, 0, file, idat + 10, deflateBytes);
+            return FinishFile(file, idat, idatData, adler);
+        }
+
+        /// <summary>The Adler-32 after the DEFLATE data, the IDAT's CRC and the IEND chunk.</summary>
+        static byte[] FinishFile(byte[] file, int idat, int idatData, uint adler)
+        {
+            PutUInt32(file, idat + 4 + idatData, adler);
             PutUInt32(file, idat + 8 + idatData, Crc32.Compute(file, idat + 4, 4 + idatData));
             int iend = idat + 12 + idatData;
             PutUInt32(file, iend, 0);
@@ -330,7 +379,8 @@ namespace NerfDatasetCreator
         // RFC 1950: FLEVEL (bits 6–7) records the effort; FCHECK makes (CMF·256 + FLG) a multiple of 31.
         static byte ZlibFlags(PngCompression compression)
         {
-            int level = compression == PngCompression.Optimal ? 2 : 0; // Huffman, Fastest and None: "fastest" (0)
+            // Optimal: "default" (2); Lz77: "fast" (1); Huffman, Fastest and None: "fastest" (0).
+            int level = compression == PngCompression.Optimal ? 2 : compression == PngCompression.Lz77 ? 1 : 0;
             int flags = level << 6;
             flags += 31 - (0x78 * 256 + flags) % 31;
             return (byte)flags;

@@ -155,7 +155,7 @@ namespace NerfDatasetCreator.Tests
         }
 
         /// <summary>Deterministic test images of the named kind, tightly packed, bytesPerPixel bytes per pixel.</summary>
-        static byte[] Make(string content, int width, int height, int bytesPerPixel, int seed)
+        internal static byte[] Make(string content, int width, int height, int bytesPerPixel, int seed)
         {
             var pixels = new byte[width * height * bytesPerPixel];
             var random = new SeededRandom(seed);

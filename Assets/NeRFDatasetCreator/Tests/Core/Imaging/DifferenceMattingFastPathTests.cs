@@ -1,0 +1,123 @@
+using System;
+using NUnit.Framework;
+
+namespace NerfDatasetCreator.Tests
+{
+    /// <summary>
+    /// The transparent, linear-light path of <see cref="DifferenceMatting.Resolve"/> (written out without calls, with
+    /// whole-block tests for the background and for fully covered blocks at k = 2) must give exactly the bytes of
+    /// the straightforward per-sample loop it replaced, kept here as <see cref="Reference"/>: on blocks that are
+    /// empty, fully covered, partly covered, tinted, negative, subnormal, ±0, infinite and NaN, for k = 1, 2, 3.
+    /// </summary>
+    public class DifferenceMattingFastPathTests
+    {
+        [TestCase(1, 0)]
+        [TestCase(2, 1)]
+        [TestCase(2, 2)]
+        [TestCase(2, 3)]
+        [TestCase(3, 4)]
+        public void BytesEqualThePerSampleLoop(int k, int seed)
+        {
+            const int outputWidth = 37, outputHeight = 23;
+            var frame = new RawFrame(outputWidth * k, outputHeight * k, k);
+            int samples = frame.Width * frame.Height;
+            frame.ColorOverBlack = new ushort[samples * 4];
+            frame.ColorOverWhite = new ushort[samples * 4];
+            var random = new SeededRandom(seed);
+            // Whole output blocks of one kind, so the k = 2 block tests see every case, plus mixed blocks.
+            for (int oy = 0; oy < outputHeight; oy++)
+                for (int ox = 0; ox < outputWidth; ox++)
+                {
+                    int kind = (int)(random.NextUInt64() % 10);
+                    for (int dy = 0; dy < k; dy++)
+                        for (int dx = 0; dx < k; dx++)
+                        {
+                            int p = ((oy * k + dy) * frame.Width + ox * k + dx) * 4;
+                            int sampleKind = kind == 7 ? (int)(random.NextUInt64() % 7) : kind >= 8 ? kind - 8 : kind;
+                            for (int c = 0; c < 4; c++)
+                            {
+                                Fill(sampleKind, c, random, out ushort black, out ushort white);
+                                frame.ColorOverBlack[p + c] = black;
+                                frame.ColorOverWhite[p + c] = white;
+                            }
+                        }
+                    if (kind >= 8)
+                    {
+                        // Background or fully covered but for one channel of one sample: the block tests must see it.
+                        int p = ((oy * k + (int)(random.NextUInt64() % (ulong)k)) * frame.Width + ox * k + (int)(random.NextUInt64() % (ulong)k)) * 4
+                                + (int)(random.NextUInt64() % 3);
+                        if (kind == 8) frame.ColorOverWhite[p] = (ushort)(random.NextUInt64() % 0x3C00);
+                        else frame.ColorOverWhite[p] = (ushort)(frame.ColorOverBlack[p] ^ (1 + (int)(random.NextUInt64() % 0x3FF)));
+                    }
+                }
+
+            var fast = new byte[outputWidth * outputHeight * 4];
+            DifferenceMatting.Resolve(frame, fast);
+            var expected = Reference(frame);
+            Assert.That(fast, Is.EqualTo(expected));
+            Assert.That(Array.FindAll(fast, b => b != 0).Length, Is.GreaterThan(fast.Length / 4), "the inputs cover something");
+        }
+
+        static void Fill(int kind, int channel, SeededRandom random, out ushort black, out ushort white)
+        {
+            ushort any = (ushort)random.NextUInt64();
+            ushort unit = (ushort)(0x3000 | (int)(random.NextUInt64() % 0xC00)); // [0.125, 1)
+            switch (kind)
+            {
+                case 0: black = 0; white = 0x3C00; break; // background
+                case 1: black = white = unit; break; // opaque
+                case 2: black = white = any; break; // opaque, any bits: negatives, subnormals, infinities, NaN
+                case 3: black = (ushort)(random.NextUInt64() % 2 == 0 ? 0x8000 : 0); white = 0x3C00; break; // ±0 background
+                case 4: black = (ushort)(unit >> 1 & 0x3BFF); white = unit; break; // partly covered
+                case 5: black = (ushort)(random.NextUInt64() % 0x400); white = (ushort)(0x3800 + random.NextUInt64() % 0x800); break; // subnormal over black
+                default: black = any; white = (ushort)random.NextUInt64(); break; // anything
+            }
+            if (channel == 3) { black = (ushort)random.NextUInt64(); white = (ushort)random.NextUInt64(); } // alpha is ignored
+        }
+
+        /// <summary>The per-sample loop of DifferenceMatting.Resolve before its fast path (transparent, linear light).</summary>
+        static byte[] Reference(RawFrame frame)
+        {
+            int ow = frame.OutputWidth, oh = frame.OutputHeight, k = frame.Supersampling, width = frame.Width;
+            var rgba = new byte[ow * oh * 4];
+            float inverseSamples = 1f / (k * k);
+            for (int oy = 0; oy < oh; oy++)
+            {
+                int blockRow = (oh - 1 - oy) * k;
+                int o = oy * ow * 4;
+                for (int ox = 0; ox < ow; ox++, o += 4)
+                {
+                    int first = blockRow * width + ox * k;
+                    float alphaSum = 0, r = 0, g = 0, b = 0;
+                    for (int dy = 0; dy < k; dy++)
+                    {
+                        int c = (first + dy * width) * 4;
+                        for (int dx = 0; dx < k; dx++, c += 4)
+                        {
+                            float kr = HalfFloat.ToFloat(frame.ColorOverBlack[c]), kg = HalfFloat.ToFloat(frame.ColorOverBlack[c + 1]), kb = HalfFloat.ToFloat(frame.ColorOverBlack[c + 2]);
+                            float tr = HalfFloat.ToFloat(frame.ColorOverWhite[c]) - kr, tg = HalfFloat.ToFloat(frame.ColorOverWhite[c + 1]) - kg, tb = HalfFloat.ToFloat(frame.ColorOverWhite[c + 2]) - kb;
+                            float a = Clamp01(1f - (tr + tg + tb) * (1f / 3f));
+                            if (a <= 0) continue;
+                            float t = 1f - a;
+                            float pr = (kr + kr + tr - t) * 0.5f, pg = (kg + kg + tg - t) * 0.5f, pb = (kb + kb + tb - t) * 0.5f;
+                            alphaSum += a;
+                            r += pr;
+                            g += pg;
+                            b += pb;
+                        }
+                    }
+                    int alpha = (int)(alphaSum * inverseSamples * 255f + 0.5f);
+                    if (alpha <= 0) continue;
+                    float unpremultiply = 1f / alphaSum;
+                    rgba[o] = Srgb.Encode(r * unpremultiply);
+                    rgba[o + 1] = Srgb.Encode(g * unpremultiply);
+                    rgba[o + 2] = Srgb.Encode(b * unpremultiply);
+                    rgba[o + 3] = alpha > 255 ? (byte)255 : (byte)alpha;
+                }
+            }
+            return rgba;
+        }
+
+        static float Clamp01(float v) => v > 1 ? 1 : v > 0 ? v : 0;
+    }
+}
