@@ -118,6 +118,19 @@ namespace NerfDatasetCreator
             return new ImportedSplit(new ImportedPoses(source.ObjectPath, Format, cameras, null, warnings), cameras, field);
         }
 
+        /// <summary>The box of every split with views that samples an inside-out volume, in the Unity world, train first.</summary>
+        public static IReadOnlyList<KeyValuePair<DatasetSplit, OrientedBox>> Boxes(CapturePlan plan)
+        {
+            var boxes = new List<KeyValuePair<DatasetSplit, OrientedBox>>();
+            foreach (var split in DatasetSplits.All)
+            {
+                var source = plan.Settings.Split(split)?.Source;
+                if (source == null || !source.IsVolume || source.Volume == null || !plan.ViewsOf(split).Any()) continue;
+                boxes.Add(new KeyValuePair<DatasetSplit, OrientedBox>(split, source.Volume.Box));
+            }
+            return boxes;
+        }
+
         /// <summary>
         /// For NeRF's Blender loaders, when a split with views is an inside-out volume: they sample every ray only
         /// between near 2 and far 6 (<see cref="LoaderRangeCheck"/>), which an environment seen from inside does not

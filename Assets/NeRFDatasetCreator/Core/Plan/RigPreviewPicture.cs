@@ -72,17 +72,8 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>The box of every split with views that samples an inside-out volume, in the plan's output frame.</summary>
-        public static IReadOnlyList<PictureBox> VolumeBoxes(CapturePlan plan)
-        {
-            var boxes = new List<PictureBox>();
-            foreach (var split in DatasetSplits.All)
-            {
-                var source = plan.Settings.Split(split)?.Source;
-                if (source == null || !source.IsVolume || source.Volume == null || !plan.ViewsOf(split).Any()) continue;
-                boxes.Add(PictureBox.FromUnity(split, source.Volume.Box, plan.Normalisation));
-            }
-            return boxes;
-        }
+        public static IReadOnlyList<PictureBox> VolumeBoxes(CapturePlan plan) =>
+            VolumePlanning.Boxes(plan).Select(b => PictureBox.FromUnity(b.Key, b.Value, plan.Normalisation)).ToList();
 
         /// <summary>
         /// Draws cameras (output camera-to-world matrices) around a target centre (output frame) with its bounding
