@@ -11,7 +11,7 @@ namespace NerfDatasetCreator
     /// <c>{"kind": "imported", "path", "fileSplit", "useFileIntrinsics"}</c>,
     /// <c>{"kind": "sceneCameras", "parent", "useCameraIntrinsics"}</c>,
     /// <c>{"kind": "animatedCamera", "camera", "useCameraIntrinsics", "samples", "frameStep", "frameRate", "start", "end"}</c>.
-    /// <c>{"kind": "volume", "box", "look", "density", "jitterDegrees", "clearance"}</c>, and <c>"path"</c> with look "path".
+    /// <c>{"kind": "volume", "box", "look", "density", "jitterDegrees", "clearance"}</c>, and <c>"waypoints"</c> with look "path".
     /// Reading accepts every key whatever the kind (they are ignored by other kinds) and goes through
     /// <see cref="DatasetSettingsJson"/>'s reader, so errors and unknown keys are reported alike.
     /// </summary>
@@ -50,7 +50,7 @@ namespace NerfDatasetCreator
                 w.WritePropertyName("clearance"); JsonNumbers.Write(w, s.Clearance);
                 if (s.Look == VolumeLook.Path)
                 {
-                    w.WritePropertyName("path"); w.WriteValue(s.PathObject ?? "");
+                    w.WritePropertyName("waypoints"); w.WriteValue(s.PathObject ?? "");
                 }
             }
             w.WriteEndObject();
@@ -91,7 +91,8 @@ namespace NerfDatasetCreator
                 ["density"] = (t, p) => s.Density = readDouble(t, p),
                 ["jitterDegrees"] = (t, p) => s.JitterDegrees = readDouble(t, p),
                 ["clearance"] = (t, p) => s.Clearance = readDouble(t, p),
-                ["path"] = (t, p) => s.PathObject = readString(t, p),
+                // Not "path": an imported source's file path has that key in the same reader.
+                ["waypoints"] = (t, p) => s.PathObject = readString(t, p),
             }, "");
         }
     }

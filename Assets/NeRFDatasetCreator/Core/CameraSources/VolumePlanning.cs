@@ -56,7 +56,7 @@ namespace NerfDatasetCreator
                 yield return new ValidationProblem(field + ".density", ValidationProblem.Format(s.Density), "must be 0 (use the split's count) or a positive number of cameras per cubic unit.",
                     "Use 0 or a positive number.");
             if (s.Look == VolumeLook.Path && string.IsNullOrWhiteSpace(s.PathObject))
-                yield return new ValidationProblem(field + ".path", "\"\"", "is empty; look \"path\" needs the object whose children are the waypoints.",
+                yield return new ValidationProblem(field + ".waypoints", "\"\"", "is empty; look \"path\" needs the object whose children are the waypoints.",
                     "Give the hierarchy path of an object whose children, in hierarchy order, mark the path (e.g. \"Flythrough\").");
             if (s.Look == VolumeLook.Path && s.Density > 0)
                 yield return new ValidationProblem(field + ".density", ValidationProblem.Format(s.Density), "counts cameras per cubic unit of the box, which a path does not fill.",
@@ -152,7 +152,7 @@ namespace NerfDatasetCreator
             try { path = new CatmullRomPath(scene.Waypoints ?? Array.Empty<Vector3d>()); }
             catch (ArgumentException)
             {
-                problems.Add(new ValidationProblem(field + ".path", source.PathObject,
+                problems.Add(new ValidationProblem(field + ".waypoints", source.PathObject,
                     "has " + (scene.Waypoints?.Count ?? 0) + " children at distinct places; a path needs at least two waypoints.",
                     "Add child objects under it, in the order the cameras should pass them."));
                 return null;
@@ -169,7 +169,7 @@ namespace NerfDatasetCreator
                         break;
                     }
             if (inside.Count > 0)
-                warnings.Add(new ValidationProblem(field + ".path", source.PathObject,
+                warnings.Add(new ValidationProblem(field + ".waypoints", source.PathObject,
                     "puts " + inside.Values.Sum() + " of " + count + " cameras inside an obstacle or nearer than " + ValidationProblem.Format(source.Clearance) +
                     " to one (" + string.Join(", ", inside.OrderByDescending(p => p.Value).Take(3).Select(p => (p.Key.Length > 0 ? p.Key : "unnamed") + " " + p.Value)) + ").",
                     "Move the waypoints into open space; the path's cameras are kept where it puts them."));

@@ -94,7 +94,7 @@ namespace NerfDatasetCreator.Editor
             if (source.Look == VolumeLook.Path)
             {
                 source.PathObject = PickObject(c, "Waypoints", "An object whose children, in hierarchy order, are the path's waypoints; the cameras are spread evenly along a smooth curve through them.", source.PathObject, typeof(GameObject));
-                ValidationMessages.For(c, field + ".path");
+                ValidationMessages.For(c, field + ".waypoints");
             }
             if (source.Look == VolumeLook.Forward || source.Look == VolumeLook.Path)
             {

@@ -52,7 +52,7 @@ namespace NerfDatasetCreator.Editor
                 var pathObject = SceneObjects.Find(waypointsPath);
                 if (pathObject == null)
                 {
-                    problem = new ValidationProblem(field + ".path", waypointsPath, "names no object in the open scenes.",
+                    problem = new ValidationProblem(field + ".waypoints", waypointsPath, "names no object in the open scenes.",
                         "Give the hierarchy path of the object whose children are the waypoints (e.g. \"Flythrough\"), with its scene open.");
                     return null;
                 }

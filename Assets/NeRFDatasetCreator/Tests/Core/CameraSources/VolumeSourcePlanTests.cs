@@ -197,20 +197,20 @@ namespace NerfDatasetCreator.Tests
             var plan = CapturePlan.Build(WithPath(Waypoints, crate), PlanTarget.AtOrigin);
             Assert.That(plan.ViewsOf(DatasetSplit.Train).Count(), Is.EqualTo(9));
             // Crate ±0.5 grown by the clearance 0.25: x = 0 only (±1 are outside ±0.75).
-            var warning = plan.Warnings.Single(w => w.Field == "splits.train.source.path");
+            var warning = plan.Warnings.Single(w => w.Field == "splits.train.source.waypoints");
             Assert.That(warning.Reason, Does.Contain("puts 1 of 9 cameras").And.Contain("Props/Crate 1"));
         }
 
         [Test]
         public void APathNeedsItsWaypointsAndUsesTheCount()
         {
-            Assert.That(CapturePlan.Check(WithPath(new[] { Waypoints[0] }), PlanTarget.AtOrigin).Select(p => p.Field), Has.Member("splits.train.source.path"));
+            Assert.That(CapturePlan.Check(WithPath(new[] { Waypoints[0] }), PlanTarget.AtOrigin).Select(p => p.Field), Has.Member("splits.train.source.waypoints"));
             var s = WithPath(Waypoints);
             s.Train.Source.Density = 2;
             Assert.That(CapturePlan.Check(s, PlanTarget.AtOrigin).Select(p => p.Field), Has.Member("splits.train.source.density"));
             s.Train.Source.Density = 0;
             s.Train.Source.PathObject = " ";
-            Assert.That(CapturePlan.Check(s, PlanTarget.AtOrigin).Select(p => p.Field), Has.Member("splits.train.source.path"));
+            Assert.That(CapturePlan.Check(s, PlanTarget.AtOrigin).Select(p => p.Field), Has.Member("splits.train.source.waypoints"));
         }
 
         [Test]
@@ -218,7 +218,7 @@ namespace NerfDatasetCreator.Tests
         {
             var text = DatasetSettingsJson.Write(WithPath(Waypoints));
             Assert.That(JObject.Parse(text)["splits"]["train"]["source"].ToString(Newtonsoft.Json.Formatting.None),
-                Is.EqualTo("{\"kind\":\"volume\",\"box\":\"CaptureVolume\",\"look\":\"path\",\"density\":0.0,\"jitterDegrees\":0.0,\"clearance\":0.25,\"path\":\"Flythrough\"}"));
+                Is.EqualTo("{\"kind\":\"volume\",\"box\":\"CaptureVolume\",\"look\":\"path\",\"density\":0.0,\"jitterDegrees\":0.0,\"clearance\":0.25,\"waypoints\":\"Flythrough\"}"));
             var read = DatasetSettingsJson.Read(text).Settings.Train.Source;
             Assert.That(new object[] { read.Look, read.PathObject }, Is.EqualTo(new object[] { VolumeLook.Path, "Flythrough" }));
         }

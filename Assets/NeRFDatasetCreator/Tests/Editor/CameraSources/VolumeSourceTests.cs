@@ -103,7 +103,7 @@ namespace NerfDatasetCreator.Editor.Tests.CameraSources
 
                 settings.Train.Source.PathObject = "Missing";
                 SceneCameraSources.Resolve(settings);
-                Assert.That(settings.Train.Source.SceneProblem.Field, Is.EqualTo("splits.train.source.path"));
+                Assert.That(settings.Train.Source.SceneProblem.Field, Is.EqualTo("splits.train.source.waypoints"));
             }
             finally
             {
