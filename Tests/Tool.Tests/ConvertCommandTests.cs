@@ -51,6 +51,34 @@ namespace NerfDatasetCreator.Tool.Tests
         }
 
         [Test]
+        public void AnInsideOutCaptureIsTrainedWithSceneContractionCentredOnItsCameras()
+        {
+            // The config records a volume split and the environment's size: a 10-unit sphere at the Unity origin, no normalisation.
+            File.WriteAllText(Path.Combine(_dataset, "dataset_config.json"),
+                "{\"target\": {\"unityCentre\": [0, 0, 0], \"boundingRadius\": 10}, \"settings\": {\"splits\": {\"train\": {\"source\": {\"kind\": \"volume\", \"box\": \"Room\"}}}}}");
+            var run = ToolRun.Of("convert", _dataset, "--to", "nerfstudio");
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.ToString());
+            var file = Path.Combine(_dataset, "transforms.json");
+            // Independently of Core: nerfstudio-data's centre and scale of these cameras, then instant-ngp's box
+            // (reach + |mean|) · scale rounded up to 2 significant digits.
+            var centres = Centres(Json(file));
+            var mean = new double[3];
+            foreach (var c in centres) for (var k = 0; k < 3; k++) mean[k] += c[k] / centres.Length;
+            var largest = centres.Max(c => Enumerable.Range(0, 3).Max(k => System.Math.Abs(c[k] - mean[k])));
+            var box = (10 + System.Math.Sqrt(mean.Sum(m => m * m))) / largest;
+            var unit = System.Math.Pow(10, System.Math.Floor(System.Math.Log10(box)) - 1);
+            var sceneScale = System.Math.Ceiling(box / unit - 1e-9) * unit;
+            var flags = "nerfstudio-data --orientation-method none --center-method poses --auto-scale-poses True";
+            Assert.That(run.Out, Does.EndWith(
+                "train with: ns-train nerfacto --pipeline.model.disable-scene-contraction False --data " + file + " " + flags + "\n" +
+                "train with: ns-train splatfacto --data " + file + " " + flags + "\n" +
+                "train with: ns-train instant-ngp --pipeline.model.disable-scene-contraction False --data " + file + " " + flags +
+                " --scene-scale " + sceneScale.ToString("0.##########", System.Globalization.CultureInfo.InvariantCulture) + "\n"));
+            Assert.That(sceneScale, Is.GreaterThan(1), "the environment reaches beyond the cameras");
+            Assert.That(run.Err, Does.Contain("dataparser_transforms.json"), "camera paths must be mapped into the model's frame");
+        }
+
+        [Test]
         public void NgpGetsItsOwnFolderWithTheTrainFramesOnly()
         {
             var run = ToolRun.Of("convert", _dataset, "--to=ngp");

@@ -11,7 +11,7 @@ namespace NerfDatasetCreator
     /// <c>{"kind": "imported", "path", "fileSplit", "useFileIntrinsics"}</c>,
     /// <c>{"kind": "sceneCameras", "parent", "useCameraIntrinsics"}</c>,
     /// <c>{"kind": "animatedCamera", "camera", "useCameraIntrinsics", "samples", "frameStep", "frameRate", "start", "end"}</c>.
-    /// <c>{"kind": "volume", "box", "look", "density", "jitterDegrees", "clearance"}</c>.
+    /// <c>{"kind": "volume", "box", "look", "density", "jitterDegrees", "clearance"}</c>, and <c>"waypoints"</c> with look "path".
     /// Reading accepts every key whatever the kind (they are ignored by other kinds) and goes through
     /// <see cref="DatasetSettingsJson"/>'s reader, so errors and unknown keys are reported alike.
     /// </summary>
@@ -48,6 +48,10 @@ namespace NerfDatasetCreator
                 w.WritePropertyName("density"); JsonNumbers.Write(w, s.Density);
                 w.WritePropertyName("jitterDegrees"); JsonNumbers.Write(w, s.JitterDegrees);
                 w.WritePropertyName("clearance"); JsonNumbers.Write(w, s.Clearance);
+                if (s.Look == VolumeLook.Path)
+                {
+                    w.WritePropertyName("waypoints"); w.WriteValue(s.PathObject ?? "");
+                }
             }
             w.WriteEndObject();
         }
@@ -81,12 +85,14 @@ namespace NerfDatasetCreator
                 ["look"] = (t, p) =>
                 {
                     if (!VolumePlanning.TryParseLook(readString(t, p), out var look))
-                        throw error(t, p, "must be \"ring\", \"sphere\" or \"forward\", not \"" + (string)t + "\".");
+                        throw error(t, p, "must be \"ring\", \"sphere\", \"forward\" or \"path\", not \"" + (string)t + "\".");
                     s.Look = look;
                 },
                 ["density"] = (t, p) => s.Density = readDouble(t, p),
                 ["jitterDegrees"] = (t, p) => s.JitterDegrees = readDouble(t, p),
                 ["clearance"] = (t, p) => s.Clearance = readDouble(t, p),
+                // Not "path": an imported source's file path has that key in the same reader.
+                ["waypoints"] = (t, p) => s.PathObject = readString(t, p),
             }, "");
         }
     }

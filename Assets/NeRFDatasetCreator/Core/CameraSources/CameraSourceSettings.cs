@@ -81,6 +81,9 @@ namespace NerfDatasetCreator
         /// <summary>Volume, <see cref="VolumeLook.Forward"/>: the largest tilt from the box's +Z, in degrees.</summary>
         public double JitterDegrees = 10;
 
+        /// <summary>Volume, <see cref="VolumeLook.Path"/>: the hierarchy path of the object whose children, in order, are the waypoints.</summary>
+        public string PathObject = "";
+
         /// <summary>Volume: the least distance, in Unity units, from a camera to an obstacle box (keeps the near clip plane out of walls).</summary>
         public double Clearance = 0.25;
 

@@ -8,14 +8,18 @@ namespace NerfDatasetCreator
     /// <summary>What the Unity editor read for a volume source: the capture box and the obstacle boxes of the scene.</summary>
     public sealed class VolumeScene
     {
-        public VolumeScene(OrientedBox box, IReadOnlyList<OrientedBox> obstacles)
+        public VolumeScene(OrientedBox box, IReadOnlyList<OrientedBox> obstacles, IReadOnlyList<Vector3d> waypoints = null)
         {
             Box = box ?? throw new ArgumentNullException(nameof(box));
             Obstacles = obstacles ?? Array.Empty<OrientedBox>();
+            Waypoints = waypoints;
         }
 
         public OrientedBox Box { get; }
         public IReadOnlyList<OrientedBox> Obstacles { get; }
+
+        /// <summary><see cref="VolumeLook.Path"/>: the waypoint object's children's world positions in order; null otherwise.</summary>
+        public IReadOnlyList<Vector3d> Waypoints { get; }
     }
 
     /// <summary>
@@ -29,7 +33,7 @@ namespace NerfDatasetCreator
         /// <summary>The <see cref="ImportedPoses.Format"/> of volume cameras.</summary>
         public const string Format = "volume";
 
-        static readonly string[] LookNames = { "ring", "sphere", "forward" };
+        static readonly string[] LookNames = { "ring", "sphere", "forward", "path" };
 
         public static string LookName(VolumeLook look) => LookNames[(int)look];
 
@@ -51,6 +55,12 @@ namespace NerfDatasetCreator
             if (double.IsNaN(s.Density) || double.IsInfinity(s.Density) || s.Density < 0)
                 yield return new ValidationProblem(field + ".density", ValidationProblem.Format(s.Density), "must be 0 (use the split's count) or a positive number of cameras per cubic unit.",
                     "Use 0 or a positive number.");
+            if (s.Look == VolumeLook.Path && string.IsNullOrWhiteSpace(s.PathObject))
+                yield return new ValidationProblem(field + ".waypoints", "\"\"", "is empty; look \"path\" needs the object whose children are the waypoints.",
+                    "Give the hierarchy path of an object whose children, in hierarchy order, mark the path (e.g. \"Flythrough\").");
+            if (s.Look == VolumeLook.Path && s.Density > 0)
+                yield return new ValidationProblem(field + ".density", ValidationProblem.Format(s.Density), "counts cameras per cubic unit of the box, which a path does not fill.",
+                    "Use 0 and the split's count for cameras along a path.");
             if (!(s.JitterDegrees >= 0 && s.JitterDegrees <= 180))
                 yield return ValidationProblem.OutsideRange(field + ".jitterDegrees", s.JitterDegrees, 0, 180, "°");
             if (double.IsNaN(s.Clearance) || double.IsInfinity(s.Clearance) || s.Clearance < 0)
@@ -96,6 +106,7 @@ namespace NerfDatasetCreator
                 return null;
             }
             var count = (int)wanted;
+            if (source.Look == VolumeLook.Path) return AlongPath(source, scene, field, count, seed, splitName, problems);
             var sample = VolumeSampling.Sample(box, scene.Obstacles, source.Clearance, count, source.Look, source.JitterDegrees, seed);
             if (sample.Poses.Count < count)
             {
@@ -116,6 +127,55 @@ namespace NerfDatasetCreator
             // Normalisation null: the cameras are in the raw output world, so PosePlacement.ToOutput applies the
             // dataset's normalisation to them as to a formation's poses.
             return new ImportedSplit(new ImportedPoses(source.ObjectPath, Format, cameras, null, warnings), cameras, field);
+        }
+
+        /// <summary>The box of every split with views that samples an inside-out volume, in the Unity world, train first.</summary>
+        public static IReadOnlyList<KeyValuePair<DatasetSplit, OrientedBox>> Boxes(CapturePlan plan)
+        {
+            var boxes = new List<KeyValuePair<DatasetSplit, OrientedBox>>();
+            foreach (var split in DatasetSplits.All)
+            {
+                var source = plan.Settings.Split(split)?.Source;
+                if (source == null || !source.IsVolume || source.Volume == null || !plan.ViewsOf(split).Any()) continue;
+                boxes.Add(new KeyValuePair<DatasetSplit, OrientedBox>(split, source.Volume.Box));
+            }
+            return boxes;
+        }
+
+        /// <summary>
+        /// <see cref="VolumeLook.Path"/>: <paramref name="count"/> cameras along the waypoints' spline. The path is the
+        /// user's, so a camera inside an obstacle is not moved or dropped but counted in a warning that names it.
+        /// </summary>
+        static ImportedSplit AlongPath(CameraSourceSettings source, VolumeScene scene, string field, int count, long seed, string splitName, List<ValidationProblem> problems)
+        {
+            CatmullRomPath path;
+            try { path = new CatmullRomPath(scene.Waypoints ?? Array.Empty<Vector3d>()); }
+            catch (ArgumentException)
+            {
+                problems.Add(new ValidationProblem(field + ".waypoints", source.PathObject,
+                    "has " + (scene.Waypoints?.Count ?? 0) + " children at distinct places; a path needs at least two waypoints.",
+                    "Add child objects under it, in the order the cameras should pass them."));
+                return null;
+            }
+            var poses = PathSampling.Sample(path, count, source.JitterDegrees, seed);
+            var warnings = new List<ValidationProblem>();
+            var inside = new Dictionary<string, int>();
+            foreach (var pose in poses)
+                foreach (var o in scene.Obstacles)
+                    if (o.Contains(pose.Position, source.Clearance))
+                    {
+                        inside.TryGetValue(o.Name, out var n);
+                        inside[o.Name] = n + 1;
+                        break;
+                    }
+            if (inside.Count > 0)
+                warnings.Add(new ValidationProblem(field + ".waypoints", source.PathObject,
+                    "puts " + inside.Values.Sum() + " of " + count + " cameras inside an obstacle or nearer than " + ValidationProblem.Format(source.Clearance) +
+                    " to one (" + string.Join(", ", inside.OrderByDescending(p => p.Value).Take(3).Select(p => (p.Key.Length > 0 ? p.Key : "unnamed") + " " + p.Value)) + ").",
+                    "Move the waypoints into open space; the path's cameras are kept where it puts them."));
+            var cameras = poses.Select((pose, i) => new ImportedCamera(splitName + "_" + i.ToString(CultureInfo.InvariantCulture), null,
+                BlenderConvention.CameraToWorld(pose), pose, null)).ToList();
+            return new ImportedSplit(new ImportedPoses(source.PathObject, Format, cameras, null, warnings), cameras, field);
         }
 
         /// <summary>

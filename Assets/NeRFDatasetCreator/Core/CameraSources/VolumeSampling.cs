@@ -14,6 +14,12 @@ namespace NerfDatasetCreator
 
         /// <summary>Along the box's +Z, tilted by up to the jitter angle, uniform over that cone.</summary>
         Forward,
+
+        /// <summary>
+        /// Not in the box: along a spline through the children of a waypoint object (<see cref="PathSampling"/>), evenly
+        /// by arc length, looking forward along it with the jitter.
+        /// </summary>
+        Path,
     }
 
     /// <summary>The cameras <see cref="VolumeSampling.Sample"/> kept and how many positions it threw away.</summary>

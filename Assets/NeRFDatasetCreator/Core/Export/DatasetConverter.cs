@@ -85,10 +85,16 @@ namespace NerfDatasetCreator
             var file = Path.Combine(outDir, NerfstudioWriter.FileName);
             EnsureAbsent(file);
             warnings.AddRange(NerfstudioWriter.Warnings(scene));
+            if (scene.InsideOut)
+                warnings.Add(new ValidationProblem("camera_paths", NerfstudioWriter.FileName,
+                    "belongs to an inside-out environment capture: the suggested commands let nerfstudio-data centre the poses on the mean camera and scale the cameras into ±1, nerfacto's uncontracted region, so the model's frame is not the file's.",
+                    "Map camera_paths/*.json into the model's frame with the run's dataparser_transforms.json (Core's NerfstudioDataparserTransform) before ns-render, or train with the object flags (--center-method none --auto-scale-poses False) and accept a contracted room."));
             var text = ExportJson.Serialise(NerfstudioWriter.Build(scene, outDir));
             staged.WriteNewText(file, text);
             return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Nerfstudio, warnings, staged)).ToList(), warnings,
-                NerfstudioTraining.Commands(file, scene.TargetReach));
+                scene.InsideOut
+                    ? NerfstudioTraining.EnvironmentCommands(file, scene.Frames.Select(f => f.CameraToWorld.Translation).ToList(), scene.TargetReach)
+                    : NerfstudioTraining.Commands(file, scene.TargetReach));
         }
 
         static ConversionResult ToNgp(ExportScene scene, string outDir, double? sceneRadius, List<ValidationProblem> warnings, StagedOutput staged)

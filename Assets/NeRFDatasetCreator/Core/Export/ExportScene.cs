@@ -12,7 +12,7 @@ namespace NerfDatasetCreator
     {
         public ExportScene(string rootDirectory, CameraIntrinsics intrinsics, IEnumerable<ExportFrame> frames,
             string pointCloudPath = null, SceneNormalisation normalisation = null, double depthUnitScale = DefaultDepthUnitScale,
-            int? declaredAabbScale = null, double? targetReach = null)
+            int? declaredAabbScale = null, double? targetReach = null, bool insideOut = false)
         {
             RootDirectory = rootDirectory ?? throw new ArgumentNullException(nameof(rootDirectory));
             Intrinsics = intrinsics ?? throw new ArgumentNullException(nameof(intrinsics));
@@ -28,7 +28,11 @@ namespace NerfDatasetCreator
                 throw new ArgumentOutOfRangeException(nameof(targetReach), targetReach, "a reach is a finite distance ≥ 0.");
             DeclaredAabbScale = declaredAabbScale;
             TargetReach = targetReach;
+            InsideOut = insideOut;
         }
+
+        /// <summary>Whether the dataset records itself as an inside-out environment capture (<see cref="InsideOutRecord"/>).</summary>
+        public bool InsideOut { get; }
 
         /// <summary>16-bit depth PNGs store round(z·1000): one step is a thousandth of an output unit (nerfstudio's default factor).</summary>
         public const double DefaultDepthUnitScale = BlenderTransformsWriter.DepthUnitScale;

@@ -13,7 +13,9 @@ namespace NerfDatasetCreator
     /// (<see cref="SplitColors"/>, as the Scene-view preview and <see cref="RigPreviewPly"/>) with a tick along its
     /// viewing direction; nearer cameras are drawn over farther ones. The target is a white cross with its bounding
     /// sphere when known, the formation's distance sphere a dotted circle; grid lines are <see cref="GridStep"/>
-    /// apart (its value is printed in the legend).
+    /// apart (its value is printed in the legend). A split that samples an inside-out volume draws its box instead
+    /// of the target's sphere: the twelve edges of the oriented box, projected into each panel in the split's colour
+    /// (their outer edges are the outline of the box's projection).
     /// </summary>
     public static class RigPreviewPicture
     {
@@ -61,36 +63,44 @@ namespace NerfDatasetCreator
         {
             if (plan == null) throw new ArgumentNullException(nameof(plan));
             var scale = plan.Normalisation.Scale;
-            var targetRadius = plan.Target.HasBounds ? plan.Target.BoundingRadius * scale : 0;
+            var boxes = VolumeBoxes(plan);
+            // An environment's "target" is its root object: its sphere would cover the picture, the box says more.
+            var targetRadius = plan.Target.HasBounds && boxes.Count == 0 ? plan.Target.BoundingRadius * scale : 0;
             var sphereRadius = CameraSourcePlanning.AnyFormation(plan.Settings) ? plan.Distance * scale : 0;
             return Draw(plan.Views.Select(v => new PictureCamera(v.Split, v.TransformMatrix)).ToList(),
-                plan.Normalisation.ApplyToUnityPoint(plan.Target.Centre), targetRadius, sphereRadius);
+                plan.Normalisation.ApplyToUnityPoint(plan.Target.Centre), targetRadius, sphereRadius, boxes);
         }
+
+        /// <summary>The box of every split with views that samples an inside-out volume, in the plan's output frame.</summary>
+        public static IReadOnlyList<PictureBox> VolumeBoxes(CapturePlan plan) =>
+            VolumePlanning.Boxes(plan).Select(b => PictureBox.FromUnity(b.Key, b.Value, plan.Normalisation)).ToList();
 
         /// <summary>
         /// Draws cameras (output camera-to-world matrices) around a target centre (output frame) with its bounding
-        /// sphere's radius and the formation sphere's radius (0 for none).
+        /// sphere's radius and the formation sphere's radius (0 for none), and the volume boxes (none for null).
         /// </summary>
-        public static RgbCanvas Draw(IReadOnlyList<PictureCamera> cameras, Vector3d target, double targetRadius, double sphereRadius)
+        public static RgbCanvas Draw(IReadOnlyList<PictureCamera> cameras, Vector3d target, double targetRadius, double sphereRadius,
+            IReadOnlyList<PictureBox> boxes = null)
         {
+            boxes = boxes ?? Array.Empty<PictureBox>();
             var extent = Math.Max(targetRadius, sphereRadius);
-            foreach (var c in cameras)
-            {
-                var d = c.CameraToWorld.Translation - target;
-                extent = Math.Max(extent, Math.Max(Math.Abs(d.X), Math.Max(Math.Abs(d.Y), Math.Abs(d.Z))));
-            }
+            foreach (var c in cameras) extent = Math.Max(extent, Reach(c.CameraToWorld.Translation - target));
+            foreach (var b in boxes)
+                foreach (var corner in b.Corners) extent = Math.Max(extent, Reach(corner - target));
             if (!(extent > 0) || double.IsInfinity(extent)) extent = 1;
             var pixelsPerUnit = (PanelSize / 2.0 - Margin) / extent;
             var grid = GridStep(extent);
 
             var canvas = new RgbCanvas(Width, Height, Background);
             foreach (var panel in new[] { Panel.Top, Panel.Side })
-                DrawPanel(canvas, panel, cameras, target, targetRadius, sphereRadius, pixelsPerUnit, grid);
+                DrawPanel(canvas, panel, cameras, boxes, target, targetRadius, sphereRadius, pixelsPerUnit, grid);
             canvas.Text(TopPanelLeft, 7, "TOP: X RIGHT, Y UP", TextColour);
             canvas.Text(SidePanelLeft, 7, "SIDE: X RIGHT, Z UP", TextColour);
-            DrawLegend(canvas, cameras, grid);
+            DrawLegend(canvas, cameras, grid, boxes.Count > 0);
             return canvas;
         }
+
+        static double Reach(Vector3d d) => Math.Max(Math.Abs(d.X), Math.Max(Math.Abs(d.Y), Math.Abs(d.Z)));
 
         /// <summary>The panel pixel (continuous: pixel i spans [i, i + 1)) of an output-frame point in the top view.</summary>
         public static double[] TopPixel(Vector3d point, Vector3d target, double pixelsPerUnit) => ToPixel(Panel.Top, point, target, pixelsPerUnit);
@@ -118,7 +128,7 @@ namespace NerfDatasetCreator
             return new[] { left + PanelSize / 2.0 + d.X * pixelsPerUnit, HeaderHeight + PanelSize / 2.0 - up * pixelsPerUnit };
         }
 
-        static void DrawPanel(RgbCanvas canvas, Panel panel, IReadOnlyList<PictureCamera> cameras, Vector3d target,
+        static void DrawPanel(RgbCanvas canvas, Panel panel, IReadOnlyList<PictureCamera> cameras, IReadOnlyList<PictureBox> boxes, Vector3d target,
             double targetRadius, double sphereRadius, double pixelsPerUnit, double grid)
         {
             var left = panel == Panel.Top ? TopPanelLeft : SidePanelLeft;
@@ -140,6 +150,16 @@ namespace NerfDatasetCreator
                 canvas.Circle(cx, cy, targetRadius * pixelsPerUnit, TextColour);
             }
             if (sphereRadius > 0) canvas.Circle(cx, cy, sphereRadius * pixelsPerUnit, Byte3(SplitColors.Guides), dash: 4);
+            foreach (var box in boxes)
+            {
+                var colour = Byte3(SplitColors.Of(ToPreview(box.Split)));
+                foreach (var (a, b) in PictureBox.Edges)
+                {
+                    var p = ToPixel(panel, box.Corners[a], target, pixelsPerUnit);
+                    var q = ToPixel(panel, box.Corners[b], target, pixelsPerUnit);
+                    canvas.Line(p[0], p[1], q[0], q[1], colour);
+                }
+            }
             canvas.Line(cx - 6, cy, cx + 6, cy, TextColour);
             canvas.Line(cx, cy - 6, cx, cy + 6, TextColour);
 
@@ -161,7 +181,7 @@ namespace NerfDatasetCreator
             canvas.ResetClip();
         }
 
-        static void DrawLegend(RgbCanvas canvas, IReadOnlyList<PictureCamera> cameras, double grid)
+        static void DrawLegend(RgbCanvas canvas, IReadOnlyList<PictureCamera> cameras, double grid, bool boxes)
         {
             var x = TopPanelLeft;
             var y = HeaderHeight + PanelSize + 10;
@@ -171,7 +191,7 @@ namespace NerfDatasetCreator
                 x += 16;
                 x += canvas.Text(x, y, DatasetSplits.Name(split) + " " + cameras.Count(c => c.Split == split).ToString(CultureInfo.InvariantCulture), TextColour) + 24;
             }
-            canvas.Text(x, y, "GRID " + grid.ToString("G4", CultureInfo.InvariantCulture) + "   + TARGET", TextColour);
+            canvas.Text(x, y, "GRID " + grid.ToString("G4", CultureInfo.InvariantCulture) + "   + TARGET" + (boxes ? "   BOX: VOLUME" : ""), TextColour);
         }
 
         static PreviewSplit ToPreview(DatasetSplit split) =>
@@ -181,6 +201,42 @@ namespace NerfDatasetCreator
         public static byte[] Byte3(RgbaColor c) => new[] { ToByte(c.R), ToByte(c.G), ToByte(c.B) };
 
         static byte ToByte(float component) => (byte)Math.Round(Math.Max(0, Math.Min(1, component)) * 255);
+    }
+
+    /// <summary>An inside-out volume's box in the rig picture: its split and its eight corners in the output frame.</summary>
+    public sealed class PictureBox
+    {
+        /// <summary>Corner i is at box coordinates (±½, ±½, ±½), bit 0 of i choosing x, bit 1 y, bit 2 z.</summary>
+        public PictureBox(DatasetSplit split, IReadOnlyList<Vector3d> corners)
+        {
+            if (corners == null || corners.Count != 8) throw new ArgumentException("A box has eight corners.", nameof(corners));
+            Split = split;
+            Corners = corners;
+        }
+
+        /// <summary>The twelve edges: the corner pairs that differ in one coordinate.</summary>
+        public static readonly (int, int)[] Edges = BuildEdges();
+
+        /// <summary>A Unity-world box (<see cref="OrientedBox"/>) moved into the output frame by a normalisation.</summary>
+        public static PictureBox FromUnity(DatasetSplit split, OrientedBox box, SceneNormalisation normalisation)
+        {
+            var corners = new Vector3d[8];
+            for (var i = 0; i < 8; i++)
+                corners[i] = normalisation.ApplyToUnityPoint(box.PointAt(new Vector3d((i & 1) - 0.5, ((i >> 1) & 1) - 0.5, ((i >> 2) & 1) - 0.5)));
+            return new PictureBox(split, corners);
+        }
+
+        public DatasetSplit Split { get; }
+        public IReadOnlyList<Vector3d> Corners { get; }
+
+        static (int, int)[] BuildEdges()
+        {
+            var edges = new List<(int, int)>();
+            for (var i = 0; i < 8; i++)
+                for (var bit = 1; bit < 8; bit <<= 1)
+                    if ((i & bit) == 0) edges.Add((i, i | bit));
+            return edges.ToArray();
+        }
     }
 
     /// <summary>A camera of the rig picture: its split and output camera-to-world matrix.</summary>

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.IO;
 using System.Linq;
 
 namespace NerfDatasetCreator
@@ -80,8 +81,9 @@ namespace NerfDatasetCreator
         /// <summary>
         /// Writes <c>points3d.ply</c> when <paramref name="pointCloud"/> has points (output world, e.g. from
         /// <see cref="TargetPointCloud.Sample"/>; its SHA-256 goes into dataset_config.json's <c>pointCloud</c> record), the
-        /// transforms files, dataset_config.json and, for a shard,
-        /// shard.json; then commits.
+        /// transforms files, dataset_config.json, <c>rig_preview.png</c> (<see cref="RigPreviewPicture"/>: the only picture
+        /// of an inside-out volume's box, since <c>nerf-dataset plan</c> cannot read a scene; a whole dataset only, as
+        /// merge carries no per-shard extras) and, for a shard, shard.json; then commits.
         /// </summary>
         public void Finish(DatasetWriteSession session, Provenance provenance, IReadOnlyList<CloudPoint> pointCloud = null)
         {
@@ -93,6 +95,7 @@ namespace NerfDatasetCreator
                 record = PointCloudRecord.Of(path, TargetPointCloud.FileName, pointCloud.Count);
             }
             DatasetMetadataFiles.Write(session, Plan, provenance, record);
+            if (Shard.Count == 1) File.WriteAllBytes(session.PathOf(RigPreviewPicture.FileName), RigPreviewPicture.Encode(FullPlan));
             if (Shard.Count > 1)
                 ShardManifest.ForShard(Shard, CountsOf(FullPlan)).Write(session.WorkingFolder);
             session.Commit();

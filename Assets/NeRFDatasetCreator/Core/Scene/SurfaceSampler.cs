@@ -50,32 +50,38 @@ namespace NerfDatasetCreator
             {
                 var pick = Pick(areas, random.NextDouble() * total);
                 var (m, t) = owners[pick];
-                var mesh = meshes[m];
-                var i0 = mesh.Triangles[3 * t];
-                var i1 = mesh.Triangles[3 * t + 1];
-                var i2 = mesh.Triangles[3 * t + 2];
                 var s = Math.Sqrt(random.NextDouble());
                 var r2 = random.NextDouble();
-                double wa = 1 - s, wb = s * (1 - r2), wc = s * r2;
-
-                var position = wa * mesh.Vertices[i0] + wb * mesh.Vertices[i1] + wc * mesh.Vertices[i2];
-                var normal = Vector3d.Zero;
-                if (mesh.VertexNormals != null)
-                {
-                    var n = wa * mesh.VertexNormals[i0] + wb * mesh.VertexNormals[i1] + wc * mesh.VertexNormals[i2];
-                    if (n.Length > 1e-12) normal = n.Normalized();
-                }
-                Vector3d color;
-                if (mesh.TriangleColors != null) color = mesh.TriangleColors[t];
-                else if (mesh.VertexColors != null) color = wa * mesh.VertexColors[i0] + wb * mesh.VertexColors[i1] + wc * mesh.VertexColors[i2];
-                else color = fallback;
-                points.Add(new CloudPoint(position, normal, CloudPoint.ToByte(color.X), CloudPoint.ToByte(color.Y), CloudPoint.ToByte(color.Z)));
+                points.Add(PointOn(meshes[m], t, 1 - s, s * (1 - r2), s * r2, fallback));
             }
             return points;
         }
 
+        /// <summary>
+        /// The point of triangle <paramref name="t"/> at barycentric weights (wa, wb, wc), with its interpolated normal
+        /// and colour (triangle colour, else vertex colours, else <paramref name="fallback"/>).
+        /// </summary>
+        internal static CloudPoint PointOn(SurfaceMesh mesh, int t, double wa, double wb, double wc, Vector3d fallback)
+        {
+            var i0 = mesh.Triangles[3 * t];
+            var i1 = mesh.Triangles[3 * t + 1];
+            var i2 = mesh.Triangles[3 * t + 2];
+            var position = wa * mesh.Vertices[i0] + wb * mesh.Vertices[i1] + wc * mesh.Vertices[i2];
+            var normal = Vector3d.Zero;
+            if (mesh.VertexNormals != null)
+            {
+                var n = wa * mesh.VertexNormals[i0] + wb * mesh.VertexNormals[i1] + wc * mesh.VertexNormals[i2];
+                if (n.Length > 1e-12) normal = n.Normalized();
+            }
+            Vector3d color;
+            if (mesh.TriangleColors != null) color = mesh.TriangleColors[t];
+            else if (mesh.VertexColors != null) color = wa * mesh.VertexColors[i0] + wb * mesh.VertexColors[i1] + wc * mesh.VertexColors[i2];
+            else color = fallback;
+            return new CloudPoint(position, normal, CloudPoint.ToByte(color.X), CloudPoint.ToByte(color.Y), CloudPoint.ToByte(color.Z));
+        }
+
         /// <summary>The first index whose cumulative area exceeds <paramref name="u"/> (binary search).</summary>
-        static int Pick(double[] cumulative, double u)
+        internal static int Pick(double[] cumulative, double u)
         {
             int lo = 0, hi = cumulative.Length - 1;
             while (lo < hi)

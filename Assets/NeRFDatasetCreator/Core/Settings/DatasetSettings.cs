@@ -94,6 +94,14 @@ namespace NerfDatasetCreator
         /// <summary>Points sampled on the target's mesh surfaces into <c>points3d.ply</c> (3DGS's initial cloud); 0 writes no file.</summary>
         public int PointCloudPoints;
 
+        /// <summary>
+        /// An environment capture (a split samples an inside-out volume): <c>points3d.ply</c> keeps only the scene's
+        /// surface within this many Unity units of the volume boxes' centre; 0 picks
+        /// <see cref="TargetPointCloud.DefaultRadiusFactor"/> × the boxes' half-diagonal (<see cref="TargetPointCloud.Region"/>).
+        /// Not used without a volume split (the target's own surface is sampled).
+        /// </summary>
+        public double PointCloudRadius;
+
         /// <summary>Dynamic capture: what drives time, its range and steps, and how cameras meet it (static by default).</summary>
         public TimeSettings Time = new TimeSettings();
 

@@ -61,6 +61,8 @@ namespace NerfDatasetCreator
             w.WritePropertyName("normalisation"); w.WriteValue(NormalisationModes.IsDefined(s.Normalisation) ? NormalisationModes.Name(s.Normalisation) : ((int)s.Normalisation).ToString(System.Globalization.CultureInfo.InvariantCulture));
             Number(w, "normalisedTargetRadius", s.NormalisedTargetRadius);
             w.WritePropertyName("pointCloudPoints"); w.WriteValue(s.PointCloudPoints);
+            // Only when set, so object captures' configs keep their keys (0, the default, picks it from the volume boxes).
+            if (s.PointCloudRadius != 0) Number(w, "pointCloudRadius", s.PointCloudRadius);
             if (s.Time != null && s.Time.Enabled)
             {
                 w.WritePropertyName(TimeSettingsJson.Key);
@@ -241,6 +243,7 @@ namespace NerfDatasetCreator
                 },
                 ["normalisedTargetRadius"] = (t, p) => s.NormalisedTargetRadius = reader.Double(t, p),
                 ["pointCloudPoints"] = (t, p) => s.PointCloudPoints = reader.Int(t, p),
+                ["pointCloudRadius"] = (t, p) => s.PointCloudRadius = reader.Double(t, p),
                 [TimeSettingsJson.Key] = (t, p) => TimeSettingsJson.Read(reader, t, p, s.Time),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),

@@ -81,6 +81,10 @@ namespace NerfDatasetCreator
                 Add(new ValidationProblem(radius.Field, radius.Value, radius.Reason,
                     radius.Fix + " 1.3 or less keeps the target inside every loader's box (3DGS ±1.3, nerfstudio ±1.5)."));
             Add(ValidationProblem.OutsideRange("pointCloudPoints", settings.PointCloudPoints, 0, DatasetSettings.MaxPointCloudPoints));
+            if (double.IsNaN(settings.PointCloudRadius) || double.IsInfinity(settings.PointCloudRadius) || settings.PointCloudRadius < 0)
+                Add(new ValidationProblem("pointCloudRadius", ValidationProblem.Format(settings.PointCloudRadius),
+                    "must be 0 (pick it from the volume boxes) or a distance above 0 in Unity units.",
+                    "Use 0, or the distance from the capture volume's centre within which points3d.ply samples the scene."));
 
             foreach (var split in DatasetSplits.All)
                 ValidateSplit(settings, split, problems);

@@ -56,6 +56,10 @@ namespace NerfDatasetCreator
                     text.Append("|volume ").Append(DatasetSplits.Name(split));
                     foreach (var box in new[] { volume.Box }.Concat(volume.Obstacles))
                         text.Append(';').Append(box.Centre.ToString()).Append(box.Rotation.ToString()).Append(box.Size.ToString());
+                    // Moving a waypoint moves a path's cameras.
+                    foreach (var w in volume.Waypoints ?? Array.Empty<Vector3d>())
+                        text.Append(";w").Append(w.X.ToString("R", CultureInfo.InvariantCulture)).Append(',')
+                            .Append(w.Y.ToString("R", CultureInfo.InvariantCulture)).Append(',').Append(w.Z.ToString("R", CultureInfo.InvariantCulture));
                 }
                 var cameras = settings.Split(split)?.Source?.SceneCameras;
                 if (cameras == null) continue;

@@ -29,6 +29,7 @@ namespace NerfDatasetCreator
         public const string Normalisation = "normalisation";
         public const string NormalisedTargetRadius = "normalisedTargetRadius";
         public const string PointCloudPoints = "pointCloudPoints";
+        public const string PointCloudRadius = "pointCloudRadius";
         public const string TimeModeField = "time.mode";
         public const string TimeSourcesField = "time.sources";
         public const string TimeStart = "time.start";
@@ -50,7 +51,7 @@ namespace NerfDatasetCreator
             {
                 Target, Scene, Distance, AutoDistanceMargin, VerticalFov, NearClip, FarClip, CopyFromCamera, Width, Height,
                 Supersampling, Background, Seed, Name, OutputFolder, Overwrite, Loaders,
-                Normalisation, NormalisedTargetRadius, PointCloudPoints,
+                Normalisation, NormalisedTargetRadius, PointCloudPoints, PointCloudRadius,
                 TimeModeField, TimeSourcesField, TimeStart, TimeEnd, TimeSteps, TimeFps,
             };
             foreach (var split in DatasetSplits.All)
@@ -97,7 +98,7 @@ namespace NerfDatasetCreator
             if (Covers("time", field)) return WindowStep.Time;
             if (Covers(Name, field) || Covers(OutputFolder, field) || Covers(Overwrite, field) || Covers(Loaders, field))
                 return WindowStep.OutputFolder;
-            if (Covers(Normalisation, field) || Covers(NormalisedTargetRadius, field) || Covers(PointCloudPoints, field))
+            if (Covers(Normalisation, field) || Covers(NormalisedTargetRadius, field) || Covers(PointCloudPoints, field) || Covers(PointCloudRadius, field))
                 return WindowStep.Outputs;
             foreach (var split in DatasetSplits.All)
             {

@@ -13,7 +13,7 @@ namespace NerfDatasetCreator.Editor
     static class CameraSourceSection
     {
         static readonly string[] KindLabels = { "Formation", "Imported cameras", "Scene cameras", "Animated camera", "Inside-out volume" };
-        static readonly string[] LookLabels = { "Horizontal ring", "Full sphere", "Forward with jitter" };
+        static readonly string[] LookLabels = { "Horizontal ring", "Full sphere", "Forward with jitter", "Along a path (waypoints)" };
         static readonly string[] FileSplitLabels = { "All cameras", "train", "val", "test" };
         static readonly string[] FileSplitValues = { "", "train", "val", "test" };
         static readonly string[] SamplingLabels = { "Views spread evenly", "Every k-th frame" };
@@ -90,15 +90,23 @@ namespace NerfDatasetCreator.Editor
         {
             source.ObjectPath = PickObject(c, "Capture box", "An object whose Transform (position, rotation, scale) is the box the cameras are sampled in; e.g. a scaled empty.", source.ObjectPath, typeof(GameObject));
             ValidationMessages.For(c, field + ".box");
-            source.Look = (VolumeLook)EditorGUILayout.Popup(new GUIContent("Look", "Where each camera looks: level at a random heading, any direction, or along the box's blue (+Z) axis within the jitter."), (int)source.Look, LookLabels);
-            if (source.Look == VolumeLook.Forward)
+            source.Look = (VolumeLook)EditorGUILayout.Popup(new GUIContent("Look", "Where each camera looks: level at a random heading, any direction, along the box's blue (+Z) axis within the jitter, or placed along a path through waypoints looking forward."), (int)source.Look, LookLabels);
+            if (source.Look == VolumeLook.Path)
             {
-                source.JitterDegrees = EditorGUILayout.DoubleField(new GUIContent("Jitter (°)", "Largest tilt from the box's +Z."), source.JitterDegrees);
+                source.PathObject = PickObject(c, "Waypoints", "An object whose children, in hierarchy order, are the path's waypoints; the cameras are spread evenly along a smooth curve through them.", source.PathObject, typeof(GameObject));
+                ValidationMessages.For(c, field + ".waypoints");
+            }
+            if (source.Look == VolumeLook.Forward || source.Look == VolumeLook.Path)
+            {
+                source.JitterDegrees = EditorGUILayout.DoubleField(new GUIContent("Jitter (°)", source.Look == VolumeLook.Path ? "Largest tilt from the path's direction." : "Largest tilt from the box's +Z."), source.JitterDegrees);
                 ValidationMessages.For(c, field + ".jitterDegrees");
             }
-            source.Density = EditorGUILayout.DoubleField(new GUIContent("Density (per unit³)", "Cameras per cubic unit of the box; 0 to give the number of views."), source.Density);
-            ValidationMessages.For(c, field + ".density");
-            if (source.Density <= 0)
+            if (source.Look != VolumeLook.Path)
+            {
+                source.Density = EditorGUILayout.DoubleField(new GUIContent("Density (per unit³)", "Cameras per cubic unit of the box; 0 to give the number of views."), source.Density);
+                ValidationMessages.For(c, field + ".density");
+            }
+            if (source.Density <= 0 || source.Look == VolumeLook.Path)
             {
                 var splitSettings = c.Settings.Split(split);
                 splitSettings.Count = EditorGUILayout.IntField("Views", splitSettings.Count);

@@ -22,7 +22,7 @@ namespace NerfDatasetCreator.Editor
                 var field = "splits." + DatasetSplits.Name(split) + ".source";
                 if (source != null && source.IsVolume)
                 {
-                    source.Volume = VolumeSource.Read(source.ObjectPath, field, out source.SceneProblem);
+                    source.Volume = VolumeSource.Read(source.ObjectPath, field, out source.SceneProblem, source.Look == VolumeLook.Path ? source.PathObject : null);
                     continue;
                 }
                 if (source == null || !source.IsFromScene) continue;

@@ -27,8 +27,13 @@ namespace NerfDatasetCreator.Editor
     /// </summary>
     public static class VolumeSource
     {
-        /// <summary>The box and obstacles, or null with a problem when the box object is not in the open scenes.</summary>
-        public static VolumeScene Read(string boxPath, string field, out ValidationProblem problem)
+        /// <summary>
+        /// The box and obstacles, and for a path the world positions of <paramref name="waypointsPath"/>'s direct
+        /// children in hierarchy order (<c>Transform.childCount</c> / <c>GetChild(i)</c>, UnityCsReference 2022.3
+        /// Runtime/Transform/ScriptBindings/Transform.bindings.cs:397, 498; inactive children count too: they are
+        /// markers, not content); null with a problem when an object is not in the open scenes.
+        /// </summary>
+        public static VolumeScene Read(string boxPath, string field, out ValidationProblem problem, string waypointsPath = null)
         {
             problem = null;
             if (string.IsNullOrWhiteSpace(boxPath)) return null; // Core reports the empty path
@@ -41,7 +46,21 @@ namespace NerfDatasetCreator.Editor
             }
             var t = boxObject.transform;
             var box = new OrientedBox(SceneObjectPath.Of(boxObject), ToCore(t.position), ToCore(t.rotation), Abs(ToCore(t.lossyScale)));
-            return new VolumeScene(box, Obstacles(boxObject));
+            List<Vector3d> waypoints = null;
+            if (!string.IsNullOrWhiteSpace(waypointsPath))
+            {
+                var pathObject = SceneObjects.Find(waypointsPath);
+                if (pathObject == null)
+                {
+                    problem = new ValidationProblem(field + ".waypoints", waypointsPath, "names no object in the open scenes.",
+                        "Give the hierarchy path of the object whose children are the waypoints (e.g. \"Flythrough\"), with its scene open.");
+                    return null;
+                }
+                var parent = pathObject.transform;
+                waypoints = new List<Vector3d>(parent.childCount);
+                for (var i = 0; i < parent.childCount; i++) waypoints.Add(ToCore(parent.GetChild(i).position));
+            }
+            return new VolumeScene(box, Obstacles(boxObject), waypoints);
         }
 
         /// <summary>The obstacle boxes of the loaded scenes, in hierarchy order, leaving out <paramref name="exclude"/> and its children.</summary>

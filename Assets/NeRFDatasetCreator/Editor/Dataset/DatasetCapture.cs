@@ -217,7 +217,16 @@ namespace NerfDatasetCreator.Editor
                     " Writer threads were busy {0:0.0} s ({1:0.0} ms per view), {2:0} % of it in PNG encoding.",
                     files.WriteSeconds, 1000 * files.WriteSeconds / Math.Max(1, files.ViewsWritten), 100 * files.PngEncodeSeconds / files.WriteSeconds);
             if (cloud != null && cloud.Count > 0)
-                message += string.Format(CultureInfo.InvariantCulture, " points3d.ply holds {0} surface points.", cloud.Count);
+            {
+                var region = TargetPointCloud.Region(prepared.Run.Plan);
+                message += string.Format(CultureInfo.InvariantCulture, " points3d.ply holds {0} surface points", cloud.Count) +
+                           (region == null ? "." : string.Format(CultureInfo.InvariantCulture, " within {0:0.##} units of the capture volumes' centre {1}{2}.",
+                               region.Radius, region.Centre, region.Automatic ? " (pointCloudRadius 0: " + TargetPointCloud.DefaultRadiusFactor.ToString(CultureInfo.InvariantCulture) + " × the boxes' half-diagonal)" : ""));
+                if (cloud.Count < prepared.Run.Plan.Settings.PointCloudPoints)
+                    Debug.LogWarning(string.Format(CultureInfo.InvariantCulture,
+                        "NeRF Dataset Creator: points3d.ply holds {0} of the {1} points asked for: almost none of the surface near the sphere lies inside it. Raise pointCloudRadius for more.",
+                        cloud.Count, prepared.Run.Plan.Settings.PointCloudPoints));
+            }
             if (files.ClampedDepthPixels > 0)
                 message += string.Format(CultureInfo.InvariantCulture,
                     " {0} depth pixels lay beyond 65.535 output units and were clamped in the 16-bit depth PNGs (the EXR files keep them).",
@@ -266,7 +275,7 @@ namespace NerfDatasetCreator.Editor
                 ? TargetSurface.CollectScene(warnings)
                 : TimeMeasurement.SurfaceAtStart(prepared.Target, plan.Time, plan.Settings.Seed, warnings) ?? TargetSurface.Collect(prepared.Target, warnings);
             foreach (var warning in warnings) Debug.LogWarning("NeRF Dataset Creator: " + warning);
-            var problems = TargetPointCloud.Check(prepared.Run.Plan.Settings, prepared.Surface);
+            var problems = TargetPointCloud.Check(prepared.Run.Plan, prepared.Surface);
             return problems.Count == 0 ? null : Refused(problems);
         }
 

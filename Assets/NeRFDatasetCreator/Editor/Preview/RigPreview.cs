@@ -8,7 +8,7 @@ namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// Draws a planned rig in every Scene view while enabled: one small frustum per camera in its split's colour,
-    /// the target's bounds and the rig-distance sphere, with per-split visibility toggles in a Scene-view overlay
+    /// the target's bounds, the rig-distance sphere and each inside-out volume's box in its split's colour, with per-split visibility toggles in a Scene-view overlay
     /// (<see cref="RigPreviewOverlay"/>, which users can move and dock like Unity's own).
     /// Clicking near a camera selects it and labels it "train r_12" (its image file). All geometry comes from Core
     /// (<see cref="RigPreviewGeometry"/>, <see cref="MarkerPicking"/>) and is converted to Unity vectors once per
@@ -28,6 +28,8 @@ namespace NerfDatasetCreator.Editor
         readonly bool[] visible = { true, true, true };
         readonly Vector3[][] segments = { NoPoints, NoPoints, NoPoints };
         readonly string[] toggleLabels = { "train", "val", "test" };
+        Matrix4x4[] boxMatrices = new Matrix4x4[0];
+        int[] boxSplits = new int[0];
         PreviewMarker[] markers = new PreviewMarker[0];
         Vector3[] markerPositions = NoPoints;
         double[] guiX = new double[0];
@@ -91,11 +93,13 @@ namespace NerfDatasetCreator.Editor
 
         /// <summary>
         /// Shows a new plan: the poses of each split in view order (null for none), the capture camera's vertical
-        /// FOV and aspect (width / height), the target's bounds and the rig distance, all in Unity world units.
+        /// FOV and aspect (width / height), the target's bounds, the rig distance (0 for no sphere) and the volume
+        /// splits' boxes (null for none), all in Unity world units.
         /// Invalid camera values clear the preview instead of throwing: the window shows Core's validation for them.
         /// </summary>
         public void SetPlan(IReadOnlyList<UnityPose> train, IReadOnlyList<UnityPose> val, IReadOnlyList<UnityPose> test,
-            double verticalFovDegrees, double aspect, Vector3d boundsCentre, Vector3d boundsSize, double rigDistance)
+            double verticalFovDegrees, double aspect, Vector3d boundsCentre, Vector3d boundsSize, double rigDistance,
+            IReadOnlyList<KeyValuePair<DatasetSplit, OrientedBox>> volumes = null)
         {
             RigPreviewGeometry geometry;
             try
@@ -136,6 +140,15 @@ namespace NerfDatasetCreator.Editor
                 toggleLabels[(int)split] = SplitColors.NameOf(split) + " (" + perSplit[(int)split].ToString(CultureInfo.InvariantCulture) + ")";
             if (selected >= 0) selectedLabel = markers[selected].Label;
 
+            var boxCount = volumes?.Count ?? 0;
+            boxMatrices = new Matrix4x4[boxCount];
+            boxSplits = new int[boxCount];
+            for (var i = 0; i < boxCount; i++)
+            {
+                boxMatrices[i] = BoxMatrix(volumes[i].Value);
+                boxSplits[i] = (int)volumes[i].Key; // DatasetSplit and PreviewSplit share the order train, val, test
+            }
+
             targetCentre = ToUnity(boundsCentre);
             targetSize = ToUnity(boundsSize);
             distance = (float)rigDistance;
@@ -149,6 +162,8 @@ namespace NerfDatasetCreator.Editor
             for (var s = 0; s < segments.Length; s++) segments[s] = NoPoints;
             markers = new PreviewMarker[0];
             markerPositions = NoPoints;
+            boxMatrices = new Matrix4x4[0];
+            boxSplits = new int[0];
             guiX = guiY = new double[0];
             Deselect();
             SceneView.RepaintAll();
@@ -214,6 +229,16 @@ namespace NerfDatasetCreator.Editor
                     Handles.DrawWireDisc(targetCentre, Vector3.forward, distance);
                 }
             }
+            // A volume's box: the unit cube through the box's TRS matrix. Handles.DrawingScope(Color, Matrix4x4) sets
+            // Handles.matrix, and DrawWireCube multiplies its vertices by it (GL.MultMatrix(matrix); UnityCsReference
+            // 2022.3 Editor/Mono/Handles.cs:115, 476–482; 6000.0 Editor/Mono/Handles/Handles.cs:115, 476), so a turned,
+            // non-uniformly scaled box is drawn exactly as Core samples it (OrientedBox.PointAt).
+            for (var i = 0; i < boxMatrices.Length; i++)
+            {
+                if (!visible[boxSplits[i]]) continue;
+                using (new Handles.DrawingScope(Colors[boxSplits[i]], boxMatrices[i]))
+                    Handles.DrawWireCube(Vector3.zero, Vector3.one);
+            }
             for (var s = 0; s < segments.Length; s++)
             {
                 if (!visible[s] || segments[s].Length == 0) continue;
@@ -261,6 +286,17 @@ namespace NerfDatasetCreator.Editor
                 guiY[i] = p.z > 0 ? p.y : double.NaN;
             }
             return MarkerPicking.Nearest(guiX, guiY, markers.Length, mouse.x, mouse.y, MarkerPicking.DefaultRadiusPixels, out pixels);
+        }
+
+        /// <summary>
+        /// The matrix that takes the unit cube centred at the origin onto <paramref name="box"/>: translation, rotation,
+        /// then the size as scale (Matrix4x4.TRS), so that corner (±½, ±½, ±½) lands on Core's
+        /// <see cref="OrientedBox.PointAt"/> of it.
+        /// </summary>
+        public static Matrix4x4 BoxMatrix(OrientedBox box)
+        {
+            var r = box.Rotation;
+            return Matrix4x4.TRS(ToUnity(box.Centre), new Quaternion((float)r.X, (float)r.Y, (float)r.Z, (float)r.W), ToUnity(box.Size));
         }
 
         static Vector3 ToUnity(Vector3d v) => new Vector3((float)v.X, (float)v.Y, (float)v.Z);

@@ -1,4 +1,6 @@
+using System.Linq;
 using UnityEditor;
+using UnityEngine;
 
 namespace NerfDatasetCreator.Editor
 {
@@ -46,6 +48,13 @@ namespace NerfDatasetCreator.Editor
                 }
                 settings.PointCloudPoints = EditorGUILayout.IntField("points3d.ply points", settings.PointCloudPoints);
                 ValidationMessages.For(c, WindowFields.PointCloudPoints);
+                if (settings.PointCloudPoints > 0 && DatasetSplits.All.Any(split => settings.Split(split)?.Source?.IsVolume == true))
+                {
+                    settings.PointCloudRadius = EditorGUILayout.DoubleField(new GUIContent("points3d.ply radius",
+                        "Environment capture: only the scene's surface within this many units of the capture volumes' centre is sampled; 0 = " +
+                        TargetPointCloud.DefaultRadiusFactor + " × the boxes' half-diagonal."), settings.PointCloudRadius);
+                    ValidationMessages.For(c, WindowFields.PointCloudRadius);
+                }
             }
         }
     }

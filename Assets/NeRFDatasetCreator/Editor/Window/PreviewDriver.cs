@@ -81,7 +81,8 @@ namespace NerfDatasetCreator.Editor
             for (var i = 0; i < 3; i++) Counts[i] = poses[i].Count;
             var bounds = target.Bounds;
             _preview.SetPlan(poses[0], poses[1], poses[2], plan.Settings.Camera.VerticalFovDegrees, (double)plan.Settings.Width / plan.Settings.Height,
-                new Vector3d(bounds.center.x, bounds.center.y, bounds.center.z), new Vector3d(bounds.size.x, bounds.size.y, bounds.size.z), plan.Distance);
+                new Vector3d(bounds.center.x, bounds.center.y, bounds.center.z), new Vector3d(bounds.size.x, bounds.size.y, bounds.size.z),
+                CameraSourcePlanning.AnyFormation(plan.Settings) ? plan.Distance : 0, VolumePlanning.Boxes(plan));
             Status = "";
         }
 

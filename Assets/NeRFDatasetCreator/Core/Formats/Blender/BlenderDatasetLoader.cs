@@ -117,7 +117,7 @@ namespace NerfDatasetCreator
             var isLink = File.Exists(plyPath) && PathSafety.IsLink(plyPath);
             var ply = !isLink && PointCloudOwnership.IsOwn(root, warnings) ? PointCloudFileName : null;
             return new ExportScene(root, intrinsics, frames, ply, normalisation,
-                declaredAabbScale: aabbScale, targetReach: DatasetTargetReach.Read(root, warnings));
+                declaredAabbScale: aabbScale, targetReach: DatasetTargetReach.Read(root, warnings), insideOut: InsideOutRecord.Read(root));
         }
 
         /// <summary>The root-relative image path with extension, or null when neither the path nor path + ".png" exists.</summary>

@@ -157,7 +157,70 @@ namespace NerfDatasetCreator.Tests
             Assert.That(new object[] { read.Kind, read.ObjectPath, read.Look, read.Density, read.JitterDegrees, read.Clearance, read.Volume },
                 Is.EqualTo(new object[] { CameraSourceKind.Volume, "CaptureVolume", VolumeLook.Forward, 0.5, 12.5, 0.4, null }));
             var bad = Assert.Throws<SettingsFormatException>(() => DatasetSettingsJson.Read("{\"splits\": {\"test\": {\"source\": {\"kind\": \"volume\", \"look\": \"up\"}}}}"));
-            Assert.That(bad.Message, Does.Contain("\"ring\", \"sphere\" or \"forward\""));
+            Assert.That(bad.Message, Does.Contain("\"ring\", \"sphere\", \"forward\" or \"path\""));
+        }
+
+        // A path through the room at Unity height 1: along x from −4 to 4, waypoints unevenly spaced.
+        static readonly Vector3d[] Waypoints = { new Vector3d(-4, 1, 0), new Vector3d(-3, 1, 0), new Vector3d(1, 1, 0), new Vector3d(4, 1, 0) };
+
+        static DatasetSettings WithPath(Vector3d[] waypoints, params OrientedBox[] obstacles)
+        {
+            var s = WithVolume();
+            s.Train.Count = 9;
+            s.Train.Source = new CameraSourceSettings
+            {
+                Kind = CameraSourceKind.Volume, ObjectPath = "CaptureVolume", Look = VolumeLook.Path, PathObject = "Flythrough", JitterDegrees = 0,
+                Volume = new VolumeScene(Room, obstacles, waypoints),
+            };
+            return s;
+        }
+
+        [Test]
+        public void APathSplitsCamerasGoEvenlyAlongTheWaypointsLookingForward()
+        {
+            var plan = CapturePlan.Build(WithPath(Waypoints), PlanTarget.AtOrigin);
+            var train = plan.ViewsOf(DatasetSplit.Train).ToList();
+            Assert.That(train.Select(v => v.Pose.Position.X), Is.EqualTo(new[] { -4.0, -3, -2, -1, 0, 1, 2, 3, 4 }).Within(1e-9));
+            foreach (var v in train)
+            {
+                // Output camera looks along −Z of its matrix: Unity +X is output +X.
+                Assert.That(new[] { -v.TransformMatrix[0, 2], -v.TransformMatrix[1, 2], -v.TransformMatrix[2, 2] }, Is.EqualTo(new[] { 1.0, 0, 0 }).Within(1e-9));
+                Assert.That(v.TransformMatrix.Translation, Is.EqualTo(new Vector3d(v.Pose.Position.X, 0, 1)).Within(1e-9));
+            }
+            Assert.That(plan.Warnings.Where(w => w.Field.StartsWith("splits.train.source.")), Is.Empty, "no obstacle on this path");
+        }
+
+        [Test]
+        public void APathThroughAnObstacleKeepsItsCamerasAndSaysWhere()
+        {
+            var crate = OrientedBox.AxisAligned("Props/Crate", new Vector3d(0, 1, 0), new Vector3d(1, 1, 1));
+            var plan = CapturePlan.Build(WithPath(Waypoints, crate), PlanTarget.AtOrigin);
+            Assert.That(plan.ViewsOf(DatasetSplit.Train).Count(), Is.EqualTo(9));
+            // Crate ±0.5 grown by the clearance 0.25: x = 0 only (±1 are outside ±0.75).
+            var warning = plan.Warnings.Single(w => w.Field == "splits.train.source.waypoints");
+            Assert.That(warning.Reason, Does.Contain("puts 1 of 9 cameras").And.Contain("Props/Crate 1"));
+        }
+
+        [Test]
+        public void APathNeedsItsWaypointsAndUsesTheCount()
+        {
+            Assert.That(CapturePlan.Check(WithPath(new[] { Waypoints[0] }), PlanTarget.AtOrigin).Select(p => p.Field), Has.Member("splits.train.source.waypoints"));
+            var s = WithPath(Waypoints);
+            s.Train.Source.Density = 2;
+            Assert.That(CapturePlan.Check(s, PlanTarget.AtOrigin).Select(p => p.Field), Has.Member("splits.train.source.density"));
+            s.Train.Source.Density = 0;
+            s.Train.Source.PathObject = " ";
+            Assert.That(CapturePlan.Check(s, PlanTarget.AtOrigin).Select(p => p.Field), Has.Member("splits.train.source.waypoints"));
+        }
+
+        [Test]
+        public void APathRoundTripsThroughTheConfigFile()
+        {
+            var text = DatasetSettingsJson.Write(WithPath(Waypoints));
+            Assert.That(JObject.Parse(text)["splits"]["train"]["source"].ToString(Newtonsoft.Json.Formatting.None),
+                Is.EqualTo("{\"kind\":\"volume\",\"box\":\"CaptureVolume\",\"look\":\"path\",\"density\":0.0,\"jitterDegrees\":0.0,\"clearance\":0.25,\"waypoints\":\"Flythrough\"}"));
+            var read = DatasetSettingsJson.Read(text).Settings.Train.Source;
+            Assert.That(new object[] { read.Look, read.PathObject }, Is.EqualTo(new object[] { VolumeLook.Path, "Flythrough" }));
         }
     }
 }

@@ -1,3 +1,4 @@
+using System;
 using System.Linq;
 using NUnit.Framework;
 
@@ -103,6 +104,103 @@ namespace NerfDatasetCreator.Tests
             Assert.That(png.ColorType, Is.EqualTo(2), "truecolour, opaque");
             Assert.That(png.BitDepth, Is.EqualTo(8));
             Assert.That(png.Pixels, Is.EqualTo(RigPreviewPicture.Draw(plan).Pixels));
+        }
+
+        static bool Near(RgbCanvas canvas, double x, double y, byte[] colour)
+        {
+            for (var dy = -1; dy <= 1; dy++)
+                for (var dx = -1; dx <= 1; dx++)
+                    if (canvas.Get((int)Math.Floor(x) + dx, (int)Math.Floor(y) + dy).SequenceEqual(colour)) return true;
+            return false;
+        }
+
+        [Test]
+        public void AVolumeBoxIsDrawnAsItsProjectedEdgesInItsSplitColour()
+        {
+            // A Unity box 4 wide (x), 2 high (y), 2 deep (z), centred at y = 1 and turned 90° about Unity's up: its
+            // long side runs along Unity z. Output = (x, z, y)_Unity: X ±1, Y ±2, Z 0..2. Its reach (2) is the
+            // extent, so 216 / 2 = 108 px a unit.
+            var box = new OrientedBox("Volume", new Vector3d(0, 1, 0), Quaterniond.AngleAxis(90, Vector3d.UnitY), new Vector3d(4, 2, 2));
+            var picture = PictureBox.FromUnity(DatasetSplit.Train, box, SceneNormalisation.Identity);
+            Assert.That(picture.Corners.Select(c => Math.Abs(c.X)), Is.All.EqualTo(1).Within(1e-12));
+            Assert.That(picture.Corners.Select(c => Math.Abs(c.Y)), Is.All.EqualTo(2).Within(1e-12));
+            Assert.That(picture.Corners.Select(c => c.Z).Distinct().OrderBy(z => Math.Round(z, 9)).Select(z => Math.Round(z, 9)).Distinct(), Is.EqualTo(new[] { 0.0, 2.0 }));
+            Assert.That(PictureBox.Edges, Has.Length.EqualTo(12));
+
+            var canvas = RigPreviewPicture.Draw(new PictureCamera[0], Vector3d.Zero, 0, 0, new[] { picture });
+            const int ppu = 108;
+            // Top view: a 2 × 4 rectangle, corners at (±108, ±216) px from the centre; its sides' midpoints too.
+            foreach (var sx in new[] { -1, 1 })
+                foreach (var sy in new[] { -1, 1 })
+                    Assert.That(Near(canvas, TopCentreX + sx * ppu, CentreY - sy * 2 * ppu, Train), Is.True, "top corner " + sx + ", " + sy);
+            Assert.That(Near(canvas, TopCentreX + ppu, CentreY, Train), Is.True, "the X = +1 side");
+            Assert.That(Near(canvas, TopCentreX, CentreY - 2 * ppu, Train), Is.True, "the Y = +2 side");
+            // Side view (X right, Z up): a 2 × 2 square from the ground up.
+            Assert.That(Near(canvas, SideCentreX - ppu, CentreY, Train), Is.True);
+            Assert.That(Near(canvas, SideCentreX + ppu, CentreY - 2 * ppu, Train), Is.True);
+            Assert.That(Near(canvas, SideCentreX, CentreY - 2 * ppu, Train), Is.True, "the top edge");
+            // Inside and outside the outline: no box colour.
+            Assert.That(canvas.Get(TopCentreX + 50, CentreY + 100), Is.Not.EqualTo(Train));
+            Assert.That(canvas.Get(TopCentreX + 160, CentreY + 30), Is.EqualTo(RigPreviewPicture.PanelBackground), "beyond X = +1");
+            Assert.That(canvas.Get(SideCentreX + 50, CentreY - 100), Is.Not.EqualTo(Train));
+            Assert.That(canvas.Get(SideCentreX + 50, CentreY + 50), Is.EqualTo(RigPreviewPicture.PanelBackground), "below the ground");
+        }
+
+        [Test]
+        public void AnOrientedBoxShowsItsTurnedOutline()
+        {
+            // A 2-unit cube turned 45° about Unity's up: from above a diamond with corners at X = ±√2 and Y = ±√2.
+            var box = new OrientedBox("Volume", Vector3d.Zero, Quaterniond.AngleAxis(45, Vector3d.UnitY), new Vector3d(2, 2, 2));
+            var canvas = RigPreviewPicture.Draw(new PictureCamera[0], Vector3d.Zero, 0, 0,
+                new[] { PictureBox.FromUnity(DatasetSplit.Test, box, SceneNormalisation.Identity) });
+            const double half = 216; // the reach √2 is the extent
+            Assert.That(Near(canvas, TopCentreX + half, CentreY, Test), Is.True);
+            Assert.That(Near(canvas, TopCentreX - half, CentreY, Test), Is.True);
+            Assert.That(Near(canvas, TopCentreX, CentreY - half, Test), Is.True);
+            Assert.That(Near(canvas, TopCentreX + half / 2, CentreY - half / 2, Test), Is.True, "the diamond's side");
+            Assert.That(canvas.Get(TopCentreX + 180, CentreY - 180), Is.EqualTo(RigPreviewPicture.PanelBackground), "outside the diamond: an axis-aligned box would be there");
+            // From the front: X ±√2, Z ±1 — the outline, and the near vertical edge down the middle.
+            Assert.That(Near(canvas, SideCentreX + half, CentreY - half / Math.Sqrt(2), Test), Is.True);
+            Assert.That(Near(canvas, SideCentreX, CentreY + 100, Test), Is.True, "the edge at X = 0");
+        }
+
+        [Test]
+        public void APlanWithAVolumeDrawsItsBoxesAndNoTargetSphere()
+        {
+            // Unity room centred at y = 1, 10 × 2 × 10: output X ±5, Y ±5, Z 0..2; reach 5, so 43.2 px a unit.
+            var room = OrientedBox.AxisAligned("Room", new Vector3d(0, 1, 0), new Vector3d(10, 2, 10));
+            var nook = OrientedBox.AxisAligned("Nook", new Vector3d(-3, 1, -3), new Vector3d(1, 1, 1));
+            var s = new DatasetSettings { Normalisation = NormalisationMode.None, Width = 200, Height = 100, Seed = 3 };
+            s.Train.Count = 20;
+            s.Train.Source = new CameraSourceSettings { Kind = CameraSourceKind.Volume, ObjectPath = "Room", Volume = new VolumeScene(room, null) };
+            s.Val.Count = 1;
+            s.Val.Source = new CameraSourceSettings { Kind = CameraSourceKind.Volume, ObjectPath = "Nook", Volume = new VolumeScene(nook, null) };
+            s.Test.Count = 1;
+            s.Test.Source = new CameraSourceSettings { Kind = CameraSourceKind.Volume, ObjectPath = "Nook", Volume = new VolumeScene(nook, null) };
+            var plan = CapturePlan.Build(s, new PlanTarget(Vector3d.Zero, 1));
+            Assert.That(RigPreviewPicture.VolumeBoxes(plan).Select(b => b.Split), Is.EqualTo(new[] { DatasetSplit.Train, DatasetSplit.Val, DatasetSplit.Test }));
+            var canvas = RigPreviewPicture.Draw(plan);
+            Assert.That(Near(canvas, TopCentreX + 216, CentreY - 216, Train), Is.True, "room corner (5, 5)");
+            Assert.That(Near(canvas, TopCentreX - 216, CentreY + 216, Train), Is.True, "room corner (−5, −5)");
+            Assert.That(Near(canvas, SideCentreX + 216, CentreY - 2 * 43.2, Train), Is.True, "room corner X 5, Z 2");
+            // The nook: output X −3.5..−2.5, Y −3.5..−2.5; the test box is drawn over the val box.
+            // Cameras are drawn over the boxes: most of the nook's outline, not every pixel, is the test colour.
+            var onOutline = 0;
+            for (var k = 0; k <= 40; k++)
+            {
+                var t = -3.5 + k / 40.0;
+                foreach (var p in new[] { new Vector3d(t, -3.5, 0), new Vector3d(t, -2.5, 0), new Vector3d(-3.5, t, 0), new Vector3d(-2.5, t, 0) })
+                {
+                    var px = RigPreviewPicture.TopPixel(p, Vector3d.Zero, 43.2);
+                    if (Near(canvas, px[0], px[1], Test)) onOutline++;
+                }
+            }
+            Assert.That(onOutline, Is.GreaterThan(0.8 * 164), "test box outline pixels");
+            var fills = 0;
+            for (var y = 0; y < canvas.Height; y++)
+                for (var x = 0; x < canvas.Width; x++)
+                    if (canvas.Get(x, y).SequenceEqual(RigPreviewPicture.TargetFill)) fills++;
+            Assert.That(fills, Is.EqualTo(0), "an environment's root is not drawn as a sphere");
         }
 
         [TestCase(4, 1)]

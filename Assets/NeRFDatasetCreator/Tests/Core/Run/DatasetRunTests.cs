@@ -62,6 +62,16 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void AWholeDatasetHasItsRigPictureAndAShardHasNone()
+        {
+            var folder = Capture(DatasetRun.Prepare(Settings(), Target, _project));
+            var picture = ReferencePngDecoder.Decode(File.ReadAllBytes(Path.Combine(folder, RigPreviewPicture.FileName)));
+            Assert.That(new[] { picture.Width, picture.Height, picture.ColorType }, Is.EqualTo(new[] { RigPreviewPicture.Width, RigPreviewPicture.Height, 2 }));
+            var shard = Capture(DatasetRun.Prepare(Settings(train: 4), Target, _project, new ShardSpec(0, 2), "shard-0"));
+            Assert.That(File.Exists(Path.Combine(shard, RigPreviewPicture.FileName)), Is.False, "merge carries no per-shard picture");
+        }
+
+        [Test]
         public void ColourHasStraightAlphaAndTheTopRowComesFirst()
         {
             var folder = Capture(DatasetRun.Prepare(Settings(), Target, _project));

@@ -70,6 +70,48 @@ namespace NerfDatasetCreator.Editor.Tests.CameraSources
         }
 
         [Test]
+        public void APathsWaypointsAreItsChildrenInHierarchyOrderAndItsCamerasFollowThem()
+        {
+            var scene = TestScene.Open();
+            try
+            {
+                new GameObject("CaptureVolume").transform.localScale = new Vector3(20, 4, 20);
+                var path = new GameObject("Flythrough").transform;
+                path.position = new Vector3(0, 1, 0);
+                foreach (var x in new[] { -3f, 2f, 5f }) // children in this order, whatever their names
+                {
+                    var w = new GameObject("W" + (5 - x)).transform;
+                    w.SetParent(path, false);
+                    w.localPosition = new Vector3(x, 0, 0);
+                }
+                path.GetChild(1).gameObject.SetActive(false); // a disabled marker still marks the path
+
+                var settings = Settings("CaptureVolume");
+                settings.Train.Count = 9;
+                settings.Train.Source.Look = VolumeLook.Path;
+                settings.Train.Source.PathObject = "Flythrough";
+                settings.Train.Source.JitterDegrees = 0;
+                SceneCameraSources.Resolve(settings);
+                Assert.That(settings.Train.Source.SceneProblem, Is.Null);
+                Assert.That(settings.Train.Source.Volume.Waypoints.Select(w => w.X), Is.EqualTo(new[] { -3.0, 2, 5 }).Within(1e-6));
+                Assert.That(settings.Train.Source.Volume.Waypoints.Select(w => w.Y), Is.All.EqualTo(1).Within(1e-6), "world positions");
+
+                var views = CapturePlan.Build(settings, PlanTarget.AtOrigin).ViewsOf(DatasetSplit.Train).ToList();
+                Assert.That(views.Select(v => v.Pose.Position.X), Is.EqualTo(new[] { -3.0, -2, -1, 0, 1, 2, 3, 4, 5 }).Within(1e-5));
+                var forward = new Quaternion((float)views[4].Pose.Rotation.X, (float)views[4].Pose.Rotation.Y, (float)views[4].Pose.Rotation.Z, (float)views[4].Pose.Rotation.W) * Vector3.forward;
+                Assert.That(Vector3.Angle(forward, Vector3.right), Is.LessThan(0.01f), "looking along the path");
+
+                settings.Train.Source.PathObject = "Missing";
+                SceneCameraSources.Resolve(settings);
+                Assert.That(settings.Train.Source.SceneProblem.Field, Is.EqualTo("splits.train.source.waypoints"));
+            }
+            finally
+            {
+                TestScene.Close(scene);
+            }
+        }
+
+        [Test]
         public void AnEnvironmentsSurfaceIsEveryActiveRootsMeshes()
         {
             var scene = TestScene.Open();
