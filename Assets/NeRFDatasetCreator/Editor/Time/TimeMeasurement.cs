@@ -120,8 +120,12 @@ namespace NerfDatasetCreator.Editor
         }
 
         /// <summary>
-        /// TargetMeshes.WorldBounds, but skinned meshes measured in their current pose (BakeMesh, with the renderer's
-        /// scale, then its position and rotation) rather than their bind pose.
+        /// TargetMeshes.WorldBounds, but skinned meshes measured in their current pose rather than their bind pose:
+        /// <c>BakeMesh(mesh, useScale: true)</c> compensates the renderer's position, rotation and scale ("If true, the
+        /// baked Mesh is the same size as the original", Scripting API SkinnedMeshRenderer.BakeMesh 2023.2+), so its
+        /// vertices are in the renderer's local space and the full <c>localToWorldMatrix</c> takes them to the world,
+        /// as <see cref="TargetSurface.Collect"/> does (SkinnedTargetSurfaceTests). Dropping the scale would measure a
+        /// character under a 0.01 (centimetre FBX) parent 100 times too large.
         /// </summary>
         static Bounds? PosedBounds(GameObject root)
         {
@@ -133,7 +137,7 @@ namespace NerfDatasetCreator.Editor
                 {
                     if (!(pair.Key is SkinnedMeshRenderer skinned)) continue;
                     skinned.BakeMesh(baked, true);
-                    var toWorld = Matrix4x4.TRS(skinned.transform.position, skinned.transform.rotation, Vector3.one);
+                    var toWorld = skinned.transform.localToWorldMatrix;
                     foreach (var v in baked.vertices) all = Union(all, new Bounds(toWorld.MultiplyPoint3x4(v), Vector3.zero));
                 }
             }

@@ -24,8 +24,8 @@ namespace NerfDatasetCreator.Editor.Tests
             if (_mesh != null) Object.DestroyImmediate(_mesh);
         }
 
-        [Test]
-        public void ASkinnedMeshUnderACentimetreParentLiesOnItsRenderedSurface()
+        /// <summary>The character: its parent at (1, 2, 3) turned 30°, scale 0.01; the cube's world side is 0.02.</summary>
+        SkinnedMeshRenderer BuildCharacter()
         {
             _parent = new GameObject("Character (0.01)");
             _parent.transform.SetPositionAndRotation(new Vector3(1, 2, 3), Quaternion.Euler(0, 30, 0));
@@ -51,6 +51,13 @@ namespace NerfDatasetCreator.Editor.Tests
             renderer.sharedMesh = _mesh;
             renderer.sharedMaterial = material; // TargetSurface samples the submeshes that have a material
 
+            return renderer;
+        }
+
+        [Test]
+        public void ASkinnedMeshUnderACentimetreParentLiesOnItsRenderedSurface()
+        {
+            var body = BuildCharacter().gameObject;
             var warnings = new List<ValidationProblem>();
             var surface = TargetSurface.Collect(_parent, warnings);
             Assert.That(warnings, Is.Empty);
@@ -68,6 +75,42 @@ namespace NerfDatasetCreator.Editor.Tests
             // The world cube's area: 6 faces of side 1 × 2 × 0.01 = 0.02.
             var area = Enumerable.Range(0, surface[0].TriangleCount).Sum(t => surface[0].TriangleArea(t));
             Assert.That(area, Is.EqualTo(6 * 0.02 * 0.02).Within(1e-7));
+        }
+
+        [Test]
+        public void ADynamicCaptureMeasuresASkinnedMeshUnderACentimetreParentAtItsRenderedSize()
+        {
+            var body = BuildCharacter().gameObject;
+            var project = System.IO.Path.Combine(System.IO.Path.GetTempPath(), "nerf-skinned-bounds-" + System.Guid.NewGuid().ToString("N"));
+            System.IO.Directory.CreateDirectory(project);
+            try
+            {
+                // A dynamic capture measures the target's bounds on posed copies (TimeMeasurement.PosedBounds), skinned
+                // meshes by BakeMesh: nothing animates here, so they are the bind-pose cube's.
+                var s = new DatasetSettings { Name = "character", Width = 32, Height = 32, Supersampling = 1, Seed = 1 };
+                s.Loaders = TargetLoaders.GaussianSplatting;
+                s.Train.Count = 4;
+                s.Val.Count = 0;
+                s.Test.Count = 0;
+                s.Time.Mode = TimeMode.MultiView;
+                s.Time.EndAtClipLength = false;
+                s.Time.EndSeconds = 1;
+                s.Time.Steps = 2;
+                var prepared = DatasetCapture.Prepare(s, _parent, project);
+                Assert.That(prepared.Problems.Select(p => p.ToString()), Is.Empty);
+                var centre = body.transform.position;
+                Assert.That(prepared.Plan.Target.Centre.X, Is.EqualTo(centre.x).Within(1e-4));
+                Assert.That(prepared.Plan.Target.Centre.Y, Is.EqualTo(centre.y).Within(1e-4));
+                Assert.That(prepared.Plan.Target.Centre.Z, Is.EqualTo(centre.z).Within(1e-4));
+                // The world cube of side 0.02 turned 30° about y: its axis-aligned box is 0.02 (cos 30° + sin 30°) wide in x
+                // and z, 0.02 high; the radius is that box's half-diagonal. Without the scale it would be 100 times larger.
+                var w = 0.01 * (System.Math.Cos(System.Math.PI / 6) + System.Math.Sin(System.Math.PI / 6));
+                Assert.That(prepared.Plan.Target.BoundingRadius, Is.EqualTo(System.Math.Sqrt(2 * w * w + 0.01 * 0.01)).Within(1e-4));
+            }
+            finally
+            {
+                System.IO.Directory.Delete(project, true);
+            }
         }
     }
 }
