@@ -84,7 +84,15 @@ namespace NerfDatasetCreator.Editor
             _directors.Clear();
             _particles.Clear();
             if (root == null) return;
-            if ((_sources & TimeSources.Animator) != 0) _animators.AddRange(root.GetComponentsInChildren<Animator>(true));
+            if ((_sources & TimeSources.Animator) != 0)
+            {
+                _animators.AddRange(root.GetComponentsInChildren<Animator>(true));
+                // The clock only ever poses copies (the capture's, TimeMeasurement's, AnimatedCameraSampler's), in preview
+                // scenes no Scene or Game view shows: an Animator culled by visibility ("Animation is completely disabled
+                // when renderers are not visible", Scripting API AnimatorCullingMode.CullCompletely) might skip the
+                // steps below. Same setting as CaptureStage.RenderAsPosed; only copies change.
+                foreach (var animator in _animators) animator.cullingMode = AnimatorCullingMode.AlwaysAnimate;
+            }
             if ((_sources & TimeSources.Animation) != 0) _animations.AddRange(root.GetComponentsInChildren<Animation>(true));
             if ((_sources & TimeSources.Timeline) != 0) _directors.AddRange(root.GetComponentsInChildren<PlayableDirector>(true));
             if ((_sources & TimeSources.Particles) != 0)
