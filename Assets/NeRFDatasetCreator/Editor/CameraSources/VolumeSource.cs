@@ -1,4 +1,7 @@
 using System.Collections.Generic;
+using System.Globalization;
+using System.Text;
+using UnityEditor;
 using UnityEngine;
 using UnityEngine.SceneManagement;
 
@@ -63,8 +66,42 @@ namespace NerfDatasetCreator.Editor
             return new VolumeScene(box, Obstacles(boxObject), waypoints);
         }
 
+        // The Scene-view preview resolves the sources ten times a second; reading every collider of a large environment
+        // each time would make the editor stutter. Cached per excluded object and set of loaded scenes, and forgotten on
+        // any change the editor publishes (ObjectChangeEvents.changesPublished: moved, added, removed, edited objects),
+        // as AnimatedCameraSampler does; DatasetCapture.Prepare clears it, so a capture always reads the scene afresh.
+        static readonly Dictionary<string, List<OrientedBox>> ObstacleCache = new Dictionary<string, List<OrientedBox>>();
+        static bool _listening;
+
+        /// <summary>Forgets the cached obstacles (a capture about to start, tests, or a change the events do not report).</summary>
+        public static void ClearCache() => ObstacleCache.Clear();
+
         /// <summary>The obstacle boxes of the loaded scenes, in hierarchy order, leaving out <paramref name="exclude"/> and its children.</summary>
         public static List<OrientedBox> Obstacles(GameObject exclude)
+        {
+            if (!_listening)
+            {
+                _listening = true;
+                ObjectChangeEvents.changesPublished += (ref ObjectChangeEventStream stream) => ObstacleCache.Clear();
+            }
+            var key = CacheKey(exclude);
+            if (!ObstacleCache.TryGetValue(key, out var obstacles))
+                ObstacleCache[key] = obstacles = ReadObstacles(exclude);
+            return new List<OrientedBox>(obstacles);
+        }
+
+        static string CacheKey(GameObject exclude)
+        {
+            var key = new StringBuilder(exclude == null ? "-" : exclude.GetInstanceID().ToString(CultureInfo.InvariantCulture));
+            for (var s = 0; s < SceneManager.sceneCount; s++)
+            {
+                var scene = SceneManager.GetSceneAt(s);
+                key.Append('|').Append(scene.handle.ToString(CultureInfo.InvariantCulture)).Append(scene.isLoaded ? 'L' : 'u');
+            }
+            return key.ToString();
+        }
+
+        static List<OrientedBox> ReadObstacles(GameObject exclude)
         {
             Physics.SyncTransforms();
             var obstacles = new List<OrientedBox>();

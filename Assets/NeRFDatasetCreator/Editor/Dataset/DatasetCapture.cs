@@ -37,6 +37,7 @@ namespace NerfDatasetCreator.Editor
         {
             if (settings == null) throw new ArgumentNullException(nameof(settings));
             settings = settings.Clone();
+            VolumeSource.ClearCache(); // the preview may read the obstacles from a cache; a capture reads the scene now
             var problems = new List<ValidationProblem>();
             var extraWarnings = new List<ValidationProblem>();
             var template = FindTemplateCamera(settings.Camera.CopyFromCamera, problems);

@@ -70,6 +70,29 @@ namespace NerfDatasetCreator.Editor.Tests.CameraSources
         }
 
         [Test]
+        public void ThePreviewReadsObstaclesFromACacheAndAPreparedCaptureReadsThemAfresh()
+        {
+            var scene = TestScene.Open();
+            try
+            {
+                Assume.That(SceneManager.sceneCount, Is.EqualTo(1), "colliders of other open scenes would be obstacles too");
+                var wall = new GameObject("Wall", typeof(BoxCollider));
+                VolumeSource.ClearCache();
+                Assert.That(VolumeSource.Obstacles(null).Single().Centre.X, Is.EqualTo(0).Within(1e-6));
+                // ObjectChangeEvents are published after this editor update, so within it the cache still answers.
+                wall.transform.position = new Vector3(3, 0, 0);
+                Assert.That(VolumeSource.Obstacles(null).Single().Centre.X, Is.EqualTo(0).Within(1e-6), "served from the cache");
+                DatasetCapture.Prepare(Settings("CaptureVolume"), null, System.IO.Path.GetTempPath());
+                Assert.That(VolumeSource.Obstacles(null).Single().Centre.X, Is.EqualTo(3).Within(1e-6), "Prepare cleared the cache");
+            }
+            finally
+            {
+                TestScene.Close(scene);
+                VolumeSource.ClearCache();
+            }
+        }
+
+        [Test]
         public void APathsWaypointsAreItsChildrenInHierarchyOrderAndItsCamerasFollowThem()
         {
             var scene = TestScene.Open();
