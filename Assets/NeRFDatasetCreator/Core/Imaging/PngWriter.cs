@@ -231,18 +231,28 @@ namespace NerfDatasetCreator
         {
             var deflate = s.Deflate;
             int deflateBytes = deflate.Measure(out uint adler);
+            var file = NewFile(width, height, format, PngCompression.Huffman, deflateBytes, out int idat, out int idatData);
+            deflate.Write(file, idat + 10);
+            return FinishFile(file, idat, idatData, adler);
+        }
+
+        /// <summary>
+        /// A file array of the exact size for one IDAT of <paramref name="deflateBytes"/>, with the signature, IHDR, the
+        /// IDAT's length, type and zlib header written; the DEFLATE data goes at <c>idat + 10</c>, then <see cref="FinishFile"/>.
+        /// </summary>
+        static byte[] NewFile(int width, int height, PngPixelFormat format, PngCompression compression, int deflateBytes, out int idat, out int idatData)
+        {
             const int headerBytes = 8 + 12 + 13;
-            int idatData = 2 + deflateBytes + 4;
+            idatData = 2 + deflateBytes + 4;
             var file = new byte[headerBytes + 12 + idatData + 12];
             Buffer.BlockCopy(Signature, 0, file, 0, Signature.Length);
             WriteHeader(file, 8, width, height, format);
-            int idat = headerBytes;
+            idat = headerBytes;
             PutUInt32(file, idat, (uint)idatData);
             PutType(file, idat + 4, "IDAT");
             file[idat + 8] = 0x78;
-            file[idat + 9] = ZlibFlags(PngCompression.Huffman);
-            deflate.Write(file, idat + 10);
-            return FinishFile(file, idat, idatData, adler);
+            file[idat + 9] = ZlibFlags(compression);
+            return file;
         }
 
         /// <summary>
@@ -263,16 +273,7 @@ namespace NerfDatasetCreator
             }
             uint adler = Adler32.Compute(stream, 0, length);
             int deflateBytes = s.Lz77.Compress(stream, length);
-            const int headerBytes = 8 + 12 + 13;
-            int idatData = 2 + deflateBytes + 4;
-            var file = new byte[headerBytes + 12 + idatData + 12];
-            Buffer.BlockCopy(Signature, 0, file, 0, Signature.Length);
-            WriteHeader(file, 8, width, height, format);
-            int idat = headerBytes;
-            PutUInt32(file, idat, (uint)idatData);
-            PutType(file, idat + 4, "IDAT");
-            file[idat + 8] = 0x78;
-            file[idat + 9] = ZlibFlags(PngCompression.Lz77);
+            var file = NewFile(width, height, format, PngCompression.Lz77, deflateBytes, out int idat, out int idatData);
             Buffer.BlockCopy(s.Lz77.Output, 0, file, idat + 10, deflateBytes);
             return FinishFile(file, idat, idatData, adler);
         }
