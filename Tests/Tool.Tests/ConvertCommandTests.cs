@@ -135,6 +135,21 @@ namespace NerfDatasetCreator.Tool.Tests
         }
 
         [Test]
+        public void ALeftOverCameraPathIsRefusedBeforeAnythingIsPlaced()
+        {
+            var paths = Path.Combine(_dataset, "camera_paths");
+            Directory.CreateDirectory(paths);
+            var leftover = Path.Combine(paths, "val.json");
+            File.WriteAllText(leftover, "mine");
+            var run = ToolRun.Of("convert", _dataset, "--to", "nerfstudio");
+            Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
+            Assert.That(run.Err, Does.StartWith("error: outDir = " + leftover + ": already exists; convert never overwrites files."));
+            Assert.That(File.Exists(Path.Combine(_dataset, "transforms.json")), Is.False, "nothing of the export was placed");
+            Assert.That(Directory.GetFiles(paths), Is.EqualTo(new[] { leftover }));
+            Assert.That(File.ReadAllText(leftover), Is.EqualTo("mine"));
+        }
+
+        [Test]
         public void APlanOnlyDatasetIsRefusedInOneLineNotOnePerFrame()
         {
             var plan = RenderedDataset.PlanOnly(_scratch, "planned");

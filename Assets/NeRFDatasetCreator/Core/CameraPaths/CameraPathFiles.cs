@@ -30,6 +30,8 @@ namespace NerfDatasetCreator
                     ? NerfstudioCameraPath.Build(poses, scene.Intrinsics)
                     : NgpCameraPath.Build(poses, scene.Intrinsics);
                 var file = Path.Combine(folder, split + ".json");
+                // Checked here, before anything is placed: found only at the move, it would leave a half-placed export.
+                DatasetConverter.EnsureAbsent(file);
                 staged.WriteNewText(file, ExportJson.Serialise(json));
                 written.Add(file);
             }

@@ -157,7 +157,8 @@ namespace NerfDatasetCreator
             return new ConversionResult(outDir, outDir, all, warnings);
         }
 
-        static void EnsureAbsent(string path)
+        /// <summary>Refuses, naming it, a destination that exists: convert never overwrites (every export checks before writing).</summary>
+        internal static void EnsureAbsent(string path)
         {
             if (File.Exists(path) || Directory.Exists(path))
                 throw new InvalidParameterException(new[]

@@ -61,7 +61,7 @@ namespace NerfDatasetCreator
             var cloud = Path.Combine(outDir, Dynamic3DGaussians.PointCloudFileName);
             var ims = Path.Combine(outDir, Dynamic3DGaussians.ImagesFolder);
             var seg = Path.Combine(outDir, Dynamic3DGaussians.SegmentationFolder);
-            foreach (var path in new[] { trainMeta, testMeta, cloud, ims, seg }.Where(p => p != null)) EnsureAbsent(path);
+            foreach (var path in new[] { trainMeta, testMeta, cloud, ims, seg }.Where(p => p != null)) DatasetConverter.EnsureAbsent(path);
 
             var written = new List<string>();
             foreach (var grid in new[] { train, test }.Where(g => g != null))
@@ -204,12 +204,6 @@ namespace NerfDatasetCreator
             {
                 return null;
             }
-        }
-
-        static void EnsureAbsent(string path)
-        {
-            if (File.Exists(path) || Directory.Exists(path))
-                throw Refuse("outDir", path, "already exists; convert never overwrites files.", "Move or delete it, or pass another output folder.");
         }
 
         static InvalidParameterException Refuse(string field, string value, string reason, string fix) =>
