@@ -112,8 +112,9 @@ namespace NerfDatasetCreator.Editor
                 {
                     clock.Show(copy.Holder, evaluated[i]);
                     // Twice: in 3.x the brain refreshes the cameras that were live before it takes the Timeline's new
-                    // blend (CinemachineBrain.cs:527–546); the second pass updates the ones live now. With delta time -1
-                    // an update depends on this time alone, so a repeat changes nothing else.
+                    // blend (releases/3.1.1 CinemachineBrain.cs:603 before 544–546); the second pass updates the ones live
+                    // now. With delta time -1 an update depends on this time alone (CinemachineCore.cs:353 in 2.10.3,
+                    // CameraUpdateManager.cs:189 in 3.1.1 skip a repeat only for delta time ≥ 0), so a repeat changes nothing else.
                     api.ManualUpdate(copiedBrain);
                     api.ManualUpdate(copiedBrain);
                     var time = times[i].ToString("0.####", CultureInfo.InvariantCulture);
