@@ -22,6 +22,10 @@ namespace NerfDatasetCreator.Editor
     /// it; Object.Instantiate remaps references inside the copied hierarchy to the copies, so the copied director
     /// drives the copied camera.
     /// <para>
+    /// A camera with a CinemachineBrain is sampled by <see cref="CinemachineCameraSampler"/> instead: its Timeline's
+    /// Cinemachine track and virtual cameras live on other root objects, so its whole scene is copied.
+    /// </para>
+    /// <para>
     /// Samples are cached until anything in the editor changes (<c>ObjectChangeEvents.changesPublished</c>,
     /// Editor/Mono/Undo/EditorObjectChangeEvents.cs:58): the window plans on every edit, and an Animator is stepped
     /// from the start for every sample.

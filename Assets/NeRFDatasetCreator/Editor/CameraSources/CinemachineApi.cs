@@ -126,8 +126,10 @@ namespace NerfDatasetCreator.Editor
                 if (c != null && !live.Contains(c)) live.Add(c);
                 return;
             }
-            // A blend in progress as one side of another (Cinemachine's internal BlendSourceVirtualCamera.Blend).
-            var inner = Get(camera, "Blend");
+            // A blend in progress as one side of another (Cinemachine's internal BlendSourceVirtualCamera.Blend,
+            // 2.10.3 CinemachineBlend.cs:290–293); another kind of camera has no pose of its own to check.
+            var property = camera.GetType().GetProperty("Blend", Instance);
+            var inner = property == null ? null : property.GetValue(camera);
             if (inner != null) CollectBlend(inner, live, depth);
         }
 
