@@ -155,7 +155,9 @@ namespace NerfDatasetCreator
                     foreach (var w in pair.Value.Poses.Warnings) yield return w;
                     continue;
                 }
-                foreach (var w in pair.Value.Poses.Warnings) yield return Inner(pair.Value.Field + ".path", w);
+                // A scene source's notes already name their own field; an imported file's are inside the file.
+                foreach (var w in pair.Value.Poses.Warnings)
+                    yield return pair.Value.Poses.Format == SceneCameraPlanning.Format ? w : Inner(pair.Value.Field + ".path", w);
                 var k = ImportedPoses.SharedIntrinsics(pair.Value.Cameras);
                 if (k == null)
                 {

@@ -102,6 +102,9 @@ namespace NerfDatasetCreator
         /// <summary>Why the Unity editor could not read the source's cameras (an object not found…), reported instead of them; null when it could.</summary>
         [NonSerialized] public ValidationProblem SceneProblem;
 
+        /// <summary>What the Unity editor read but does not reproduce (a Cinemachine camera's damping…), warned about when planning; null for none.</summary>
+        [NonSerialized] public IReadOnlyList<ValidationProblem> SceneWarnings;
+
         public bool IsImported => Kind == CameraSourceKind.ImportedPoses;
 
         public bool IsFormation => Kind == CameraSourceKind.Formation;

@@ -49,7 +49,7 @@ namespace NerfDatasetCreator
                 ImportedIntrinsics.AngleOnly(HorizontalFov(c.VerticalFovDegrees, width, height)))).ToList();
             // Normalisation null: the "file" world is the raw output world, so PosePlacement.ToOutput applies the
             // dataset's normalisation to them as to a formation's poses.
-            return new ImportedSplit(new ImportedPoses(source.ObjectPath, Format, imported, null, null), imported, field);
+            return new ImportedSplit(new ImportedPoses(source.ObjectPath, Format, imported, null, source.SceneWarnings), imported, field);
         }
 
         /// <summary><c>camera_angle_x</c> (radians) of a Unity vertical field of view at W × H.</summary>

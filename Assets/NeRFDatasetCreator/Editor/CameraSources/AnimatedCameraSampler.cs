@@ -22,6 +22,10 @@ namespace NerfDatasetCreator.Editor
     /// it; Object.Instantiate remaps references inside the copied hierarchy to the copies, so the copied director
     /// drives the copied camera.
     /// <para>
+    /// A camera with a CinemachineBrain is sampled by <see cref="CinemachineCameraSampler"/> instead: its Timeline's
+    /// Cinemachine track and virtual cameras live on other root objects, so its whole scene is copied.
+    /// </para>
+    /// <para>
     /// Samples are cached until anything in the editor changes (<c>ObjectChangeEvents.changesPublished</c>,
     /// Editor/Mono/Undo/EditorObjectChangeEvents.cs:58): the window plans on every edit, and an Animator is stepped
     /// from the start for every sample.
@@ -33,11 +37,18 @@ namespace NerfDatasetCreator.Editor
         public const TimeSources Drivers = TimeSources.Timeline | TimeSources.Animator | TimeSources.Animation;
 
         static readonly Dictionary<string, List<SceneCamera>> Cache = new Dictionary<string, List<SceneCamera>>();
+        static readonly Dictionary<string, CinemachineCameraSampler.Result> CinemachineCache = new Dictionary<string, CinemachineCameraSampler.Result>();
         static bool _listening;
 
-        public static List<SceneCamera> Sample(CameraSourceSettings source, int width, int height, string field, out ValidationProblem problem)
+        public static List<SceneCamera> Sample(CameraSourceSettings source, int width, int height, string field, out ValidationProblem problem) =>
+            Sample(source, width, height, field, out problem, out _);
+
+        /// <summary>The samples, and what was sampled but is not reproduced (a Cinemachine camera's damping) as <paramref name="warnings"/>.</summary>
+        public static List<SceneCamera> Sample(CameraSourceSettings source, int width, int height, string field, out ValidationProblem problem,
+            out IReadOnlyList<ValidationProblem> warnings)
         {
             problem = null;
+            warnings = Array.Empty<ValidationProblem>();
             if (string.IsNullOrWhiteSpace(source.ObjectPath)) return new List<SceneCamera>(); // Core reports the empty path
             var found = SceneObjects.Find(source.ObjectPath);
             var camera = found == null ? null : found.GetComponent<Camera>();
@@ -47,6 +58,22 @@ namespace NerfDatasetCreator.Editor
                     found == null ? "names no object in the open scenes." : "names an object without a Camera.",
                     "Give the hierarchy path of the animated camera, with its scene open.");
                 return null;
+            }
+            // A CinemachineBrain sets the camera's transform and lens itself: what animates it is the Timeline's
+            // Cinemachine track and the virtual cameras, wherever they are in the scene.
+            var brain = CinemachineApi.BrainOn(camera);
+            if (brain != null)
+            {
+                Listen();
+                var cmKey = string.Join("|", camera.GetInstanceID(), source.Start, source.End, source.Samples, source.FrameStep, source.FrameRate, width, height);
+                if (!CinemachineCache.TryGetValue(cmKey, out var sampledByBrain))
+                {
+                    sampledByBrain = CinemachineCameraSampler.Sample(camera, brain, source, width, height, field, out problem);
+                    if (problem != null) return null;
+                    CinemachineCache[cmKey] = sampledByBrain;
+                }
+                warnings = sampledByBrain.Warnings;
+                return sampledByBrain.Cameras;
             }
             var root = camera.transform.root.gameObject;
             var length = ContentClock.ClipLength(root, Drivers);
@@ -136,17 +163,22 @@ namespace NerfDatasetCreator.Editor
             if (longest != null && longest.frameRate > 0) return longest.frameRate;
             foreach (var director in root.GetComponentsInChildren<PlayableDirector>(true))
             {
-                var asset = director.playableAsset;
-                if (asset == null) continue;
-                var settings = Member(asset, "editorSettings");
-                var rate = settings == null ? null : Member(settings, "frameRate") ?? Member(settings, "fps");
-                if (rate is IConvertible convertible)
-                {
-                    var value = convertible.ToDouble(System.Globalization.CultureInfo.InvariantCulture);
-                    if (value > 0) return value;
-                }
+                var rate = TimelineFrameRate(director);
+                if (rate > 0) return rate;
             }
             return AnimatedCameraSampling.DefaultFrameRate;
+        }
+
+        /// <summary>The frame rate of a director's Timeline (<c>TimelineAsset.editorSettings.frameRate</c>, read by name), 0 when unknown.</summary>
+        public static double TimelineFrameRate(PlayableDirector director)
+        {
+            var asset = director.playableAsset;
+            if (asset == null) return 0;
+            var settings = Member(asset, "editorSettings");
+            var rate = settings == null ? null : Member(settings, "frameRate") ?? Member(settings, "fps");
+            if (!(rate is IConvertible convertible)) return 0;
+            var value = convertible.ToDouble(System.Globalization.CultureInfo.InvariantCulture);
+            return value > 0 ? value : 0;
         }
 
         static object Member(object o, string name)
@@ -170,10 +202,14 @@ namespace NerfDatasetCreator.Editor
         {
             if (_listening) return;
             _listening = true;
-            ObjectChangeEvents.changesPublished += (ref ObjectChangeEventStream stream) => Cache.Clear();
+            ObjectChangeEvents.changesPublished += (ref ObjectChangeEventStream stream) => ClearCache();
         }
 
         /// <summary>Forgets every cached sample (tests, or a change the events do not report).</summary>
-        public static void ClearCache() => Cache.Clear();
+        public static void ClearCache()
+        {
+            Cache.Clear();
+            CinemachineCache.Clear();
+        }
     }
 }

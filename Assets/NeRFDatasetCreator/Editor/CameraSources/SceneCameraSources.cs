@@ -28,10 +28,11 @@ namespace NerfDatasetCreator.Editor
                 if (source == null || !source.IsFromScene) continue;
                 source.SceneCameras = null;
                 source.SceneProblem = null;
+                source.SceneWarnings = null;
                 if (source.Kind == CameraSourceKind.SceneCameras)
                     source.SceneCameras = UnderParent(source.ObjectPath, settings.Width, settings.Height, field, out source.SceneProblem);
                 else if (sampleAnimations)
-                    source.SceneCameras = AnimatedCameraSampler.Sample(source, settings.Width, settings.Height, field, out source.SceneProblem);
+                    source.SceneCameras = AnimatedCameraSampler.Sample(source, settings.Width, settings.Height, field, out source.SceneProblem, out source.SceneWarnings);
             }
         }
 

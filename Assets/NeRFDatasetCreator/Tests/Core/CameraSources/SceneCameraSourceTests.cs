@@ -52,6 +52,18 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void TheEditorsNotesOnASceneSourceAreWarningsUnderTheirOwnField()
+        {
+            var s = WithShots(Shot("A", 1, 2, 3, 30));
+            s.Test.Source.Kind = CameraSourceKind.AnimatedCamera;
+            s.Test.Source.SceneWarnings = new[] { new ValidationProblem("splits.test.source.camera", "CM Close", "has damping.", "Set it to 0.") };
+            var plan = CapturePlan.Build(s, PlanTarget.AtOrigin);
+            var note = plan.Warnings.Single(w => w.Reason == "has damping.");
+            Assert.That(note.Field, Is.EqualTo("splits.test.source.camera"), "not wrapped as a problem inside a file");
+            Assert.That(note.Value, Is.EqualTo("CM Close"));
+        }
+
+        [Test]
         public void TheDatasetsNormalisationAppliesToSceneCamerasAsToAFormation()
         {
             var s = WithShots(Shot("A", 1, 2, 3, 40));
