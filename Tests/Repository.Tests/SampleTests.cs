@@ -1,3 +1,5 @@
+using System;
+using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using System.Text.RegularExpressions;
@@ -5,25 +7,84 @@ using NUnit.Framework;
 
 namespace NerfDatasetCreator.Repository.Tests
 {
-    /// <summary>The sample that README's first command captures: its config must read, validate and point at real things.</summary>
+    /// <summary>
+    /// The sample's batch configs (README's first command captures nerf-sample.json; dynamic-capture.md's worked
+    /// example the dynamic ones): each must read, validate, plan and point at real things.
+    /// </summary>
     [TestFixture]
     public class SampleTests
     {
-        static string ConfigPath => RepositoryPaths.Combine("Assets", "Samples", "NeRFSample", "nerf-sample.json");
+        static string SampleFolder => RepositoryPaths.Combine("Assets", "Samples", "NeRFSample");
+        static string ConfigPath => Path.Combine(SampleFolder, "nerf-sample.json");
+
+        /// <summary>Every config of the sample folder, by file name.</summary>
+        static IEnumerable<string> Configs() =>
+            Directory.GetFiles(SampleFolder, "*.json").Select(Path.GetFileName).OrderBy(f => f, StringComparer.Ordinal);
+
+        [Test]
+        public void TheSampleShipsTheStaticAndTheDynamicConfigs()
+        {
+            Assert.That(Configs(), Is.EquivalentTo(new[] { "nerf-sample.json", "nerf-sample-dynamic.json", "nerf-sample-multiview.json" }));
+        }
+
+        [TestCaseSource(nameof(Configs))]
+        public void EverySampleConfigReadsWithoutWarningsAndValidates(string file)
+        {
+            var read = DatasetSettingsJson.ReadFile(Path.Combine(SampleFolder, file));
+            Assert.That(read.Warnings.Select(w => w.ToString()), Is.Empty);
+            Assert.That(SettingsValidator.Validate(read.Settings).Select(p => p.ToString()), Is.Empty);
+        }
+
+        [TestCaseSource(nameof(Configs))]
+        public void EverySampleConfigPlansWithoutProblemsOrWarnings(string file)
+        {
+            var settings = DatasetSettingsJson.ReadFile(Path.Combine(SampleFolder, file)).Settings;
+            var plan = CapturePlan.Build(settings, settings.Time.Enabled ? AnimatedTargetAsUnityMeasuresIt() : new PlanTarget(new Vector3d(0, 0, 0), 1));
+            Assert.That(plan.Warnings.Select(w => w.ToString()), Is.Empty);
+            if (!settings.Time.Enabled) return;
+            Assert.That(plan.Time, Is.Not.Null);
+            Assert.That(plan.Time.EndSeconds, Is.EqualTo(2.0), "end \"clip\" is the clip's length");
+        }
+
+        /// <summary>
+        /// What TimeMeasurement gives planning for NeRFAnimatedTarget: the clip's length, and the bounds of the cube
+        /// (the built-in unit cube scaled 0.3 × 0.3 × 0.8) over its motion, sampled densely from the clip's curves,
+        /// about the root at (3, 0, 0). By hand: x from −0.75 (at 0 s, −0.6 − 0.15) to 1.0 (at 2 s, turned 90°: 0.6 + 0.4),
+        /// y from 0.25 to 0.95 (0.8 ± 0.15 at 1 s), z within ±√(0.15² + 0.4²) (the box's xz diagonal, reached at a
+        /// 20.6° turn): radius √(0.875² + 0.35² + 0.15² + 0.4²) ≈ 1.035, under the 1.3 the loaders' boxes allow at distance 4.
+        /// </summary>
+        static PlanTarget AnimatedTargetAsUnityMeasuresIt()
+        {
+            var clip = SampleClip.Load();
+            double[] min = { double.MaxValue, double.MaxValue, double.MaxValue }, max = { double.MinValue, double.MinValue, double.MinValue };
+            for (var i = 0; i <= 200; i++)
+            {
+                var (position, euler) = clip.Pose(clip.StopTime * i / 200);
+                var yaw = euler[1] * Math.PI / 180;
+                foreach (var cx in new[] { -0.15, 0.15 })
+                foreach (var cy in new[] { -0.15, 0.15 })
+                foreach (var cz in new[] { -0.4, 0.4 })
+                {
+                    // A turn about +y (Unity, left-handed): x' = x cos + z sin, z' = −x sin + z cos.
+                    var corner = new[] { 3 + position[0] + cx * Math.Cos(yaw) + cz * Math.Sin(yaw), position[1] + cy, position[2] - cx * Math.Sin(yaw) + cz * Math.Cos(yaw) };
+                    for (var a = 0; a < 3; a++)
+                    {
+                        min[a] = Math.Min(min[a], corner[a]);
+                        max[a] = Math.Max(max[a], corner[a]);
+                    }
+                }
+            }
+            var half = Enumerable.Range(0, 3).Select(a => (max[a] - min[a]) / 2).ToArray();
+            var radius = Math.Sqrt(half.Sum(h => h * h));
+            Assert.That(radius, Is.EqualTo(Math.Sqrt(0.875 * 0.875 + 0.35 * 0.35 + 0.15 * 0.15 + 0.4 * 0.4)).Within(1e-4));
+            return new PlanTarget(new Vector3d((min[0] + max[0]) / 2, (min[1] + max[1]) / 2, (min[2] + max[2]) / 2), radius, clip.StopTime);
+        }
 
         [Test]
         public void TheReadmeCommandNamesTheSampleConfig()
         {
             var readme = File.ReadAllText(RepositoryPaths.Combine("README.md"));
             Assert.That(readme, Does.Contain("-executeMethod NerfDatasetCreator.Editor.BatchCapture.Run -nerfConfig Assets/Samples/NeRFSample/nerf-sample.json"));
-        }
-
-        [Test]
-        public void TheSampleConfigReadsWithoutWarningsAndValidates()
-        {
-            var read = DatasetSettingsJson.ReadFile(ConfigPath);
-            Assert.That(read.Warnings.Select(w => w.ToString()), Is.Empty);
-            Assert.That(SettingsValidator.Validate(read.Settings).Select(p => p.ToString()), Is.Empty);
         }
 
         [Test]
@@ -36,10 +97,10 @@ namespace NerfDatasetCreator.Repository.Tests
             Assert.That(DatasetSplits.All.Select(s => ExtraOutputs.HasPng(settings.Split(s).Depth)), Is.All.True);
         }
 
-        [Test]
-        public void TheSampleConfigsSceneExistsAndHoldsItsTarget()
+        [TestCaseSource(nameof(Configs))]
+        public void EverySampleConfigsSceneExistsAndHoldsItsTarget(string file)
         {
-            var settings = DatasetSettingsJson.ReadFile(ConfigPath).Settings;
+            var settings = DatasetSettingsJson.ReadFile(Path.Combine(SampleFolder, file)).Settings;
             var scene = RepositoryPaths.Combine(settings.Scene.Split('/'));
             Assert.That(File.Exists(scene), Is.True, settings.Scene);
             Assert.That(Regex.IsMatch(File.ReadAllText(scene), @"^\s*m_Name: " + Regex.Escape(settings.Target) + @"\s*$", RegexOptions.Multiline),
