@@ -179,10 +179,10 @@ namespace NerfDatasetCreator
             return _size;
         }
 
-        // Images from this many words (128 KiB) on count a sample: one stretch of SampleWords in every SampleStride.
+        // Images from this many words (128 KiB) on count a sample: one stretch of SampleWords in every SampleStride (1 in 8).
         const int SampleFrom = 1 << 14;
         internal const int SampleWords = 64;
-        internal const int SampleStride = 256;
+        internal const int SampleStride = 512;
 
         /// <summary>Adds the symbols of words [from, to) to the counts, as if a run could not go on from before them.</summary>
         void CountRange(int from, int to, int[] hist, int[] counts)
