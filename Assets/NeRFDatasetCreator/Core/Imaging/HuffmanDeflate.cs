@@ -101,6 +101,7 @@ namespace NerfDatasetCreator
         // The block header: at most 5 + 5 + 4 + 19·3 bits and 286 + 30 code lengths of at most 7 + 7 bits.
         readonly byte[] _headerScratch = new byte[1024];
         bool _stored;
+        ulong _adlerS1, _adlerS2;
         int _size;
 
         /// <summary>Sizes <see cref="Stream"/> for an image; call before <see cref="PutRow"/>.</summary>
@@ -119,12 +120,52 @@ namespace NerfDatasetCreator
         /// <summary>Uncompressed length of the zlib payload: a type byte and the row bytes per row.</summary>
         internal int StreamBytes => (_rowBytes + 1) * _height;
 
-        /// <summary>Places row <paramref name="y"/>: its filter type, then its filtered bytes from <paramref name="filtered"/>.</summary>
+        /// <summary>
+        /// Places row <paramref name="y"/> (rows in order from 0): its filter type, then its filtered bytes from
+        /// <paramref name="filtered"/>, and feeds both to the Adler-32 (RFC 1950) while the row is in the cache.
+        /// </summary>
         internal void PutRow(int y, int type, ulong[] filtered)
         {
             int at = y * (_rowBytes + 1);
             Buffer.SetByte(Stream, at, (byte)type);
             Buffer.BlockCopy(filtered, 0, Stream, at + 1, _rowBytes);
+
+            ulong s1 = y == 0 ? 1UL : _adlerS1, s2 = y == 0 ? 0UL : _adlerS2;
+            s1 += (uint)type;
+            s2 += s1;
+            int full = _rowBytes >> 3;
+            for (int start = 0; start < full; start += 256)
+            {
+                // Adler-32 of 8 bytes b0…b7: s1 += Σb, s2 += 8·s1 + Σ(8 − k)·bk; the weighted sums are gathered per
+                // byte position in 16-bit lanes (256 words at most: 255·256 fits) and added after each stretch.
+                ulong laneEven = 0, laneOdd = 0;
+                int end = Math.Min(full, start + 256);
+                for (int j = start; j < end; j++)
+                {
+                    ulong w = filtered[j];
+                    ulong even = w & EvenBytes, odd = (w >> 8) & EvenBytes;
+                    s2 += s1 << 3;
+                    s1 += ((even + odd) * LaneSum) >> 48;
+                    laneEven += even;
+                    laneOdd += odd;
+                }
+                s2 += Weighted(laneEven, laneOdd);
+                s1 %= AdlerModulus;
+                s2 %= AdlerModulus;
+            }
+            if ((_rowBytes & 7) != 0)
+            {
+                ulong last = filtered[full];
+                for (int k = 0; k < (_rowBytes & 7); k++)
+                {
+                    s1 += (last >> (8 * k)) & 0xFF;
+                    s2 += s1;
+                }
+                s1 %= AdlerModulus;
+                s2 %= AdlerModulus;
+            }
+            _adlerS1 = s1;
+            _adlerS2 = s2;
         }
 
         /// <summary>Row <paramref name="y"/>'s filter type, as placed by <see cref="PutRow"/>.</summary>
@@ -134,7 +175,8 @@ namespace NerfDatasetCreator
         /// Builds the codes from the counts of the symbols the stream will become — all of them for a small image, one
         /// stretch of <see cref="SampleWords"/> words in every <see cref="SampleStride"/> otherwise (a render's rows
         /// are alike enough that the code lengths barely differ; every symbol gets a count of at least one, so
-        /// anything the sample missed still has a code) — then codes the stream and its Adler-32 (RFC 1950). Returns
+        /// anything the sample missed still has a code) — then codes the stream; <paramref name="adler"/> is the
+        /// Adler-32 <see cref="PutRow"/> gathered. Returns
         /// the size in bytes of the DEFLATE stream <see cref="Write"/> will copy: the Huffman block, or stored
         /// blocks when those would be smaller (noise).
         /// </summary>
@@ -171,7 +213,8 @@ namespace NerfDatasetCreator
                 _match[m] = pattern | ((codeBits + extraBits + 1) << 24);
             }
 
-            int huffmanBytes = Encode(out adler);
+            adler = (uint)((_adlerS2 << 16) | _adlerS1);
+            int huffmanBytes = Encode();
             int blocks = Math.Max(1, (total + MaxStoredBlock - 1) / MaxStoredBlock);
             long storedBytes = total + 5L * blocks;
             _stored = storedBytes <= huffmanBytes;
@@ -316,7 +359,7 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>Codes the stream into <see cref="_bitWords"/> with the codes built; returns its size in bytes.</summary>
-        int Encode(out uint adler)
+        int Encode()
         {
             // The block header goes through the shared byte-wise writer into a small scratch, then into the words.
             ulong headerBits = 1 | (2 << 1); // BFINAL = 1, BTYPE = 10 (dynamic Huffman)
@@ -343,8 +386,6 @@ namespace NerfDatasetCreator
             int shift = 8 * _bytesPerPixel, back = 64 - shift;
             int lastValid = (1 << tail) - 1;
             int repeats = 0;
-            ulong s1 = 1, s2 = 0, laneEven = 0, laneOdd = 0;
-            int lanes = 0;
 
             // The same walk as Measure's.
             ulong w = stream[0];
@@ -371,31 +412,6 @@ namespace NerfDatasetCreator
                     inRun = ((starts | (starts << 1) | (starts << 2) | (starts << 3)) >> 8) & 0xFF;
                 }
                 int bytes = i + 1 < words ? 8 : tail;
-                if (bytes == 8)
-                {
-                    // Adler-32 of 8 bytes b0…b7: s1 += Σb, s2 += 8·s1 + Σ(8 − k)·bk; the weighted sums are
-                    // gathered per byte position in 16-bit lanes and added every 256 words.
-                    ulong even = w & EvenBytes, odd = (w >> 8) & EvenBytes;
-                    s2 += s1 << 3;
-                    s1 += ((even + odd) * LaneSum) >> 48;
-                    laneEven += even;
-                    laneOdd += odd;
-                    if (++lanes == 256)
-                    {
-                        s2 += Weighted(laneEven, laneOdd);
-                        laneEven = laneOdd = 0;
-                        lanes = 0;
-                        s1 %= AdlerModulus;
-                        s2 %= AdlerModulus;
-                    }
-                }
-                else
-                    for (int k = 0; k < bytes; k++)
-                    {
-                        s1 += (w >> (8 * k)) & 0xFF;
-                        s2 += s1;
-                    }
-
                 if (inRun == 0 && bytes == 8 && pairs != null)
                 {
                     if (repeats != 0)
@@ -403,21 +419,12 @@ namespace NerfDatasetCreator
                         PutMatches(repeats, ref acc, ref n, buf, ref o);
                         repeats = 0;
                     }
-                    // Eight literals as four two-literal codes (each at most 30 bits, its length above them).
-                    ulong pair = pairs[(int)w & 0xFFFF];
-                    ulong code = pair & 0xFFFFFFFF;
+                    // Eight literals as four two-literal codes (each at most 30 bits, its length above them), joined
+                    // two by two: at most 60 bits go into the accumulator at once.
+                    ulong pair = pairs[(int)w & 0xFFFF], pair2 = pairs[(int)(w >> 16) & 0xFFFF];
                     int length = (int)(pair >> 32);
-                    acc |= code << n;
-                    n += length;
-                    if (n >= 64)
-                    {
-                        buf[o++] = acc;
-                        n -= 64;
-                        acc = code >> (length - n);
-                    }
-                    pair = pairs[(int)(w >> 16) & 0xFFFF];
-                    code = pair & 0xFFFFFFFF;
-                    length = (int)(pair >> 32);
+                    ulong code = (pair & 0xFFFFFFFF) | ((pair2 & 0xFFFFFFFF) << length);
+                    length += (int)(pair2 >> 32);
                     acc |= code << n;
                     n += length;
                     if (n >= 64)
@@ -427,19 +434,10 @@ namespace NerfDatasetCreator
                         acc = code >> (length - n);
                     }
                     pair = pairs[(int)(w >> 32) & 0xFFFF];
-                    code = pair & 0xFFFFFFFF;
+                    pair2 = pairs[(int)(w >> 48)];
                     length = (int)(pair >> 32);
-                    acc |= code << n;
-                    n += length;
-                    if (n >= 64)
-                    {
-                        buf[o++] = acc;
-                        n -= 64;
-                        acc = code >> (length - n);
-                    }
-                    pair = pairs[(int)(w >> 48)];
-                    code = pair & 0xFFFFFFFF;
-                    length = (int)(pair >> 32);
+                    code = (pair & 0xFFFFFFFF) | ((pair2 & 0xFFFFFFFF) << length);
+                    length += (int)(pair2 >> 32);
                     acc |= code << n;
                     n += length;
                     if (n >= 64)
@@ -491,10 +489,6 @@ namespace NerfDatasetCreator
             if (repeats != 0) PutMatches(repeats, ref acc, ref n, buf, ref o);
             Put64((ulong)_codes[EndOfBlock], _lengths[EndOfBlock], ref acc, ref n, buf, ref o);
             if (n > 0) buf[o] = acc;
-            s2 += Weighted(laneEven, laneOdd);
-            s1 %= AdlerModulus;
-            s2 %= AdlerModulus;
-            adler = (uint)((s2 << 16) | s1);
             return 8 * o + (n + 7) / 8;
         }
 
