@@ -94,8 +94,10 @@ namespace NerfDatasetCreator
         readonly int[] _literal = new int[256];
         readonly int[] _match = new int[MaxMatch + 1];
         readonly CodeLengthHeader _header = new CodeLengthHeader();
-        // Stream bytes from which a table of literal pairs (65 536 entries) pays for its construction.
+        // Literals (estimated from the sample) from which a table of literal pairs (65 536 entries) pays for its
+        // construction: not for a mask, whose bytes are nearly all runs.
         const long PairTableFrom = 1 << 17;
+        bool _pairsPay;
         ulong[] _pairs;
         ulong[] _bitWords = new ulong[0];
         // The block header: at most 5 + 5 + 4 + 19·3 bits and 286 + 30 code lengths of at most 7 + 7 bits.
@@ -143,8 +145,9 @@ namespace NerfDatasetCreator
                 for (int j = start; j < end; j++)
                 {
                     ulong w = filtered[j];
-                    ulong even = w & EvenBytes, odd = (w >> 8) & EvenBytes;
                     s2 += s1 << 3;
+                    if (w == 0) continue; // a background's zeros: s1 stays
+                    ulong even = w & EvenBytes, odd = (w >> 8) & EvenBytes;
                     s1 += ((even + odd) * LaneSum) >> 48;
                     laneEven += even;
                     laneOdd += odd;
@@ -192,7 +195,13 @@ namespace NerfDatasetCreator
             else
                 for (int from = 0; from < words; from += SampleStride)
                     CountRange(from, Math.Min(from + SampleWords, words), hist, counts);
-            for (int b = 0; b < 256; b++) counts[b] = hist[b] + hist[256 + b] + hist[512 + b] + hist[768 + b];
+            long literals = 0;
+            for (int b = 0; b < 256; b++)
+            {
+                counts[b] = hist[b] + hist[256 + b] + hist[512 + b] + hist[768 + b];
+                literals += counts[b];
+            }
+            _pairsPay = literals * (sampled ? SampleStride / SampleWords : 1) >= PairTableFrom;
             if (sampled)
                 for (int symbol = 0; symbol < LiteralLengthSymbols; symbol++) counts[symbol]++;
             counts[EndOfBlock] = 1;
@@ -380,7 +389,7 @@ namespace NerfDatasetCreator
 
             int[] literal = _literal;
             int[] match = _match;
-            ulong[] pairs = total >= PairTableFrom ? BuildPairs() : null;
+            ulong[] pairs = _pairsPay ? BuildPairs() : null;
             ulong[] stream = Stream;
             int words = (total + 7) >> 3, tail = total - 8 * (words - 1);
             int shift = 8 * _bytesPerPixel, back = 64 - shift;
