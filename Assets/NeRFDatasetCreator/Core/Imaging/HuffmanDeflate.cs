@@ -45,6 +45,8 @@ namespace NerfDatasetCreator
         // word becomes bit k (the partial products never overlap, so nothing carries).
         const ulong OneBitPerByte = 0x0101010101010101UL;
         const ulong GatherBits = 0x0102040810204080UL;
+        const ulong Low7 = 0x7F7F7F7F7F7F7F7FUL;
+        const ulong High = 0x8080808080808080UL;
 
         // Trailing zero bits of 1…511 (a run or a stretch of literals in a word's nine-bit view).
         static readonly byte[] TrailingZeros = new byte[512];
@@ -256,11 +258,10 @@ namespace NerfDatasetCreator
                 int eNext = 0;
                 if (i + 1 < to)
                 {
+                    // A byte of x is zero where the byte equals the one a pixel earlier: its top bit set in z then.
                     ulong x = next ^ ((next << shift) | (w >> back));
-                    x |= x >> 4;
-                    x |= x >> 2;
-                    x |= x >> 1;
-                    eNext = ~(int)(((x & OneBitPerByte) * GatherBits) >> 56) & 0xFF;
+                    ulong z = ~(((x & Low7) + Low7) | x) & High;
+                    eNext = (int)(((z >> 7) * GatherBits) >> 56);
                     if (i + 2 == words) eNext &= lastValid;
                 }
                 int inRun = 0xFF; // eight equal bytes are a run already
@@ -406,11 +407,10 @@ namespace NerfDatasetCreator
                 int eNext = 0;
                 if (i + 1 < words)
                 {
+                    // A byte of x is zero where the byte equals the one a pixel earlier: its top bit set in z then.
                     ulong x = next ^ ((next << shift) | (w >> back));
-                    x |= x >> 4;
-                    x |= x >> 2;
-                    x |= x >> 1;
-                    eNext = ~(int)(((x & OneBitPerByte) * GatherBits) >> 56) & 0xFF;
+                    ulong z = ~(((x & Low7) + Low7) | x) & High;
+                    eNext = (int)(((z >> 7) * GatherBits) >> 56);
                     if (i + 2 == words) eNext &= lastValid;
                 }
                 int inRun = 0xFF; // eight equal bytes are a run already
