@@ -225,9 +225,9 @@ namespace NerfDatasetCreator
             }
 
             adler = (uint)((_adlerS2 << 16) | _adlerS1);
-            int huffmanBytes = Encode();
             int blocks = Math.Max(1, (total + MaxStoredBlock - 1) / MaxStoredBlock);
             long storedBytes = total + 5L * blocks;
+            long huffmanBytes = Encode(storedBytes);
             _stored = storedBytes <= huffmanBytes;
             _size = (int)(_stored ? storedBytes : huffmanBytes);
             return _size;
@@ -368,8 +368,11 @@ namespace NerfDatasetCreator
             else Buffer.BlockCopy(_bitWords, 0, output, at, _size);
         }
 
-        /// <summary>Codes the stream into <see cref="_bitWords"/> with the codes built; returns its size in bytes.</summary>
-        int Encode()
+        /// <summary>
+        /// Codes the stream into <see cref="_bitWords"/> with the codes built; returns its size in bytes, or a size
+        /// of at least <paramref name="storedBytes"/> as soon as it is clear that stored blocks will be smaller.
+        /// </summary>
+        long Encode(long storedBytes)
         {
             // The block header goes through the shared byte-wise writer into a small scratch, then into the words.
             ulong headerBits = 1 | (2 << 1); // BFINAL = 1, BTYPE = 10 (dynamic Huffman)
@@ -377,10 +380,12 @@ namespace NerfDatasetCreator
             _header.Write(ref headerBits, ref headerCount, _headerScratch, ref headerBytes);
 
             // The stream is built as 64-bit words (least significant bit first, as DEFLATE packs bits) and copied
-            // into the file at the end: one store per 64 bits. A literal is at most 15 bits and a match at most 21 bits
-            // for 3 bytes or more, so 15 bits a byte bound it.
+            // into the file at the end: one store per 64 bits. Coding stops once it has passed the stored blocks'
+            // size; before that check, one word's step adds at most 8 literals of 15 bits and the matches of the run
+            // it ends, at most 21 bits per 258 bytes of the payload: a twelfth of its size bounds them.
             int total = StreamBytes;
-            long capacity = (15L * total + 8L * headerBytes + 64) / 64 + 2;
+            int limit = (int)(storedBytes / 8) + 1;
+            long capacity = limit + total / 96 + headerBytes / 8 + 8;
             if (_bitWords.Length < capacity) _bitWords = new ulong[capacity];
             ulong[] buf = _bitWords;
             ulong acc = 0;
@@ -491,6 +496,7 @@ namespace NerfDatasetCreator
                         }
                     }
                 }
+                if (o >= limit) return storedBytes;
                 w = next;
                 ePrev = eCur;
                 eCur = eNext;
