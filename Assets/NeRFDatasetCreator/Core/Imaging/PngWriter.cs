@@ -22,7 +22,8 @@ namespace NerfDatasetCreator
         /// The compression used when none is given: Huffman, several times faster than DeflateStream's level 6 on both
         /// runtimes (Mono's DeflateStream always runs level 6), at the price of larger files on grainy renders and
         /// smooth depth images, where level 6's LZ77 search finds repeats that Huffman coding alone cannot use. The
-        /// figures are in README.md, section Performance; pass <see cref="PngCompression.Optimal"/> for the smallest files.
+        /// figures and the size analysis are in Documentation~/pixels.md §6; pass <see cref="PngCompression.Optimal"/>
+        /// for the smallest files.
         /// </summary>
         public const PngCompression DefaultCompression = PngCompression.Huffman;
 
