@@ -23,7 +23,10 @@ namespace NerfDatasetCreator
     /// </summary>
     internal sealed class HuffmanDeflate
     {
-        /// <summary>Repeats from which a run is sent as matches rather than literals (a match is at least 3 bytes).</summary>
+        /// <summary>
+        /// Repeats from which a run is sent as matches rather than literals (a match is at least 3 bytes); the
+        /// look-ahead's shifts by 1, 2 and 3 bytes are written for this value.
+        /// </summary>
         internal const int MinRepeats = 4;
 
         const int LiteralLengthSymbols = 286;
@@ -172,9 +175,6 @@ namespace NerfDatasetCreator
             _adlerS1 = s1;
             _adlerS2 = s2;
         }
-
-        /// <summary>Row <paramref name="y"/>'s filter type, as placed by <see cref="PutRow"/>.</summary>
-        internal int TypeOf(int y) => Buffer.GetByte(Stream, y * (_rowBytes + 1));
 
         /// <summary>
         /// Builds the codes from the counts of the symbols the stream will become — all of them for a small image, one
