@@ -16,9 +16,10 @@ namespace NerfDatasetCreator
     /// per byte says "equals the byte a pixel earlier"; with the next word's bits already computed, a few shifts
     /// mark the bytes that belong to runs of at least <see cref="MinRepeats"/> (any such byte has four equal bytes in
     /// a row within three bytes of it). A word with no such byte — nearly every word of a textured object — is eight
-    /// literals, counted into four interleaved histograms (no store waits for the previous one to the same counter)
-    /// and written as four two-literal codes, with no other branch. The loops keep everything in locals and call
-    /// nothing per byte, because Mono inlines little. Not thread-safe: one instance per thread.
+    /// literals: counted (in the sample) into four interleaved histograms, so that no increment waits for the
+    /// previous one to the same counter, and written as four two-literal codes joined two by two into a 64-bit
+    /// accumulator, with no other branch. The loops keep everything in locals and call nothing per byte, because
+    /// Mono inlines little. Not thread-safe: one instance per thread.
     /// </para>
     /// </summary>
     internal sealed class HuffmanDeflate
@@ -181,9 +182,8 @@ namespace NerfDatasetCreator
         /// stretch of <see cref="SampleWords"/> words in every <see cref="SampleStride"/> otherwise (a render's rows
         /// are alike enough that the code lengths barely differ; every symbol gets a count of at least one, so
         /// anything the sample missed still has a code) — then codes the stream; <paramref name="adler"/> is the
-        /// Adler-32 <see cref="PutRow"/> gathered. Returns
-        /// the size in bytes of the DEFLATE stream <see cref="Write"/> will copy: the Huffman block, or stored
-        /// blocks when those would be smaller (noise).
+        /// Adler-32 <see cref="PutRow"/> gathered. Returns the size in bytes of the DEFLATE stream
+        /// <see cref="Write"/> will copy: the Huffman block, or stored blocks when those would be smaller (noise).
         /// </summary>
         internal int Compress(out uint adler)
         {
@@ -402,7 +402,7 @@ namespace NerfDatasetCreator
             int lastValid = (1 << tail) - 1;
             int repeats = 0;
 
-            // The same walk as Measure's.
+            // The same walk as CountRange's, written out again: a per-word call would cost Mono more than the coding.
             ulong w = stream[0];
             int ePrev = 0, eCur = EqualBits(w, 0, shift, back) & ~((1 << _bytesPerPixel) - 1);
             if (words == 1) eCur &= lastValid;
