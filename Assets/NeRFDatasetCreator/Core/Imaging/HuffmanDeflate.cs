@@ -4,20 +4,30 @@ namespace NerfDatasetCreator
 {
     /// <summary>
     /// Raw DEFLATE (RFC 1951) for PNG's filtered rows, built to be fast on Mono as much as on .NET: no LZ77 search.
-    /// Every byte is a literal, except where a byte equals the one a pixel earlier: a run of such bytes is sent as
-    /// length/distance matches with the distance fixed at the pixel size — the transparent background of a render
-    /// (zeros), the flat or linearly varying parts of depth and normal images after filtering. One dynamic-Huffman
-    /// block whose codes come from this image's own counts (<see cref="Measure"/>), so the exact size is known
-    /// before anything is written; stored blocks instead when those would be smaller (noise).
+    /// Every byte is a literal, except where at least <see cref="MinRepeats"/> bytes in a row each equal the byte a
+    /// pixel earlier: such a run is sent as length/distance matches with the distance fixed at the pixel size — the
+    /// transparent background of a render (zeros), the flat or linearly varying parts of depth and normal images
+    /// after filtering. One dynamic-Huffman block whose codes come from this image's own counts
+    /// (<see cref="Compress"/>, from a sample of a large image); stored blocks instead when those would be smaller
+    /// (noise).
     /// <para>
-    /// The rows are held as 64-bit words (<see cref="Words"/>, filled by <see cref="PngWordFilter"/>): a whole word
-    /// of repeats is one comparison, and the Adler-32 of a word is a few multiplications. The loops keep everything in
-    /// locals and call nothing per byte, because Mono inlines little. Not thread-safe: one instance per thread.
+    /// The filtered image is held as the zlib payload itself — each row's type byte, then its bytes — packed into
+    /// 64-bit words (<see cref="Stream"/>), so both passes walk one flat array with no per-row case. Per word, one bit
+    /// per byte says "equals the byte a pixel earlier"; with the next word's bits already computed, a few shifts
+    /// mark the bytes that belong to runs of at least <see cref="MinRepeats"/> (any such byte has four equal bytes in
+    /// a row within three bytes of it). A word with no such byte — nearly every word of a textured object — is eight
+    /// literals: counted (in the sample) into four interleaved histograms, so that no increment waits for the
+    /// previous one to the same counter, and written as four two-literal codes joined two by two into a 64-bit
+    /// accumulator, with no other branch. The loops keep everything in locals and call nothing per byte, because
+    /// Mono inlines little. Not thread-safe: one instance per thread.
     /// </para>
     /// </summary>
     internal sealed class HuffmanDeflate
     {
-        /// <summary>Repeats from which a run is sent as matches rather than literals (a match is at least 3 bytes).</summary>
+        /// <summary>
+        /// Repeats from which a run is sent as matches rather than literals (a match is at least 3 bytes); the
+        /// look-ahead's shifts by 1, 2 and 3 bytes are written for this value.
+        /// </summary>
         internal const int MinRepeats = 4;
 
         const int LiteralLengthSymbols = 286;
@@ -35,30 +45,27 @@ namespace NerfDatasetCreator
         internal static readonly short[] LengthExtraValue = new short[MaxMatch + 1];
         internal static readonly byte[] SymbolExtraBits = new byte[LiteralLengthSymbols];
 
-        // Per word: one bit per byte (bit 0 of each byte), gathered into one byte by a multiplication, then the
-        // zero bits (repeats) at its bottom and top from these tables; LowBytes[n] masks the lowest n bytes.
+        // Per word: one bit per byte (bit 0 of each byte), gathered into one byte by a multiplication: byte k of the
+        // word becomes bit k (the partial products never overlap, so nothing carries).
         const ulong OneBitPerByte = 0x0101010101010101UL;
         const ulong GatherBits = 0x0102040810204080UL;
-        static readonly byte[] TrailingZeroBits = new byte[256];
-        static readonly byte[] LeadingZeroBits = new byte[256];
-        static readonly ulong[] LowBytes = new ulong[9];
+        const ulong Low7 = 0x7F7F7F7F7F7F7F7FUL;
+        const ulong High = 0x8080808080808080UL;
+
+        // Trailing zero bits of 1…511 (a run or a stretch of literals in a word's nine-bit view).
+        static readonly byte[] TrailingZeros = new byte[512];
 
         // The order in which code-length code lengths are sent (RFC 1951 §3.2.7).
         static readonly byte[] CodeLengthOrder = { 16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15 };
 
         static HuffmanDeflate()
         {
-            for (int bitsSet = 1; bitsSet < 256; bitsSet++)
+            for (int v = 1; v < 512; v++)
             {
-                int low = 0, high = 0;
-                while ((bitsSet & (1 << low)) == 0) low++;
-                while ((bitsSet & (0x80 >> high)) == 0) high++;
-                TrailingZeroBits[bitsSet] = (byte)low;
-                LeadingZeroBits[bitsSet] = (byte)high;
+                int zeros = 0;
+                while ((v & (1 << zeros)) == 0) zeros++;
+                TrailingZeros[v] = (byte)zeros;
             }
-            for (int n = 0; n < 8; n++) LowBytes[n] = (1UL << (8 * n)) - 1;
-            LowBytes[8] = ulong.MaxValue;
-
             int[] baseLength = { 3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 15, 17, 19, 23, 27, 31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258 };
             int[] extra = { 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0 };
             for (int i = 0; i < baseLength.Length; i++)
@@ -75,31 +82,37 @@ namespace NerfDatasetCreator
             }
         }
 
-        /// <summary>Filtered rows, <see cref="RowWords"/> words each; bytes past a row's end are ignored.</summary>
-        internal ulong[] Words = new ulong[0];
+        /// <summary>
+        /// The zlib payload, little-endian in 64-bit words: per row its filter type byte, then its filtered bytes
+        /// (<see cref="PutRow"/>). Bytes past <see cref="StreamBytes"/> are ignored.
+        /// </summary>
+        internal ulong[] Stream = new ulong[0];
 
-        /// <summary>The filter type of each row, sent before it.</summary>
-        internal byte[] Types = new byte[0];
-
+        /// <summary>Words a row scratch needs to hold one row's bytes.</summary>
         internal int RowWords { get; private set; }
 
         int _bytesPerPixel, _rowBytes, _height;
         readonly int[] _counts = new int[LiteralLengthSymbols];
+        readonly int[] _histograms = new int[4 * 256];
         readonly byte[] _lengths = new byte[LiteralLengthSymbols];
         readonly int[] _codes = new int[LiteralLengthSymbols];
         // Per literal: code | length << 16. Per match length: code, extra bits and distance code | total bits << 24.
         readonly int[] _literal = new int[256];
         readonly int[] _match = new int[MaxMatch + 1];
         readonly CodeLengthHeader _header = new CodeLengthHeader();
-        // Literals from which a table of literal pairs (65 536 entries) pays for its construction.
+        // Literals (estimated from the sample) from which a table of literal pairs (65 536 entries) pays for its
+        // construction: not for a mask, whose bytes are nearly all runs.
         const long PairTableFrom = 1 << 17;
+        bool _pairsPay;
         ulong[] _pairs;
-        long _literalCount;
+        ulong[] _bitWords = new ulong[0];
+        // The block header: at most 5 + 5 + 4 + 19·3 bits and 286 + 30 code lengths of at most 7 + 7 bits.
+        readonly byte[] _headerScratch = new byte[1024];
         bool _stored;
-        long _payloadBits;
+        ulong _adlerS1, _adlerS2;
         int _size;
 
-        /// <summary>Sizes <see cref="Words"/> and <see cref="Types"/> for an image; call before filling them.</summary>
+        /// <summary>Sizes <see cref="Stream"/> for an image; call before <see cref="PutRow"/>.</summary>
         internal void Begin(int bytesPerPixel, int rowBytes, int height)
         {
             if (bytesPerPixel < 1 || bytesPerPixel > 4) throw new ArgumentOutOfRangeException(nameof(bytesPerPixel));
@@ -107,151 +120,97 @@ namespace NerfDatasetCreator
             _rowBytes = rowBytes;
             _height = height;
             RowWords = (rowBytes + 7) >> 3;
-            long words = (long)RowWords * height;
-            if (Words.Length < words) Words = new ulong[words];
-            if (Types.Length < height) Types = new byte[height];
+            // One word beyond the last: the passes read a word ahead.
+            long words = ((long)StreamBytes + 7) / 8 + 1;
+            if (Stream.Length < words) Stream = new ulong[words];
         }
 
         /// <summary>Uncompressed length of the zlib payload: a type byte and the row bytes per row.</summary>
         internal int StreamBytes => (_rowBytes + 1) * _height;
 
         /// <summary>
-        /// Counts the symbols the rows will become and their Adler-32 (RFC 1950), builds the codes and returns the
-        /// exact size in bytes of the DEFLATE stream <see cref="Write"/> will produce.
+        /// Places row <paramref name="y"/> (rows in order from 0): its filter type, then its filtered bytes from
+        /// <paramref name="filtered"/>, and feeds both to the Adler-32 (RFC 1950) while the row is in the cache.
         /// </summary>
-        internal int Measure(out uint adler)
+        internal void PutRow(int y, int type, ulong[] filtered)
         {
-            int[] counts = _counts;
-            Array.Clear(counts, 0, counts.Length);
-            ulong[] words = Words;
-            byte[] types = Types;
-            int rowWords = RowWords, lastWord = rowWords - 1, lastBytes = _rowBytes - 8 * lastWord;
-            int shift = 8 * _bytesPerPixel, back = 64 - shift, typeShift = 64 - shift;
-            ulong firstRowForbid = FirstRowForbid(_bytesPerPixel);
-            ulong previous = 0; // the 8 stream bytes before the current position, the latest in the top byte
-            ulong s1 = 1, s2 = 0, laneEven = 0, laneOdd = 0;
-            int lanes = 0;
-            int repeats = 0;
-            ulong pending = 0; // the bytes of a run still too short for a match, the first in the lowest byte
-            for (int y = 0; y < _height; y++)
-            {
-                int t = types[y];
-                if (y > 0 && t == (int)((previous >> typeShift) & 0xFF))
-                {
-                    if (repeats < MinRepeats) pending |= (ulong)t << (8 * repeats);
-                    repeats++;
-                }
-                else
-                {
-                    if (repeats != 0)
-                    {
-                        if (repeats < MinRepeats)
-                            for (int r = 0; r < repeats; r++) counts[(int)(pending >> (8 * r)) & 0xFF]++;
-                        else CountMatches(counts, repeats);
-                        repeats = 0;
-                        pending = 0;
-                    }
-                    counts[t]++;
-                }
-                s1 += (uint)t;
-                s2 += s1;
-                previous = (previous >> 8) | ((ulong)t << 56);
+            int at = y * (_rowBytes + 1);
+            Buffer.SetByte(Stream, at, (byte)type);
+            Buffer.BlockCopy(filtered, 0, Stream, at + 1, _rowBytes);
 
-                int rowStart = y * rowWords;
-                for (int j = 0; j < rowWords; j++)
+            ulong s1 = y == 0 ? 1UL : _adlerS1, s2 = y == 0 ? 0UL : _adlerS2;
+            s1 += (uint)type;
+            s2 += s1;
+            int full = _rowBytes >> 3;
+            for (int start = 0; start < full; start += 256)
+            {
+                // Adler-32 of 8 bytes b0…b7: s1 += Σb, s2 += 8·s1 + Σ(8 − k)·bk; the weighted sums are gathered per
+                // byte position in 16-bit lanes (256 words at most: 255·256 fits) and added after each stretch.
+                ulong laneEven = 0, laneOdd = 0;
+                int end = Math.Min(full, start + 256);
+                for (int j = start; j < end; j++)
                 {
-                    ulong w = words[rowStart + j];
-                    ulong equal = w ^ ((w << shift) | (previous >> back));
-                    if (j == 0 && y == 0) equal |= firstRowForbid;
-                    int n = j == lastWord ? lastBytes : 8;
-                    if (n == 8)
-                    {
-                        // Adler-32 of 8 bytes b0…b7: s1 += Σb, s2 += 8·s1 + Σ(8 − k)·bk; the weighted sums are
-                        // gathered per byte position in 16-bit lanes and added at the end of the row.
-                        ulong even = w & EvenBytes, odd = (w >> 8) & EvenBytes;
-                        s2 += s1 << 3;
-                        s1 += ((even + odd) * LaneSum) >> 48;
-                        laneEven += even;
-                        laneOdd += odd;
-                        if (++lanes == 256)
-                        {
-                            s2 += Weighted(laneEven, laneOdd);
-                            laneEven = laneOdd = 0;
-                            lanes = 0;
-                        }
-                        previous = w;
-                        if (equal == 0)
-                        {
-                            repeats += 8;
-                            continue;
-                        }
-                    }
-                    else
-                    {
-                        for (int k = 0; k < 8 * n; k += 8)
-                        {
-                            s1 += (w >> k) & 0xFF;
-                            s2 += s1;
-                        }
-                        previous = (previous >> (8 * n)) | (w << (64 - 8 * n));
-                        equal |= ~0UL << (8 * n); // bytes past the row's end are never sent
-                    }
-                    // Which bytes differ from the byte a pixel earlier, one bit each: the repeats at the bottom of the
-                    // word end the current run, those at the top start the next one, everything between is sent as
-                    // literals (a short run inside one word is not worth a branch per byte).
-                    ulong differs = equal | (equal >> 4);
-                    differs |= differs >> 2;
-                    differs |= differs >> 1;
-                    int nonzero = (int)(((differs & OneBitPerByte) * GatherBits) >> 56);
-                    int low = TrailingZeroBits[nonzero], top = n == 8 ? LeadingZeroBits[nonzero] : 0, end = n - top;
-                    if (repeats < MinRepeats) pending |= (w & LowBytes[low]) << (8 * repeats);
-                    repeats += low;
-                    if (repeats != 0)
-                    {
-                        if (repeats < MinRepeats)
-                            for (int r = 0; r < repeats; r++) counts[(int)(pending >> (8 * r)) & 0xFF]++;
-                        else CountMatches(counts, repeats);
-                    }
-                    for (int k = 8 * low; k < 8 * end; k += 8) counts[(int)(w >> k) & 0xFF]++;
-                    repeats = top;
-                    pending = top == 0 ? 0 : w >> (8 * end);
+                    ulong w = filtered[j];
+                    s2 += s1 << 3;
+                    if (w == 0) continue; // a background's zeros: s1 stays
+                    ulong even = w & EvenBytes, odd = (w >> 8) & EvenBytes;
+                    s1 += ((even + odd) * LaneSum) >> 48;
+                    laneEven += even;
+                    laneOdd += odd;
                 }
                 s2 += Weighted(laneEven, laneOdd);
-                laneEven = laneOdd = 0;
-                lanes = 0;
                 s1 %= AdlerModulus;
                 s2 %= AdlerModulus;
             }
-            if (repeats != 0)
+            if ((_rowBytes & 7) != 0)
             {
-                if (repeats < MinRepeats)
-                    for (int r = 0; r < repeats; r++) counts[(int)(pending >> (8 * r)) & 0xFF]++;
-                else CountMatches(counts, repeats);
+                ulong last = filtered[full];
+                for (int k = 0; k < (_rowBytes & 7); k++)
+                {
+                    s1 += (last >> (8 * k)) & 0xFF;
+                    s2 += s1;
+                }
+                s1 %= AdlerModulus;
+                s2 %= AdlerModulus;
             }
-            adler = (uint)((s2 << 16) | s1);
+            _adlerS1 = s1;
+            _adlerS2 = s2;
+        }
+
+        /// <summary>
+        /// Builds the codes from the counts of the symbols the stream will become — all of them for a small image, one
+        /// stretch of <see cref="SampleWords"/> words in every <see cref="SampleStride"/> otherwise (a render's rows
+        /// are alike enough that the code lengths barely differ; every symbol gets a count of at least one, so
+        /// anything the sample missed still has a code) — then codes the stream; <paramref name="adler"/> is the
+        /// Adler-32 <see cref="PutRow"/> gathered. Returns the size in bytes of the DEFLATE stream
+        /// <see cref="Write"/> will copy: the Huffman block, or stored blocks when those would be smaller (noise).
+        /// </summary>
+        internal int Compress(out uint adler)
+        {
+            int[] counts = _counts;
+            Array.Clear(counts, 0, counts.Length);
+            int[] hist = _histograms;
+            Array.Clear(hist, 0, hist.Length);
+            int total = StreamBytes, words = (total + 7) >> 3;
+            bool sampled = words >= SampleFrom;
+            if (!sampled) CountRange(0, words, hist, counts);
+            else
+                for (int from = 0; from < words; from += SampleStride)
+                    CountRange(from, Math.Min(from + SampleWords, words), hist, counts);
+            long literals = 0;
+            for (int b = 0; b < 256; b++)
+            {
+                counts[b] = hist[b] + hist[256 + b] + hist[512 + b] + hist[768 + b];
+                literals += counts[b];
+            }
+            _pairsPay = literals * (sampled ? SampleStride / SampleWords : 1) >= PairTableFrom;
+            if (sampled)
+                for (int symbol = 0; symbol < LiteralLengthSymbols; symbol++) counts[symbol]++;
             counts[EndOfBlock] = 1;
 
             HuffmanCode.BuildLengths(counts, LiteralLengthSymbols, 15, _lengths);
             HuffmanCode.BuildCodes(_lengths, LiteralLengthSymbols, _codes);
-            long matches = 0;
-            long bits = 0;
-            _literalCount = 0;
-            for (int b = 0; b < 256; b++) _literalCount += counts[b];
-            for (int s = 0; s < LiteralLengthSymbols; s++)
-            {
-                bits += (long)counts[s] * (_lengths[s] + SymbolExtraBits[s]);
-                if (s > EndOfBlock) matches += counts[s];
-            }
-            bits += matches; // each match's distance code is one bit
             _header.Build(_lengths, LiteralLengthSymbols, _bytesPerPixel);
-            _payloadBits = 3 + _header.Bits + bits;
-
-            long huffmanBytes = (_payloadBits + 7) / 8;
-            int length = StreamBytes;
-            int blocks = Math.Max(1, (length + MaxStoredBlock - 1) / MaxStoredBlock);
-            long storedBytes = length + 5L * blocks;
-            _stored = storedBytes <= huffmanBytes;
-            _size = (int)(_stored ? storedBytes : huffmanBytes);
 
             for (int b = 0; b < 256; b++) _literal[b] = _codes[b] | (_lengths[b] << 16);
             // The distance code: two 1-bit codes, for distances 1 and the pixel size (or 1 and 2 for one byte per
@@ -264,7 +223,123 @@ namespace NerfDatasetCreator
                 int pattern = _codes[symbol] | (LengthExtraValue[m] << codeBits) | (distanceBit << (codeBits + extraBits));
                 _match[m] = pattern | ((codeBits + extraBits + 1) << 24);
             }
+
+            adler = (uint)((_adlerS2 << 16) | _adlerS1);
+            int blocks = Math.Max(1, (total + MaxStoredBlock - 1) / MaxStoredBlock);
+            long storedBytes = total + 5L * blocks;
+            long huffmanBytes = Encode(storedBytes);
+            _stored = storedBytes <= huffmanBytes;
+            _size = (int)(_stored ? storedBytes : huffmanBytes);
             return _size;
+        }
+
+        // Images from this many words (128 KiB) on count a sample: one stretch of SampleWords in every SampleStride (1 in 8).
+        const int SampleFrom = 1 << 14;
+        internal const int SampleWords = 64;
+        internal const int SampleStride = 512;
+
+        /// <summary>Adds the symbols of words [from, to) to the counts, as if a run could not go on from before them.</summary>
+        void CountRange(int from, int to, int[] hist, int[] counts)
+        {
+            ulong[] stream = Stream;
+            int total = StreamBytes, words = (total + 7) >> 3, tail = total - 8 * (words - 1);
+            int shift = 8 * _bytesPerPixel, back = 64 - shift;
+            int lastValid = (1 << tail) - 1;
+            int repeats = 0;
+
+            // Equal bits of the first word (word 0's first pixel has nothing a pixel earlier); a stretch starts a new run.
+            ulong w = stream[from];
+            int ePrev = 0, eCur = EqualBits(w, from == 0 ? 0 : stream[from - 1], shift, back);
+            if (from == 0) eCur &= ~((1 << _bytesPerPixel) - 1);
+            if (from == words - 1) eCur &= lastValid;
+            for (int i = from; i < to; i++)
+            {
+                ulong next = stream[i + 1];
+                int eNext = 0;
+                if (i + 1 < to)
+                {
+                    // A byte of x is zero where the byte equals the one a pixel earlier: its top bit set in z then.
+                    ulong x = next ^ ((next << shift) | (w >> back));
+                    ulong z = ~(((x & Low7) + Low7) | x) & High;
+                    eNext = (int)(((z >> 7) * GatherBits) >> 56);
+                    if (i + 2 == words) eNext &= lastValid;
+                }
+                int inRun = 0xFF; // eight equal bytes are a run already
+                if (eCur != 0xFF)
+                {
+                    int window = ePrev | (eCur << 8) | (eNext << 16);
+                    int starts = window & (window >> 1) & (window >> 2) & (window >> 3);
+                    inRun = ((starts | (starts << 1) | (starts << 2) | (starts << 3)) >> 8) & 0xFF;
+                }
+
+                if (i + 1 < words || tail == 8)
+                {
+                    if (inRun == 0)
+                    {
+                        if (repeats != 0)
+                        {
+                            CountMatches(counts, repeats);
+                            repeats = 0;
+                        }
+                        hist[(int)w & 0xFF]++;
+                        hist[256 + ((int)(w >> 8) & 0xFF)]++;
+                        hist[512 + ((int)(w >> 16) & 0xFF)]++;
+                        hist[768 + ((int)(w >> 24) & 0xFF)]++;
+                        hist[(int)(w >> 32) & 0xFF]++;
+                        hist[256 + ((int)(w >> 40) & 0xFF)]++;
+                        hist[512 + ((int)(w >> 48) & 0xFF)]++;
+                        hist[768 + (int)(w >> 56)]++;
+                    }
+                    else if (inRun == 0xFF) repeats += 8;
+                    else repeats = CountMixed(w, inRun, 8, repeats, hist, counts);
+                }
+                else
+                {
+                    // The last, partial word.
+                    repeats = CountMixed(w, inRun, tail, repeats, hist, counts);
+                }
+                w = next;
+                ePrev = eCur;
+                eCur = eNext;
+            }
+            if (repeats != 0) CountMatches(counts, repeats);
+        }
+
+        /// <summary>One bit per byte of <paramref name="w"/>: set where it equals the byte a pixel earlier (in w or before it).</summary>
+        static int EqualBits(ulong w, ulong before, int shift, int back)
+        {
+            ulong x = w ^ ((w << shift) | (before >> back));
+            x |= x >> 4;
+            x |= x >> 2;
+            x |= x >> 1;
+            return ~(int)(((x & OneBitPerByte) * GatherBits) >> 56) & 0xFF;
+        }
+
+        /// <summary>
+        /// A word whose first <paramref name="bytes"/> bytes mix runs (bits of <paramref name="inRun"/>) and literals,
+        /// taken a stretch at a time; returns the repeats still open at its end.
+        /// </summary>
+        static int CountMixed(ulong w, int inRun, int bytes, int repeats, int[] hist, int[] counts)
+        {
+            for (int k = 0; k < bytes;)
+            {
+                int rest = inRun >> k;
+                if ((rest & 1) != 0)
+                {
+                    int run = TrailingZeros[~rest & 0x1FF];
+                    repeats += run;
+                    k += run;
+                    continue;
+                }
+                if (repeats != 0)
+                {
+                    CountMatches(counts, repeats);
+                    repeats = 0;
+                }
+                for (int end = k + TrailingZeros[rest | (1 << (bytes - k))]; k < end; k++)
+                    hist[((k & 3) << 8) | ((int)(w >> (8 * k)) & 0xFF)]++;
+            }
+            return repeats;
         }
 
         /// <summary>Σ (8 − k)·(sum of byte k) over the words gathered in the two lane accumulators.</summary>
@@ -272,17 +347,6 @@ namespace NerfDatasetCreator
         {
             return 8 * (even & 0xFFFF) + 6 * ((even >> 16) & 0xFFFF) + 4 * ((even >> 32) & 0xFFFF) + 2 * (even >> 48)
                  + 7 * (odd & 0xFFFF) + 5 * ((odd >> 16) & 0xFFFF) + 3 * ((odd >> 32) & 0xFFFF) + (odd >> 48);
-        }
-
-        /// <summary>
-        /// Marks the first row's bytes that have no byte a pixel earlier in the stream (the type byte is the first),
-        /// so that they are never taken for repeats.
-        /// </summary>
-        static ulong FirstRowForbid(int bytesPerPixel)
-        {
-            ulong forbid = 0;
-            for (int k = 0; k < bytesPerPixel - 1; k++) forbid |= 1UL << (8 * k);
-            return forbid;
         }
 
         /// <summary>How a run of repeats is cut into matches; <see cref="Write"/> cuts it the same way.</summary>
@@ -297,174 +361,179 @@ namespace NerfDatasetCreator
             }
         }
 
-        /// <summary>Writes the stream <see cref="Measure"/> sized at <paramref name="output"/>[at].</summary>
+        /// <summary>Copies the DEFLATE stream <see cref="Compress"/> made (<see cref="Compress"/>'s size) to <paramref name="output"/>[at].</summary>
         internal void Write(byte[] output, int at)
         {
-            if (_stored)
-            {
-                WriteStored(output, at);
-                return;
-            }
+            if (_stored) WriteStored(output, at);
+            else Buffer.BlockCopy(_bitWords, 0, output, at, _size);
+        }
 
-            ulong bits = 1 | (2 << 1); // BFINAL = 1, BTYPE = 10 (dynamic Huffman)
-            int count = 3;
-            int o = at;
-            _header.Write(ref bits, ref count, output, ref o);
+        /// <summary>
+        /// Codes the stream into <see cref="_bitWords"/> with the codes built; returns its size in bytes, or a size
+        /// of at least <paramref name="storedBytes"/> as soon as it is clear that stored blocks will be smaller.
+        /// </summary>
+        long Encode(long storedBytes)
+        {
+            // The block header goes through the shared byte-wise writer into a small scratch, then into the words.
+            ulong headerBits = 1 | (2 << 1); // BFINAL = 1, BTYPE = 10 (dynamic Huffman)
+            int headerCount = 3, headerBytes = 0;
+            _header.Write(ref headerBits, ref headerCount, _headerScratch, ref headerBytes);
+
+            // The stream is built as 64-bit words (least significant bit first, as DEFLATE packs bits) and copied
+            // into the file at the end: one store per 64 bits. Coding stops once it has passed the stored blocks'
+            // size; before that check, one word's step adds at most 8 literals of 15 bits and the matches of the run
+            // it ends, at most 21 bits per 258 bytes of the payload: a twelfth of its size bounds them.
+            int total = StreamBytes;
+            int limit = (int)(storedBytes / 8) + 1;
+            long capacity = limit + total / 96 + headerBytes / 8 + 8;
+            if (_bitWords.Length < capacity) _bitWords = new ulong[capacity];
+            ulong[] buf = _bitWords;
+            ulong acc = 0;
+            int n = 0, o = 0;
+            for (int i = 0; i < headerBytes; i++) Put64(_headerScratch[i], 8, ref acc, ref n, buf, ref o);
+            Put64(headerBits, headerCount, ref acc, ref n, buf, ref o);
 
             int[] literal = _literal;
             int[] match = _match;
-            ulong[] pairs = _literalCount >= PairTableFrom ? BuildPairs() : null;
-            ulong[] words = Words;
-            byte[] types = Types;
-            int rowWords = RowWords, lastWord = rowWords - 1, lastBytes = _rowBytes - 8 * lastWord;
-            int shift = 8 * _bytesPerPixel, back = 64 - shift, typeShift = 64 - shift;
-            ulong firstRowForbid = FirstRowForbid(_bytesPerPixel);
-            ulong previous = 0;
+            ulong[] pairs = _pairsPay ? BuildPairs() : null;
+            ulong[] stream = Stream;
+            int words = (total + 7) >> 3, tail = total - 8 * (words - 1);
+            int shift = 8 * _bytesPerPixel, back = 64 - shift;
+            int lastValid = (1 << tail) - 1;
             int repeats = 0;
-            ulong pending = 0;
-            for (int y = 0; y < _height; y++)
+
+            // The same walk as CountRange's, written out again: a per-word call would cost Mono more than the coding.
+            ulong w = stream[0];
+            int ePrev = 0, eCur = EqualBits(w, 0, shift, back) & ~((1 << _bytesPerPixel) - 1);
+            if (words == 1) eCur &= lastValid;
+            for (int i = 0; i < words; i++)
             {
-                int t = types[y];
-                if (y > 0 && t == (int)((previous >> typeShift) & 0xFF))
+                ulong next = stream[i + 1];
+                int eNext = 0;
+                if (i + 1 < words)
                 {
-                    if (repeats < MinRepeats) pending |= (ulong)t << (8 * repeats);
-                    repeats++;
+                    // A byte of x is zero where the byte equals the one a pixel earlier: its top bit set in z then.
+                    ulong x = next ^ ((next << shift) | (w >> back));
+                    ulong z = ~(((x & Low7) + Low7) | x) & High;
+                    eNext = (int)(((z >> 7) * GatherBits) >> 56);
+                    if (i + 2 == words) eNext &= lastValid;
                 }
+                int inRun = 0xFF; // eight equal bytes are a run already
+                if (eCur != 0xFF)
+                {
+                    int window = ePrev | (eCur << 8) | (eNext << 16);
+                    int starts = window & (window >> 1) & (window >> 2) & (window >> 3);
+                    inRun = ((starts | (starts << 1) | (starts << 2) | (starts << 3)) >> 8) & 0xFF;
+                }
+                int bytes = i + 1 < words ? 8 : tail;
+                if (inRun == 0 && bytes == 8 && pairs != null)
+                {
+                    if (repeats != 0)
+                    {
+                        PutMatches(repeats, ref acc, ref n, buf, ref o);
+                        repeats = 0;
+                    }
+                    // Eight literals as four two-literal codes (each at most 30 bits, its length above them), joined
+                    // two by two: at most 60 bits go into the accumulator at once.
+                    ulong pair = pairs[(int)w & 0xFFFF], pair2 = pairs[(int)(w >> 16) & 0xFFFF];
+                    int length = (int)(pair >> 32);
+                    ulong code = (pair & 0xFFFFFFFF) | ((pair2 & 0xFFFFFFFF) << length);
+                    length += (int)(pair2 >> 32);
+                    acc |= code << n;
+                    n += length;
+                    if (n >= 64)
+                    {
+                        buf[o++] = acc;
+                        n -= 64;
+                        acc = code >> (length - n);
+                    }
+                    pair = pairs[(int)(w >> 32) & 0xFFFF];
+                    pair2 = pairs[(int)(w >> 48)];
+                    length = (int)(pair >> 32);
+                    code = (pair & 0xFFFFFFFF) | ((pair2 & 0xFFFFFFFF) << length);
+                    length += (int)(pair2 >> 32);
+                    acc |= code << n;
+                    n += length;
+                    if (n >= 64)
+                    {
+                        buf[o++] = acc;
+                        n -= 64;
+                        acc = code >> (length - n);
+                    }
+                }
+                else if (inRun == 0xFF) repeats += 8;
                 else
                 {
-                    if (repeats != 0)
+                    // Stretches of run and of literals, as CountMixed takes them.
+                    for (int k = 0; k < bytes;)
                     {
-                        FlushRepeats(repeats, pending, ref bits, ref count, output, ref o);
-                        repeats = 0;
-                        pending = 0;
-                    }
-                    Put(literal[t] & 0xFFFF, literal[t] >> 16, ref bits, ref count, output, ref o);
-                }
-                previous = (previous >> 8) | ((ulong)t << 56);
-
-                int rowStart = y * rowWords;
-                for (int j = 0; j < rowWords; j++)
-                {
-                    ulong w = words[rowStart + j];
-                    ulong equal = w ^ ((w << shift) | (previous >> back));
-                    if (j == 0 && y == 0) equal |= firstRowForbid;
-                    int n = j == lastWord ? lastBytes : 8;
-                    if (n == 8)
-                    {
-                        previous = w;
-                        if (equal == 0)
+                        int rest = inRun >> k;
+                        if ((rest & 1) != 0)
                         {
-                            repeats += 8;
+                            int run = TrailingZeros[~rest & 0x1FF];
+                            repeats += run;
+                            k += run;
                             continue;
                         }
-                    }
-                    else
-                    {
-                        previous = (previous >> (8 * n)) | (w << (64 - 8 * n));
-                        equal |= ~0UL << (8 * n);
-                    }
-                    // The same cut as in Measure.
-                    ulong differs = equal | (equal >> 4);
-                    differs |= differs >> 2;
-                    differs |= differs >> 1;
-                    int nonzero = (int)(((differs & OneBitPerByte) * GatherBits) >> 56);
-                    int low = TrailingZeroBits[nonzero], top = n == 8 ? LeadingZeroBits[nonzero] : 0, end = n - top;
-                    if (repeats < MinRepeats) pending |= (w & LowBytes[low]) << (8 * repeats);
-                    repeats += low;
-                    if (repeats != 0)
-                    {
-                        if (repeats < MinRepeats)
+                        if (repeats != 0)
                         {
-                            for (int r = 0; r < repeats; r++)
-                            {
-                                int e = literal[(int)(pending >> (8 * r)) & 0xFF];
-                                bits |= (ulong)(e & 0xFFFF) << count;
-                                count += e >> 16;
-                                if (count >= 32)
-                                {
-                                    output[o] = (byte)bits;
-                                    output[o + 1] = (byte)(bits >> 8);
-                                    output[o + 2] = (byte)(bits >> 16);
-                                    output[o + 3] = (byte)(bits >> 24);
-                                    o += 4;
-                                    bits >>= 32;
-                                    count -= 32;
-                                }
-                            }
+                            PutMatches(repeats, ref acc, ref n, buf, ref o);
+                            repeats = 0;
                         }
-                        else
+                        for (int end = k + TrailingZeros[rest | (1 << (bytes - k))]; k < end; k++)
                         {
-                            while (repeats > 0)
+                            int e = literal[(int)(w >> (8 * k)) & 0xFF];
+                            ulong code = (ulong)(e & 0xFFFF);
+                            int length = e >> 16;
+                            acc |= code << n;
+                            n += length;
+                            if (n >= 64)
                             {
-                                int m = repeats > MaxMatch ? MaxMatch : repeats;
-                                if (repeats - m > 0 && repeats - m < 3) m = repeats - 3;
-                                repeats -= m;
-                                int e = match[m];
-                                bits |= (ulong)(e & 0xFFFFFF) << count;
-                                count += e >> 24;
-                                if (count >= 32)
-                                {
-                                    output[o] = (byte)bits;
-                                    output[o + 1] = (byte)(bits >> 8);
-                                    output[o + 2] = (byte)(bits >> 16);
-                                    output[o + 3] = (byte)(bits >> 24);
-                                    o += 4;
-                                    bits >>= 32;
-                                    count -= 32;
-                                }
+                                buf[o++] = acc;
+                                n -= 64;
+                                acc = code >> (length - n);
                             }
                         }
                     }
-                    int k = 8 * low, stop = 8 * end;
-                    if (pairs != null)
-                    {
-                        // Two literals per lookup: their codes joined (at most 30 bits) with the total length above.
-                        for (; k + 16 <= stop; k += 16)
-                        {
-                            ulong pair = pairs[(int)(w >> k) & 0xFFFF];
-                            bits |= (pair & 0xFFFFFFFF) << count;
-                            count += (int)(pair >> 32);
-                            if (count >= 32)
-                            {
-                                output[o] = (byte)bits;
-                                output[o + 1] = (byte)(bits >> 8);
-                                output[o + 2] = (byte)(bits >> 16);
-                                output[o + 3] = (byte)(bits >> 24);
-                                o += 4;
-                                bits >>= 32;
-                                count -= 32;
-                            }
-                        }
-                    }
-                    for (; k < stop; k += 8)
-                    {
-                        int entry = literal[(int)(w >> k) & 0xFF];
-                        bits |= (ulong)(entry & 0xFFFF) << count;
-                        count += entry >> 16;
-                        if (count >= 32)
-                        {
-                            output[o] = (byte)bits;
-                            output[o + 1] = (byte)(bits >> 8);
-                            output[o + 2] = (byte)(bits >> 16);
-                            output[o + 3] = (byte)(bits >> 24);
-                            o += 4;
-                            bits >>= 32;
-                            count -= 32;
-                        }
-                    }
-                    repeats = top;
-                    pending = top == 0 ? 0 : w >> (8 * end);
                 }
+                if (o >= limit) return storedBytes;
+                w = next;
+                ePrev = eCur;
+                eCur = eNext;
             }
-            if (repeats != 0) FlushRepeats(repeats, pending, ref bits, ref count, output, ref o);
-            Put(_codes[EndOfBlock], _lengths[EndOfBlock], ref bits, ref count, output, ref o);
-            while (count > 0)
+            if (repeats != 0) PutMatches(repeats, ref acc, ref n, buf, ref o);
+            Put64((ulong)_codes[EndOfBlock], _lengths[EndOfBlock], ref acc, ref n, buf, ref o);
+            if (n > 0) buf[o] = acc;
+            return 8 * o + (n + 7) / 8;
+        }
+
+        /// <summary>A run of repeats as matches at the pixel distance, cut as <see cref="CountMatches"/> cuts it.</summary>
+        void PutMatches(int repeats, ref ulong acc, ref int n, ulong[] buf, ref int o)
+        {
+            while (repeats > 0)
             {
-                output[o++] = (byte)bits;
-                bits >>= 8;
-                count -= 8;
+                int m = repeats > MaxMatch ? MaxMatch : repeats;
+                if (repeats - m > 0 && repeats - m < 3) m = repeats - 3;
+                repeats -= m;
+                Put64((ulong)(_match[m] & 0xFFFFFF), _match[m] >> 24, ref acc, ref n, buf, ref o);
             }
-            if (o - at != _size) throw new InvalidOperationException($"DEFLATE stream is {o - at} bytes; {_size} were measured.");
+        }
+
+        /// <summary>
+        /// Appends <paramref name="length"/> ≤ 32 bits to a stream of 64-bit words (the hot loop inlines the same
+        /// steps); <paramref name="code"/> has no bits above its length.
+        /// </summary>
+        static void Put64(ulong code, int length, ref ulong acc, ref int n, ulong[] buf, ref int o)
+        {
+            acc |= code << n;
+            n += length;
+            if (n >= 64)
+            {
+                buf[o++] = acc;
+                n -= 64;
+                // n < length here, so the shift is 1…length: the bits of the code that did not fit.
+                acc = code >> (length - n);
+            }
         }
 
         /// <summary>The codes of every two literals (the first in the low byte of the index), for <see cref="Write"/>.</summary>
@@ -486,26 +555,6 @@ namespace NerfDatasetCreator
             return pairs;
         }
 
-        void FlushRepeats(int repeats, ulong pending, ref ulong bits, ref int count, byte[] output, ref int o)
-        {
-            if (repeats < MinRepeats)
-            {
-                for (int r = 0; r < repeats; r++)
-                {
-                    int e = _literal[(int)(pending >> (8 * r)) & 0xFF];
-                    Put(e & 0xFFFF, e >> 16, ref bits, ref count, output, ref o);
-                }
-                return;
-            }
-            while (repeats > 0)
-            {
-                int m = repeats > MaxMatch ? MaxMatch : repeats;
-                if (repeats - m > 0 && repeats - m < 3) m = repeats - 3;
-                repeats -= m;
-                Put(_match[m] & 0xFFFFFF, _match[m] >> 24, ref bits, ref count, output, ref o);
-            }
-        }
-
         /// <summary>Appends <paramref name="n"/> ≤ 32 bits; for the few symbols outside the hot loop.</summary>
         internal static void Put(int value, int n, ref ulong bits, ref int count, byte[] output, ref int o)
         {
@@ -525,8 +574,8 @@ namespace NerfDatasetCreator
 
         void WriteStored(byte[] output, int o)
         {
-            // The stream is a type byte and the row bytes per row; stored blocks cut it every 65 535 bytes.
-            int length = StreamBytes, done = 0, y = 0, inRow = -1; // inRow −1: the row's type byte is next
+            // Stored blocks cut the payload every 65 535 bytes.
+            int length = StreamBytes, done = 0;
             do
             {
                 int n = Math.Min(MaxStoredBlock, length - done);
@@ -535,27 +584,8 @@ namespace NerfDatasetCreator
                 output[o++] = (byte)(n >> 8);
                 output[o++] = (byte)~n;
                 output[o++] = (byte)(~n >> 8);
-                int left = n;
-                while (left > 0)
-                {
-                    if (inRow < 0)
-                    {
-                        output[o++] = Types[y];
-                        inRow = 0;
-                        left--;
-                        continue;
-                    }
-                    int take = Math.Min(left, _rowBytes - inRow);
-                    Buffer.BlockCopy(Words, y * RowWords * 8 + inRow, output, o, take);
-                    o += take;
-                    left -= take;
-                    inRow += take;
-                    if (inRow == _rowBytes)
-                    {
-                        y++;
-                        inRow = -1;
-                    }
-                }
+                Buffer.BlockCopy(Stream, done, output, o, n);
+                o += n;
                 done += n;
             } while (done < length);
         }

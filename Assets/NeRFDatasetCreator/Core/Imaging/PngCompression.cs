@@ -17,9 +17,10 @@ namespace NerfDatasetCreator
         None,
 
         /// <summary>
-        /// Huffman codes built from this image's own byte counts, runs of a repeated byte as distance-1 matches, no
-        /// LZ77 search (<see cref="HuffmanDeflate"/>): an order of magnitude faster than DeflateStream on Mono, with
-        /// files no larger than zlib level 6's on renders. Falls back to stored blocks for incompressible data.
+        /// Huffman codes built from this image's own byte counts, runs of bytes equal to the byte a pixel earlier as
+        /// matches at the pixel distance, no LZ77 search (<see cref="HuffmanDeflate"/>): about 7× DeflateStream's
+        /// level 6 on .NET and 9× on Mono for an RGBA render, with files smaller on masks and 20 % (renders) to 2×
+        /// (smooth 16-bit depth) larger than level 6's. Falls back to stored blocks for incompressible data.
         /// </summary>
         Huffman,
 

@@ -17,7 +17,7 @@ namespace NerfDatasetCreator
         const ulong LaneSum = 0x0001000100010001UL;
 
         /// <summary>Words per pair of adjacent words that <see cref="Choose"/> samples.</summary>
-        internal const int SampleEvery = 4;
+        internal const int SampleEvery = 8;
 
         /// <summary>
         /// Writes the residuals of filter <paramref name="type"/> (0–3) for the row <paramref name="row"/>[0…words)
@@ -80,42 +80,45 @@ namespace NerfDatasetCreator
         internal static int Choose(ulong[] row, ulong[] up, int words, int shift)
         {
             int back = 64 - shift;
-            long none = 0, sub = 0, upSum = 0, average = 0;
+            ulong none = 0, sub = 0, upSum = 0, average = 0;
             for (int j = 0; j + 1 < words; j += SampleEvery)
             {
                 ulong x0 = row[j], x1 = row[j + 1], b0 = up[j], b1 = up[j + 1];
                 ulong a0 = (x0 << shift) | ((j == 0 ? 0 : row[j - 1]) >> back), a1 = (x1 << shift) | (x0 >> back);
-
-                none += Cost(x0, x1, shift, back);
-                sub += Cost(Subtract(x0, a0), Subtract(x1, a1), shift, back);
-                upSum += Cost(Subtract(x0, b0), Subtract(x1, b1), shift, back);
-                average += Cost(Subtract(x0, (a0 & b0) + (((a0 ^ b0) & NotLowBits) >> 1)),
-                    Subtract(x1, (a1 & b1) + (((a1 ^ b1) & NotLowBits) >> 1)), shift, back);
+                ulong m0 = (a0 & b0) + (((a0 ^ b0) & NotLowBits) >> 1), m1 = (a1 & b1) + (((a1 ^ b1) & NotLowBits) >> 1);
+                // The residuals of the pair under each filter (the first word only for the byte a pixel earlier),
+                // written out rather than called: Mono does not inline, and this runs a few hundred times a row.
+                ulong s0 = ((x0 | High) - (a0 & Low7)) ^ ((x0 ^ ~a0) & High), s1 = ((x1 | High) - (a1 & Low7)) ^ ((x1 ^ ~a1) & High);
+                ulong u0 = ((x0 | High) - (b0 & Low7)) ^ ((x0 ^ ~b0) & High), u1 = ((x1 | High) - (b1 & Low7)) ^ ((x1 ^ ~b1) & High);
+                ulong v0 = ((x0 | High) - (m0 & Low7)) ^ ((x0 ^ ~m0) & High), v1 = ((x1 | High) - (m1 & Low7)) ^ ((x1 ^ ~m1) & High);
+                none += Magnitudes(x1, x1 ^ ((x1 << shift) | (x0 >> back)));
+                sub += Magnitudes(s1, s1 ^ ((s1 << shift) | (s0 >> back)));
+                upSum += Magnitudes(u1, u1 ^ ((u1 << shift) | (u0 >> back)));
+                average += Magnitudes(v1, v1 ^ ((v1 << shift) | (v0 >> back)));
             }
             int best = 0;
-            long bestSum = none;
+            ulong bestSum = none;
             if (sub < bestSum) { best = 1; bestSum = sub; }
             if (upSum < bestSum) { best = 2; bestSum = upSum; }
             if (average < bestSum) best = 3;
             return best;
         }
 
-        // Per-row helpers, called a few hundred times a row rather than per byte, so Mono's not inlining them costs little.
-        static ulong Subtract(ulong x, ulong y) => ((x | High) - (y & Low7)) ^ ((x ^ ~y) & High);
-
-        /// <summary>Σ |signed byte| of <paramref name="r1"/> over the bytes that differ from the byte a pixel earlier (in r0, r1).</summary>
-        static long Cost(ulong r0, ulong r1, int shift, int back)
+        /// <summary>
+        /// |signed byte| of <paramref name="r"/> where <paramref name="equal"/> is non-zero (bytes that differ from
+        /// the residual a pixel earlier), summed; four calls per sampled word.
+        /// </summary>
+        static ulong Magnitudes(ulong r, ulong equal)
         {
-            ulong equal = r1 ^ ((r1 << shift) | (r0 >> back));
             ulong differs = equal | (equal >> 4);
             differs |= differs >> 2;
             differs |= differs >> 1;
             differs = (differs & 0x0101010101010101UL) * 0xFF;
             // |r| per byte: negate the bytes whose top bit is set (~r + 1 cannot carry out of a byte here).
-            ulong negative = (r1 & High) >> 7;
-            ulong magnitude = ((r1 ^ (negative * 0xFF)) + negative) & differs;
+            ulong negative = (r & High) >> 7;
+            ulong magnitude = ((r ^ (negative * 0xFF)) + negative) & differs;
             ulong lanes = (magnitude & EvenBytes) + ((magnitude >> 8) & EvenBytes);
-            return (long)((lanes * LaneSum) >> 48);
+            return (lanes * LaneSum) >> 48;
         }
 
         /// <summary>Swaps the two bytes of every 16-bit lane: little-endian ushorts become PNG's big-endian samples.</summary>

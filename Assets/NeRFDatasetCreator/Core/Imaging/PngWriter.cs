@@ -22,7 +22,8 @@ namespace NerfDatasetCreator
         /// The compression used when none is given: Huffman, several times faster than DeflateStream's level 6 on both
         /// runtimes (Mono's DeflateStream always runs level 6), at the price of larger files on grainy renders and
         /// smooth depth images, where level 6's LZ77 search finds repeats that Huffman coding alone cannot use. The
-        /// figures are in README.md, section Performance; pass <see cref="PngCompression.Optimal"/> for the smallest files.
+        /// figures and the size analysis are in Documentation~/pixels.md §6; pass <see cref="PngCompression.Optimal"/>
+        /// for the smallest files.
         /// </summary>
         public const PngCompression DefaultCompression = PngCompression.Huffman;
 
@@ -47,6 +48,7 @@ namespace NerfDatasetCreator
             public byte[] Zeros = new byte[0];
             public ulong[] WordRow = new ulong[0];
             public ulong[] WordRowAbove = new ulong[0];
+            public ulong[] Filtered = new ulong[0];
             public readonly HuffmanDeflate Deflate = new HuffmanDeflate();
             public readonly Lz77Deflate Lz77 = new Lz77Deflate();
             public byte[] Stream = new byte[0];
@@ -185,8 +187,8 @@ namespace NerfDatasetCreator
         const long MaxHuffmanBytes = 1L << 30;
 
         /// <summary>
-        /// Copies each row into 64-bit words and filters it there (<see cref="PngWordFilter"/>; Paeth, asked for by
-        /// name, byte-wise) into the thread's <see cref="HuffmanDeflate"/>.
+        /// Copies each row into 64-bit words, filters it there (<see cref="PngWordFilter"/>; Paeth, asked for by
+        /// name, byte-wise) and places it with its type byte in the thread's <see cref="HuffmanDeflate"/> stream.
         /// </summary>
         static void FilterIntoWords(Scratch s, byte[] pixels, ushort[] samples, int width, int height, PngPixelFormat format, PngFilter filter)
         {
@@ -199,11 +201,10 @@ namespace NerfDatasetCreator
             {
                 s.WordRow = new ulong[rowWords];
                 s.WordRowAbove = new ulong[rowWords];
+                s.Filtered = new ulong[rowWords];
             }
-            ulong[] row = s.WordRow, above = s.WordRowAbove;
+            ulong[] row = s.WordRow, above = s.WordRowAbove, filtered = s.Filtered;
             Array.Clear(above, 0, rowWords);
-            ulong[] words = deflate.Words;
-            byte[] types = deflate.Types;
             int shift = 8 * bpp;
             for (int y = 0; y < height; y++)
             {
@@ -215,9 +216,9 @@ namespace NerfDatasetCreator
                     PngWordFilter.SwapBytePairs(row, rowWords);
                 }
                 int type = filter == PngFilter.Adaptive ? PngWordFilter.Choose(row, above, rowWords, shift) : (int)filter;
-                types[y] = (byte)type;
-                if (type <= 3) PngWordFilter.Apply(type, row, above, rowWords, shift, words, y * rowWords);
-                else FilterBytewise(s, pixels, samples, y, width, rowBytes, bpp, type, words, y * rowWords);
+                if (type <= 3) PngWordFilter.Apply(type, row, above, rowWords, shift, filtered, 0);
+                else FilterBytewise(s, pixels, samples, y, width, rowBytes, bpp, type, filtered);
+                deflate.PutRow(y, type, filtered);
                 var swap = above;
                 above = row;
                 row = swap;
@@ -230,7 +231,7 @@ namespace NerfDatasetCreator
         static byte[] EncodeHuffman(Scratch s, int width, int height, PngPixelFormat format)
         {
             var deflate = s.Deflate;
-            int deflateBytes = deflate.Measure(out uint adler);
+            int deflateBytes = deflate.Compress(out uint adler);
             var file = NewFile(width, height, format, PngCompression.Huffman, deflateBytes, out int idat, out int idatData);
             deflate.Write(file, idat + 10);
             return FinishFile(file, idat, idatData, adler);
@@ -256,21 +257,15 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>
-        /// The filtered rows (already in the thread's <see cref="HuffmanDeflate"/> words) laid out as the zlib payload —
-        /// each row's type byte, then its bytes — and compressed by <see cref="Lz77Deflate"/>.
+        /// The zlib payload (already laid out in the thread's <see cref="HuffmanDeflate"/> stream: each row's type
+        /// byte, then its bytes) compressed by <see cref="Lz77Deflate"/>.
         /// </summary>
         static byte[] EncodeLz77(Scratch s, int width, int height, PngPixelFormat format)
         {
-            var words = s.Deflate;
-            int rowBytes = width * BytesPerPixel(format), rowWords = words.RowWords;
-            int length = (rowBytes + 1) * height;
+            int length = s.Deflate.StreamBytes;
             if (s.Stream.Length < length) s.Stream = new byte[length];
             byte[] stream = s.Stream;
-            for (int y = 0, at = 0; y < height; y++, at += rowBytes + 1)
-            {
-                stream[at] = words.Types[y];
-                Buffer.BlockCopy(words.Words, y * rowWords * 8, stream, at + 1, rowBytes);
-            }
+            Buffer.BlockCopy(s.Deflate.Stream, 0, stream, 0, length);
             uint adler = Adler32.Compute(stream, 0, length);
             int deflateBytes = s.Lz77.Compress(stream, length);
             var file = NewFile(width, height, format, PngCompression.Lz77, deflateBytes, out int idat, out int idatData);
@@ -291,7 +286,7 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>A filter the word path lacks (Paeth): byte-wise into a byte row, then copied into the words.</summary>
-        static void FilterBytewise(Scratch s, byte[] pixels, ushort[] samples, int y, int width, int rowBytes, int bpp, int type, ulong[] words, int at)
+        static void FilterBytewise(Scratch s, byte[] pixels, ushort[] samples, int y, int width, int rowBytes, int bpp, int type, ulong[] filtered)
         {
             if (s.Batch.Length < rowBytes + 1) s.Batch = new byte[rowBytes + 1];
             if (samples != null && y > 0)
@@ -301,7 +296,7 @@ namespace NerfDatasetCreator
             }
             SelectRow(s, pixels, samples, y, width, rowBytes, out var src, out var srcOffset, out var prev, out var prevOffset);
             PngRowFilter.Apply(type, src, srcOffset, prev, prevOffset, rowBytes, bpp, s.Batch, 0);
-            Buffer.BlockCopy(s.Batch, 1, words, at * 8, rowBytes);
+            Buffer.BlockCopy(s.Batch, 1, filtered, 0, rowBytes);
         }
 
         /// <summary>Row y's bytes and the row above (zeros for the first row); ushort samples become big-endian byte rows.</summary>
