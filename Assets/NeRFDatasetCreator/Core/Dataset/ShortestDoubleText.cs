@@ -1,0 +1,276 @@
+using System;
+using System.Numerics;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// The text .NET Core 3.0+ gives a double with <c>ToString("R", CultureInfo.InvariantCulture)</c> — the fewest
+    /// significant digits that read back to the same double, the closest such digits to the exact value — written
+    /// the same on every runtime, without formatting or parsing through the runtime. Mono (Unity's runtime) formats
+    /// "R" as .NET Framework did: 15 digits when they read back, else 17 even where 16 suffice (58 % of random
+    /// doubles), so files written in Unity would differ from the command-line tool's; and the runtime's formatting
+    /// allocates a string per number, which a 300 000-view transforms file writes 4.8 million times.
+    /// </summary>
+    /// <remarks>
+    /// Why testing three lengths suffices: a double has 15 significant digits of precision, so at most one decimal of
+    /// 15 or fewer digits lies within its rounding interval (15-digit decimals are more than an interval apart); when
+    /// one does, rounding the exact value to 15 digits gives it (padded with zeros, which are dropped). Otherwise the
+    /// answer has 16 or 17 digits, and at each length the only decimals that can lie in the interval are the two
+    /// neighbours of the exact value at that length; at 17 digits one always does. So: for n = 15, 16, 17, take the
+    /// exact value's two n-digit neighbours; the first length with a neighbour strictly inside the interval (its ends
+    /// excluded, as .NET's Grisu3 and Dragon4 exclude them) wins, the closer neighbour when both are inside, the even
+    /// last digit on an exact tie. The interval is half an ulp each side, a quarter below at a power of two whose
+    /// lower neighbour is closer. The exact value × 10^k is computed in 128-bit integer arithmetic for 1e-8 ≲ |v| &lt; 1e15
+    /// (every pose and intrinsic of a plan), with <see cref="BigInteger"/> elsewhere. Tests compare the text with
+    /// .NET's "R" on millions of random and edge doubles, and with an exact rational check on any runtime.
+    /// </remarks>
+    public static class ShortestDoubleText
+    {
+        /// <summary>Characters <see cref="Write"/> may need: sign, 17 digits, point, "0.000" and an exponent "e-324".</summary>
+        public const int MaxLength = 32;
+
+        /// <summary>
+        /// Writes <paramref name="value"/> (finite) as the dataset files' JSON number — .NET's "R" text with a lowercase
+        /// exponent and ".0" on whole numbers, "0.0" for both zeros — into <paramref name="buffer"/> at
+        /// <paramref name="at"/>; returns the index after the last character.
+        /// </summary>
+        public static int WriteJson(double value, char[] buffer, int at)
+        {
+            if (value == 0)
+            {
+                buffer[at] = '0';
+                buffer[at + 1] = '.';
+                buffer[at + 2] = '0';
+                return at + 3;
+            }
+            if (value < 0)
+            {
+                buffer[at++] = '-';
+                value = -value;
+            }
+            Shortest(value, out var digits, out var count, out var scale);
+            return Layout(digits, count, scale, buffer, at);
+        }
+
+        /// <summary><see cref="WriteJson"/> as a string.</summary>
+        public static string Json(double value)
+        {
+            var buffer = new char[MaxLength];
+            return new string(buffer, 0, WriteJson(value, buffer, 0));
+        }
+
+        // .NET's "R" lays out the digits as "G17" does: scientific when the decimal point would sit more than 17
+        // places right of the first digit (1E+17, but 10000000000000000) or more than three zeros left of it (1E-05,
+        // but 0.0001), with an exponent of at least two digits.
+        static int Layout(ulong digits, int count, int scale, char[] b, int at)
+        {
+            if (scale > 17 || scale < -3)
+            {
+                var end = at + count + (count > 1 ? 1 : 0);
+                WriteDigits(digits, b, end - 1, count, count - 1);
+                b[end++] = 'e';
+                var exponent = scale - 1;
+                b[end++] = exponent < 0 ? '-' : '+';
+                if (exponent < 0) exponent = -exponent;
+                if (exponent >= 100) b[end++] = (char)('0' + exponent / 100);
+                b[end++] = (char)('0' + exponent / 10 % 10);
+                b[end++] = (char)('0' + exponent % 10);
+                return end;
+            }
+            if (scale <= 0)
+            {
+                b[at++] = '0';
+                b[at++] = '.';
+                for (var i = scale; i < 0; i++) b[at++] = '0';
+                WriteDigits(digits, b, at + count - 1, count, 0);
+                return at + count;
+            }
+            if (scale < count)
+            {
+                WriteDigits(digits, b, at + count, count, count - scale);
+                return at + count + 1;
+            }
+            WriteDigits(digits, b, at + count - 1, count, 0);
+            at += count;
+            for (var i = count; i < scale; i++) b[at++] = '0';
+            b[at++] = '.';
+            b[at++] = '0';
+            return at;
+        }
+
+        // Writes the count digits backwards from last, with a point before the last pointAfter digits (none for 0).
+        static void WriteDigits(ulong digits, char[] b, int last, int count, int pointAfter)
+        {
+            for (var i = 0; i < count; i++)
+            {
+                if (pointAfter > 0 && i == pointAfter) b[last--] = '.';
+                var next = digits / 10;
+                b[last--] = (char)('0' + (int)(digits - next * 10));
+                digits = next;
+            }
+        }
+
+        static readonly ulong[] Pow10 =
+        {
+            1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000, 10000000000, 100000000000,
+            1000000000000, 10000000000000, 100000000000000, 1000000000000000, 10000000000000000, 100000000000000000,
+        };
+
+        const int MaxFastPower = 26; // 5^26 < 2^61
+        const int MaxFastShift = 55; // keeps 100 × 2^(shift + 2) below 2^64
+
+        static readonly ulong[] Pow5 = Powers5();
+
+        static ulong[] Powers5()
+        {
+            var p = new ulong[MaxFastPower + 1];
+            p[0] = 1;
+            for (var i = 1; i < p.Length; i++) p[i] = p[i - 1] * 5;
+            return p;
+        }
+
+        /// <summary>The shortest digits of a finite positive <paramref name="value"/>: value = 0.digits × 10^scale.</summary>
+        public static void Shortest(double value, out ulong digits, out int count, out int scale)
+        {
+            var bits = BitConverter.DoubleToInt64Bits(value);
+            var biased = (int)(bits >> 52) & 0x7FF;
+            var f = (ulong)bits & 0xFFFFFFFFFFFFFUL;
+            int e;
+            if (biased == 0) e = -1074;
+            else
+            {
+                f |= 1UL << 52;
+                e = biased - 1075;
+            }
+            // The double below a power of two is half as far as the one above: the interval's lower half is halved.
+            var lowerHalved = f == 1UL << 52 && biased > 1;
+            // An end of the interval reads back as this double when its last bit is even (ties to even): .NET accepts it then.
+            var ends = (f & 1) == 0;
+            var log2 = e + 63 - LeadingZeros(f); // floor(log2 value)
+            var k = 16 - ((log2 * 78913) >> 18); // 78913 / 2^18 ≈ log10 2: floor(log10 value) or one less
+            if (FastDigits(f, e, k, lowerHalved, ends, out digits, out count, out scale)) return;
+            ExactDigits(f, e, k, lowerHalved, ends, biased == 0 ? 1 : 15, out digits, out count, out scale);
+        }
+
+        // value × 10^k = f × 5^k / 2^s with s = -(e + k), as a 128-bit integer (hi, lo) split at bit s. All distances
+        // below are in units of 2^-(s + 2) of the 17th digit, so the half-ulp margins 5^k / 2^(s+1) are whole numbers.
+        static bool FastDigits(ulong f, int e, int k, bool lowerHalved, bool ends, out ulong digits, out int count, out int scale)
+        {
+            digits = 0;
+            count = 0;
+            scale = 0;
+            for (var attempt = 0; attempt < 3; attempt++)
+            {
+                var s = -(e + k);
+                if (k < 0 || k > MaxFastPower || s < 1 || s > MaxFastShift) return false;
+                var p = Pow5[k];
+                ulong fl = f & 0xFFFFFFFFUL, fh = f >> 32, pl = p & 0xFFFFFFFFUL, ph = p >> 32;
+                var mid = fh * pl + fl * ph; // < 2^62
+                var low = fl * pl;
+                var lo = low + (mid << 32);
+                var hi = fh * ph + (mid >> 32) + (lo < low ? 1UL : 0UL);
+                var d = (hi << (64 - s)) | (lo >> s);
+                if (d >= Pow10[17] || d < Pow10[16])
+                {
+                    k += d < Pow10[16] ? 1 : -1; // the estimate of the decimal exponent was one off
+                    continue;
+                }
+                var fraction = (lo & ((1UL << s) - 1)) << 2;
+                var one = 1UL << (s + 2);
+                var high = p << 1;
+                var lowMargin = lowerHalved ? p : high;
+                for (var n = 15; n <= 17; n++)
+                {
+                    var unit = Pow10[17 - n];
+                    var q = d / unit;
+                    var below = (d - q * unit) * one + fraction; // distance down to the neighbour q
+                    var above = unit * one - below;               // distance up to q + 1
+                    var pick = Pick(below < lowMargin || (ends && below == lowMargin), above < high || (ends && above == high), below < above ? -1 : below > above ? 1 : 0, q);
+                    if (pick < 0) continue;
+                    Finish((ulong)pick, n, 17 - k, out digits, out count, out scale);
+                    return true;
+                }
+                break; // cannot happen (see the remarks): the exact path decides
+            }
+            return false;
+        }
+
+        // The same steps in exact rational arithmetic, for the values outside the fast path's range.
+        static void ExactDigits(ulong f, int e, int k, bool lowerHalved, bool ends, int shortest, out ulong digits, out int count, out int scale)
+        {
+            for (var attempt = 0; attempt < 3; attempt++)
+            {
+                // value × 10^k = num / den; one unit of the last bit (an ulp) × 10^k = ulp / den.
+                var ulp = BigInteger.One;
+                var den = BigInteger.One;
+                if (e >= 0) ulp <<= e;
+                else den <<= -e;
+                if (k >= 0) ulp *= BigInteger.Pow(10, k);
+                else den *= BigInteger.Pow(10, -k);
+                var d = BigInteger.DivRem(f * ulp, den, out var rest);
+                if (d >= Pow10[17] || d < Pow10[16])
+                {
+                    k += d < Pow10[16] ? 1 : -1;
+                    continue;
+                }
+                // Units of 1 / (4 den): the 17th digit is 4 den, the margins half an ulp (2 ulp) or a quarter (ulp).
+                var fraction = rest << 2;
+                var one = den << 2;
+                var high = ulp << 1;
+                var lowMargin = lowerHalved ? ulp : high;
+                var whole = (ulong)d;
+                for (var n = shortest; n <= 17; n++)
+                {
+                    var unit = Pow10[17 - n];
+                    var q = whole / unit;
+                    var below = (whole - q * unit) * one + fraction;
+                    var above = unit * one - below;
+                    var pick = Pick(below < lowMargin || (ends && below == lowMargin), above < high || (ends && above == high), below.CompareTo(above), q);
+                    if (pick < 0) continue;
+                    Finish((ulong)pick, n, 17 - k, out digits, out count, out scale);
+                    return;
+                }
+                break;
+            }
+            throw new InvalidOperationException("No 17-digit neighbour of " + f + "·2^" + e + " reads back to it."); // cannot happen: see the remarks
+        }
+
+        // The neighbour q or q + 1 to write, or -1 when neither is inside the interval.
+        static long Pick(bool belowInside, bool aboveInside, int belowVersusAbove, ulong q)
+        {
+            if (!belowInside && !aboveInside) return -1;
+            bool up = aboveInside && (!belowInside || belowVersusAbove > 0 || (belowVersusAbove == 0 && (q & 1) == 1));
+            return (long)(up ? q + 1 : q);
+        }
+
+        // n digits 0.candidate × 10^scale17 → the digit string without trailing zeros.
+        static void Finish(ulong candidate, int n, int scale17, out ulong digits, out int count, out int scale)
+        {
+            scale = scale17;
+            if (candidate == Pow10[n])
+            {
+                candidate = Pow10[n - 1]; // 99…9 rounded up to 100…0: one place more
+                scale++;
+            }
+            count = n;
+            while (candidate % 10 == 0)
+            {
+                candidate /= 10;
+                count--;
+            }
+            digits = candidate;
+        }
+
+        static int LeadingZeros(ulong x)
+        {
+            var n = 0;
+            if (x >> 32 == 0) { n += 32; x <<= 32; }
+            if (x >> 48 == 0) { n += 16; x <<= 16; }
+            if (x >> 56 == 0) { n += 8; x <<= 8; }
+            if (x >> 60 == 0) { n += 4; x <<= 4; }
+            if (x >> 62 == 0) { n += 2; x <<= 2; }
+            if (x >> 63 == 0) n++;
+            return n;
+        }
+    }
+}
