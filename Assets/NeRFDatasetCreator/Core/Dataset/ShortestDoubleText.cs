@@ -149,6 +149,7 @@ namespace NerfDatasetCreator
             var log2 = e + 63 - LeadingZeros(f); // floor(log2 value)
             var k = 16 - ((log2 * 78913) >> 18); // 78913 / 2^18 ≈ log10 2: floor(log10 value) or one less
             if (FastDigits(f, e, k, lowerHalved, ends, out digits, out count, out scale)) return;
+            if (WideDigits(f, e, k, lowerHalved, out digits, out count, out scale)) return;
             ExactDigits(f, e, k, lowerHalved, ends, biased == 0 ? 1 : 15, out digits, out count, out scale);
         }
 
@@ -193,6 +194,96 @@ namespace NerfDatasetCreator
                 break; // cannot happen (see the remarks): the exact path decides
             }
             return false;
+        }
+
+        const int MaxWidePower = 55; // 5^55 < 2^128
+        static readonly ulong[] Pow5High = new ulong[MaxWidePower + 1], Pow5Low = new ulong[MaxWidePower + 1];
+
+        static ShortestDoubleText()
+        {
+            for (var i = 0; i <= MaxWidePower; i++)
+            {
+                var p = BigInteger.Pow(5, i);
+                Pow5High[i] = (ulong)(p >> 64);
+                Pow5Low[i] = (ulong)(p & ulong.MaxValue);
+            }
+        }
+
+        // The numbers near zero a pose holds (a rotation entry of 1e-17 where an exact one would be 0: 4 % of a plan's
+        // numbers) and whatever else has 5^k below 2^128 and a shift below 128: value × 10^k = f × 5^k / 2^s as a
+        // 192-bit product, its 17 digits exact, the fraction below them to 64 bits. The comparisons with the interval
+        // are made in doubles, far more precise than needed except where two sides come within 1e-9 of a 17th-digit
+        // unit; that (never seen in tests, and impossible for exact ties below 2^-3) is left to the exact path.
+        static bool WideDigits(ulong f, int e, int k, bool lowerHalved, out ulong digits, out int count, out int scale)
+        {
+            digits = 0;
+            count = 0;
+            scale = 0;
+            for (var attempt = 0; attempt < 3; attempt++)
+            {
+                var s = -(e + k);
+                if (k < 0 || k > MaxWidePower || s < 1 || s > 127) return false;
+                Multiply(f, Pow5Low[k], out var c1, out var n0);
+                Multiply(f, Pow5High[k], out var d1, out var d0);
+                var n1 = c1 + d0;
+                var n2 = d1 + (n1 < c1 ? 1UL : 0UL);
+                ulong d, fraction;
+                if (s < 64)
+                {
+                    d = (n1 << (64 - s)) | (n0 >> s);
+                    fraction = n0 << (64 - s);
+                }
+                else if (s == 64)
+                {
+                    d = n1;
+                    fraction = n0;
+                }
+                else
+                {
+                    var t = s - 64;
+                    d = (n2 << (64 - t)) | (n1 >> t);
+                    fraction = (n1 << (64 - t)) | (n0 >> t);
+                }
+                if (d >= Pow10[17] || d < Pow10[16])
+                {
+                    k += d < Pow10[16] ? 1 : -1;
+                    continue;
+                }
+                var x = fraction * TwoToMinus64;
+                var high = (Pow5High[k] * TwoTo64 + Pow5Low[k]) * PowerOfTwo(-(s + 1)); // half an ulp in 17th-digit units
+                var lowMargin = lowerHalved ? high * 0.5 : high;
+                for (var n = 15; n <= 17; n++)
+                {
+                    var unit = Pow10[17 - n];
+                    var q = d / unit;
+                    var below = (d - q * unit) + x;
+                    var above = unit - below;
+                    if (Near(below, lowMargin) || Near(above, high) || Near(below, above)) return false;
+                    var pick = Pick(below < lowMargin, above < high, below < above ? -1 : 1, q);
+                    if (pick < 0) continue;
+                    Finish((ulong)pick, n, 17 - k, out digits, out count, out scale);
+                    return true;
+                }
+                return false;
+            }
+            return false;
+        }
+
+        const double TwoTo64 = 18446744073709551616.0;
+        const double TwoToMinus64 = 1.0 / 18446744073709551616.0;
+
+        static bool Near(double a, double b) => Math.Abs(a - b) < 1e-9;
+
+        static double PowerOfTwo(int exponent) => BitConverter.Int64BitsToDouble((long)(exponent + 1023) << 52); // normal exponents only
+
+        // a × b as a 128-bit (high, low), in 32-bit halves.
+        static void Multiply(ulong a, ulong b, out ulong high, out ulong low)
+        {
+            ulong a0 = a & 0xFFFFFFFFUL, a1 = a >> 32, b0 = b & 0xFFFFFFFFUL, b1 = b >> 32;
+            ulong p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0;
+            var mid = (p00 >> 32) + (p01 & 0xFFFFFFFFUL) + (p10 & 0xFFFFFFFFUL);
+            low = (mid << 32) | (p00 & 0xFFFFFFFFUL);
+            high = a1 * b1 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
         }
 
         // The same steps in exact rational arithmetic, for the values outside the fast path's range.
