@@ -19,13 +19,14 @@ namespace NerfDatasetCreator
             Index = index;
             Pose = pose;
             TransformMatrix = transformMatrix;
-            _kinds = kinds ?? throw new ArgumentNullException(nameof(kinds));
+            if (kinds == null) throw new ArgumentNullException(nameof(kinds));
+            _kinds = kinds as DatasetFileKind[] ?? new List<DatasetFileKind>(kinds).ToArray();
             Time = time;
         }
 
         // The kinds, not the files: a file's path follows from them (DatasetLayout), and a 300 000-view plan then holds
         // 300 000 objects rather than 1.2 million (no path strings, no file objects until asked for).
-        readonly IReadOnlyList<DatasetFileKind> _kinds;
+        readonly DatasetFileKind[] _kinds;
 
         /// <summary>When a dynamic capture renders this view (<see cref="TimePlanning"/>); null in a static capture.</summary>
         public ViewTime? Time { get; }
@@ -45,7 +46,7 @@ namespace NerfDatasetCreator
         {
             get
             {
-                var files = new PlannedFile[_kinds.Count];
+                var files = new PlannedFile[_kinds.Length];
                 for (var k = 0; k < files.Length; k++) files[k] = new PlannedFile(_kinds[k], DatasetLayout.RelativePath(Split, Index, _kinds[k]));
                 return files;
             }
@@ -59,7 +60,7 @@ namespace NerfDatasetCreator
 
         public bool Writes(DatasetFileKind kind)
         {
-            for (var k = 0; k < _kinds.Count; k++)
+            for (var k = 0; k < _kinds.Length; k++)
                 if (_kinds[k] == kind) return true;
             return false;
         }

@@ -46,6 +46,24 @@ namespace NerfDatasetCreator
             _at = 0;
         }
 
+        // The constant text between the values, joined into as few pieces as possible: each piece is one copy.
+        const string Entry = ",\n            \"";
+        const string MatrixStart = "\",\n            \"rotation\": ";
+        const string FirstNumber = ",\n            \"transform_matrix\": [\n                [\n                    ";
+        const string NextNumber = ",\n                    ";
+        const string NextRow = "\n                ],\n                [\n                    ";
+        const string MatrixEnd = "\n                ]\n            ]";
+        static readonly string[] FirstFrame = SplitTexts("\n        {\n            \"file_path\": \"./", "/r_");
+        static readonly string[] NextFrame = SplitTexts(",\n        {\n            \"file_path\": \"./", "/r_");
+        static readonly string[] PathStart = SplitTexts("\"./", "/r_");
+
+        static string[] SplitTexts(string before, string after)
+        {
+            var texts = new string[DatasetSplits.All.Count];
+            foreach (var split in DatasetSplits.All) texts[(int)split] = before + DatasetSplits.Name(split) + after;
+            return texts;
+        }
+
         void Frame(PlannedView v, double rotation, bool comma)
         {
             var m = v.TransformMatrix;
@@ -55,75 +73,72 @@ namespace NerfDatasetCreator
                     new ValidationProblem(DatasetSplits.Name(v.Split) + "[" + v.Index + "].transform_matrix", m.ToString(), // Matrix4x4d formats with the invariant culture
                         "is not finite; JSON cannot hold it and every loader would fail.", "Check the settings that placed this camera."),
                 });
-            Raw(comma ? ",\n        {" : "\n        {");
-            Key("file_path", true);
-            FilePath(v.Split, v.Index, null);
-            Key("rotation", false);
+            Raw((comma ? NextFrame : FirstFrame)[(int)v.Split]);
+            Integer(v.Index);
+            Raw(MatrixStart);
             Number(rotation);
-            Key("transform_matrix", false);
-            Raw("[");
+            Raw(FirstNumber);
             for (var r = 0; r < 4; r++)
             {
-                Raw(r == 0 ? "\n                [" : ",\n                [");
-                for (var c = 0; c < 4; c++)
-                {
-                    Raw(c == 0 ? "\n                    " : ",\n                    ");
-                    Number(m[r, c]);
-                }
-                Raw("\n                ]");
+                if (r > 0) Raw(NextRow);
+                Number(m[r, 0]);
+                Raw(NextNumber);
+                Number(m[r, 1]);
+                Raw(NextNumber);
+                Number(m[r, 2]);
+                Raw(NextNumber);
+                Number(m[r, 3]);
             }
-            Raw("\n            ]");
+            Raw(MatrixEnd);
             if (v.Time.HasValue)
             {
                 var time = v.Time.Value;
-                Key(TimeKeys.Time, false);
+                Key(TimeKeys.Time);
                 Number(time.Normalised);
-                Key(TimeKeys.Seconds, false);
+                Key(TimeKeys.Seconds);
                 Number(time.Seconds);
                 if (time.Camera >= 0)
                 {
-                    Key(TimeKeys.Step, false);
+                    Key(TimeKeys.Step);
                     Integer(time.Step);
-                    Key(TimeKeys.Camera, false);
+                    Key(TimeKeys.Camera);
                     Integer(time.Camera);
                 }
             }
             if (v.Writes(DatasetFileKind.DepthPng))
             {
-                Key("depth_path", false);
+                Key("depth_path");
                 FilePath(v.Split, v.Index, DatasetFileKind.DepthPng);
-                Key("depth_file_path", false);
+                Key("depth_file_path");
                 FilePath(v.Split, v.Index, DatasetFileKind.DepthPng);
             }
             if (v.Writes(DatasetFileKind.NormalPng))
             {
-                Key("normal_path", false);
+                Key("normal_path");
                 FilePath(v.Split, v.Index, DatasetFileKind.NormalPng);
             }
             if (v.Writes(DatasetFileKind.MaskPng))
             {
-                Key("mask_path", false);
+                Key("mask_path");
                 FilePath(v.Split, v.Index, DatasetFileKind.MaskPng);
             }
             Raw("\n        }");
         }
 
         // Keys and paths are the plugin's own ASCII text without quotes, backslashes or control characters: nothing to escape.
-        void Key(string name, bool first)
+        void Key(string name)
         {
-            Raw(first ? "\n            \"" : ",\n            \"");
+            Raw(Entry);
             Raw(name);
             Raw("\": ");
         }
 
-        // DatasetLayout.FramePath ("./train/r_7") or FrameKeyPath ("./train/r_7_depth_0000.png") as a JSON string, built in place.
-        void FilePath(DatasetSplit split, int index, DatasetFileKind? kind)
+        // DatasetLayout.FrameKeyPath ("./train/r_7_depth_0000.png") as a JSON string, built in place.
+        void FilePath(DatasetSplit split, int index, DatasetFileKind kind)
         {
-            Raw("\"./");
-            Raw(DatasetSplits.Name(split));
-            Raw("/r_");
+            Raw(PathStart[(int)split]);
             Integer(index);
-            if (kind.HasValue) Raw(DatasetLayout.Suffix(kind.Value));
+            Raw(DatasetLayout.Suffix(kind));
             _buffer[_at++] = '"';
         }
 
