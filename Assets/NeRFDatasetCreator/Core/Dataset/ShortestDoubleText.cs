@@ -12,21 +12,24 @@ namespace NerfDatasetCreator
     /// allocates a string per number, which a 300 000-view transforms file writes 4.8 million times.
     /// </summary>
     /// <remarks>
-    /// Why testing three lengths suffices: a double has 15 significant digits of precision, so at most one decimal of
-    /// 15 or fewer digits lies within its rounding interval (15-digit decimals are more than an interval apart); when
-    /// one does, rounding the exact value to 15 digits gives it (padded with zeros, which are dropped). Otherwise the
-    /// answer has 16 or 17 digits, and at each length the only decimals that can lie in the interval are the two
-    /// neighbours of the exact value at that length; at 17 digits one always does. So: for n = 15, 16, 17, take the
-    /// exact value's two n-digit neighbours; the first length with a neighbour strictly inside the interval (its ends
-    /// excluded, as .NET's Grisu3 and Dragon4 exclude them) wins, the closer neighbour when both are inside, the even
-    /// last digit on an exact tie. The interval is half an ulp each side, a quarter below at a power of two whose
-    /// lower neighbour is closer. The exact value × 10^k is computed in 128-bit integer arithmetic for 1e-8 ≲ |v| &lt; 1e15
-    /// (every pose and intrinsic of a plan), with <see cref="BigInteger"/> elsewhere. Tests compare the text with
-    /// .NET's "R" on millions of random and edge doubles, and with an exact rational check on any runtime.
+    /// Why testing three lengths suffices: a normal double has 15 significant digits of precision, so at most one
+    /// decimal of 15 or fewer digits lies within its rounding interval (15-digit decimals are more than an interval
+    /// apart); when one does, rounding the exact value to 15 digits gives it (padded with zeros, which are dropped).
+    /// Otherwise the answer has 16 or 17 digits, and at each length the only decimals that can lie in the interval are
+    /// the two neighbours of the exact value at that length; at 17 digits one always does. So: for n = 15, 16, 17, take
+    /// the exact value's two n-digit neighbours; the first length with a neighbour inside the interval wins, the closer
+    /// neighbour when both are inside, the even last digit on an exact tie. The interval reaches half an ulp each side
+    /// (a quarter below a power of two, whose lower neighbour is closer) and holds its ends when the double's last bit
+    /// is even (they read back to it under ties-to-even), as .NET's own formatter has it. Subnormals have fewer digits
+    /// of precision and try every length from 1. The exact value × 10^k is computed in 128-bit integer arithmetic for
+    /// 1e-8 ≲ |v| &lt; 1e15 (the poses and intrinsics of a plan), in a 192-bit product near zero and with
+    /// <see cref="BigInteger"/> elsewhere. .NET 10's "R" differs only at 2^-25 and 2^-958, where its shorter text reads
+    /// back as the double below (it takes the full half ulp below a power of two); the text here reads back. Tests
+    /// compare with .NET's "R" on millions of random and edge doubles, and check with exact rationals on any runtime.
     /// </remarks>
     public static class ShortestDoubleText
     {
-        /// <summary>Characters <see cref="Write"/> may need: sign, 17 digits, point, "0.000" and an exponent "e-324".</summary>
+        /// <summary>Characters <see cref="WriteJson"/> may need: sign, 17 digits, point, "0.000" and an exponent "e-324".</summary>
         public const int MaxLength = 32;
 
         /// <summary>
