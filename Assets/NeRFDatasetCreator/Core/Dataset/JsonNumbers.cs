@@ -17,12 +17,9 @@ namespace NerfDatasetCreator
         /// (<see cref="ShortestDoubleText"/>, the same on Mono) — with ".0" on whole numbers and a lowercase exponent as
         /// Python's json module (which wrote nerf_synthetic) writes them.
         /// </summary>
-        public static string Format(double value)
-        {
-            if (double.IsNaN(value) || double.IsInfinity(value))
-                throw new ArgumentException("A dataset file cannot hold " + value.ToString(CultureInfo.InvariantCulture) + ": it is not valid JSON.", nameof(value));
-            return ShortestDoubleText.Json(value); // 0.0 also for −0, whose sign means nothing in a pose and only puzzles readers
-        }
+        /// <exception cref="ArgumentException">NaN or infinity, which JSON cannot hold.</exception>
+        public static string Format(double value) =>
+            ShortestDoubleText.Json(value); // 0.0 also for −0, whose sign means nothing in a pose and only puzzles readers
 
         public static void Write(JsonWriter writer, double value) => writer.WriteRawValue(Format(value));
 

@@ -39,6 +39,8 @@ namespace NerfDatasetCreator
         /// </summary>
         public static int WriteJson(double value, char[] buffer, int at)
         {
+            if (value - value != 0) // NaN or infinity: JSON cannot hold them
+                throw new ArgumentException("A dataset file cannot hold " + value.ToString(System.Globalization.CultureInfo.InvariantCulture) + ": it is not valid JSON.", nameof(value));
             if (value == 0)
             {
                 buffer[at] = '0';

@@ -114,6 +114,14 @@ namespace NerfDatasetCreator.Tests
             }
         }
 
+        [TestCase(double.NaN)]
+        [TestCase(double.PositiveInfinity)]
+        [TestCase(double.NegativeInfinity)]
+        public void RefusesWhatJsonCannotHold(double value)
+        {
+            Assert.Throws<ArgumentException>(() => ShortestDoubleText.WriteJson(value, new char[ShortestDoubleText.MaxLength], 0));
+        }
+
         [Test]
         public void WritesIntoTheBufferAtTheGivenPlace()
         {
