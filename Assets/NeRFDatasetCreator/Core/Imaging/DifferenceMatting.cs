@@ -122,7 +122,7 @@ namespace NerfDatasetCreator
         }
 
         // Half bits: 1.0, and the exponent field (all ones: infinity or NaN).
-        const int HalfOne = 0x3C00, HalfExponent = 0x7C00, HalfExponentStep = 0x0400;
+        const int HalfOne = 0x3C00, HalfExponent = 0x7C00;
 
         /// <summary>
         /// The transparent-background, linear-light case of <see cref="Resolve"/> (a Linear project's capture), with
@@ -148,45 +148,41 @@ namespace NerfDatasetCreator
                     float alphaSum = 0, r = 0, g = 0, b = 0;
                     if (k == 2)
                     {
-                        // The block's twelve colour halves of each render, read once into locals: Mono neither inlines
-                        // nor keeps array elements in registers, and every array read is bounds-checked.
                         int c0 = first * 4, c1 = c0 + rowStride;
-                        int k0 = black[c0], k1 = black[c0 + 1], k2 = black[c0 + 2], k3 = black[c0 + 4], k4 = black[c0 + 5], k5 = black[c0 + 6];
-                        int k6 = black[c1], k7 = black[c1 + 1], k8 = black[c1 + 2], k9 = black[c1 + 4], k10 = black[c1 + 5], k11 = black[c1 + 6];
-                        int w0 = white[c0], w1 = white[c0 + 1], w2 = white[c0 + 2], w3 = white[c0 + 4], w4 = white[c0 + 5], w5 = white[c0 + 6];
-                        int w6 = white[c1], w7 = white[c1 + 1], w8 = white[c1 + 2], w9 = white[c1 + 4], w10 = white[c1 + 5], w11 = white[c1 + 6];
-                        if ((k0 | k1 | k2 | k3 | k4 | k5 | k6 | k7 | k8 | k9 | k10 | k11) == 0
-                            && ((w0 ^ HalfOne) | (w1 ^ HalfOne) | (w2 ^ HalfOne) | (w3 ^ HalfOne) | (w4 ^ HalfOne) | (w5 ^ HalfOne)
-                                | (w6 ^ HalfOne) | (w7 ^ HalfOne) | (w8 ^ HalfOne) | (w9 ^ HalfOne) | (w10 ^ HalfOne) | (w11 ^ HalfOne)) == 0)
+                        if ((black[c0] | black[c0 + 1] | black[c0 + 2] | black[c0 + 4] | black[c0 + 5] | black[c0 + 6]
+                             | black[c1] | black[c1 + 1] | black[c1 + 2] | black[c1 + 4] | black[c1 + 5] | black[c1 + 6]) == 0
+                            && white[c0] == HalfOne && white[c0 + 1] == HalfOne && white[c0 + 2] == HalfOne
+                            && white[c0 + 4] == HalfOne && white[c0 + 5] == HalfOne && white[c0 + 6] == HalfOne
+                            && white[c1] == HalfOne && white[c1 + 1] == HalfOne && white[c1 + 2] == HalfOne
+                            && white[c1 + 4] == HalfOne && white[c1 + 5] == HalfOne && white[c1 + 6] == HalfOne)
                         {
                             rgba[o] = rgba[o + 1] = rgba[o + 2] = rgba[o + 3] = 0;
                             continue;
                         }
-                        // Both renders equal and finite: (h & exponent) + 1 exponent step reaches bit 15 only for an
-                        // all-ones exponent (infinity or NaN).
-                        var covered = ((w0 ^ k0) | (w1 ^ k1) | (w2 ^ k2) | (w3 ^ k3) | (w4 ^ k4) | (w5 ^ k5)
-                                       | (w6 ^ k6) | (w7 ^ k7) | (w8 ^ k8) | (w9 ^ k9) | (w10 ^ k10) | (w11 ^ k11)) == 0
-                                      && ((((k0 & HalfExponent) + HalfExponentStep) | ((k1 & HalfExponent) + HalfExponentStep)
-                                           | ((k2 & HalfExponent) + HalfExponentStep) | ((k3 & HalfExponent) + HalfExponentStep)
-                                           | ((k4 & HalfExponent) + HalfExponentStep) | ((k5 & HalfExponent) + HalfExponentStep)
-                                           | ((k6 & HalfExponent) + HalfExponentStep) | ((k7 & HalfExponent) + HalfExponentStep)
-                                           | ((k8 & HalfExponent) + HalfExponentStep) | ((k9 & HalfExponent) + HalfExponentStep)
-                                           | ((k10 & HalfExponent) + HalfExponentStep) | ((k11 & HalfExponent) + HalfExponentStep)) & 0x8000) == 0;
-                        if (covered)
+                        if (white[c0] == black[c0] && white[c0 + 1] == black[c0 + 1] && white[c0 + 2] == black[c0 + 2]
+                            && white[c0 + 4] == black[c0 + 4] && white[c0 + 5] == black[c0 + 5] && white[c0 + 6] == black[c0 + 6]
+                            && white[c1] == black[c1] && white[c1 + 1] == black[c1 + 1] && white[c1 + 2] == black[c1 + 2]
+                            && white[c1 + 4] == black[c1 + 4] && white[c1 + 5] == black[c1 + 5] && white[c1 + 6] == black[c1 + 6]
+                            && ((black[c0] & HalfExponent) != HalfExponent) && ((black[c0 + 1] & HalfExponent) != HalfExponent)
+                            && ((black[c0 + 2] & HalfExponent) != HalfExponent) && ((black[c0 + 4] & HalfExponent) != HalfExponent)
+                            && ((black[c0 + 5] & HalfExponent) != HalfExponent) && ((black[c0 + 6] & HalfExponent) != HalfExponent)
+                            && ((black[c1] & HalfExponent) != HalfExponent) && ((black[c1 + 1] & HalfExponent) != HalfExponent)
+                            && ((black[c1 + 2] & HalfExponent) != HalfExponent) && ((black[c1 + 4] & HalfExponent) != HalfExponent)
+                            && ((black[c1 + 5] & HalfExponent) != HalfExponent) && ((black[c1 + 6] & HalfExponent) != HalfExponent))
                         {
                             // Per sample a = 1, t = 0 and (K + K + 0 − 0)·0.5 = K exactly; sums from +0 in the same order.
-                            r += half[k0];
-                            g += half[k1];
-                            b += half[k2];
-                            r += half[k3];
-                            g += half[k4];
-                            b += half[k5];
-                            r += half[k6];
-                            g += half[k7];
-                            b += half[k8];
-                            r += half[k9];
-                            g += half[k10];
-                            b += half[k11];
+                            r += half[black[c0]];
+                            g += half[black[c0 + 1]];
+                            b += half[black[c0 + 2]];
+                            r += half[black[c0 + 4]];
+                            g += half[black[c0 + 5]];
+                            b += half[black[c0 + 6]];
+                            r += half[black[c1]];
+                            g += half[black[c1 + 1]];
+                            b += half[black[c1 + 2]];
+                            r += half[black[c1 + 4]];
+                            g += half[black[c1 + 5]];
+                            b += half[black[c1 + 6]];
                             alphaSum = 4;
                         }
                         else SumSamples(black, white, half, first, width, k, ref alphaSum, ref r, ref g, ref b);
