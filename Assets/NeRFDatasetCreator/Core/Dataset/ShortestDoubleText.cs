@@ -256,8 +256,8 @@ namespace NerfDatasetCreator
         // The numbers near zero a pose holds (a rotation entry of 1e-17 where an exact one would be 0: 4 % of a plan's
         // numbers) and whatever else has 5^k below 2^128 and a shift below 128: value × 10^k = f × 5^k / 2^s as a
         // 192-bit product, its 17 digits exact, the fraction below them to 64 bits. The comparisons with the interval
-        // are made in doubles, far more precise than needed except where two sides come within 1e-9 of a 17th-digit
-        // unit; that (never seen in tests, and impossible for exact ties below 2^-3) is left to the exact path.
+        // are made in doubles (error below 1e-14 of a 17th-digit unit); where two sides come within 1e-9 of each other
+        // — exact ties and interval ends among them, never seen in the tests' millions of values — the exact path decides.
         static bool WideDigits(ulong f, int e, int k, bool lowerHalved, out ulong digits, out int count, out int scale)
         {
             digits = 0;
