@@ -13,27 +13,13 @@ namespace NerfDatasetCreator
     public static class JsonNumbers
     {
         /// <summary>
-        /// The shortest round-trip text of <paramref name="value"/>, with ".0" on whole numbers and a lowercase
-        /// exponent as Python's json module (which wrote nerf_synthetic) writes them. "R" is checked by parsing back because older runtimes' "R" did not always round-trip;
-        /// "G17" always does.
+        /// The shortest text that reads back to <paramref name="value"/> — .NET Core 3.0+'s "R" digits
+        /// (<see cref="ShortestDoubleText"/>, the same on Mono) — with ".0" on whole numbers and a lowercase exponent as
+        /// Python's json module (which wrote nerf_synthetic) writes them.
         /// </summary>
-        public static string Format(double value)
-        {
-            if (double.IsNaN(value) || double.IsInfinity(value))
-                throw new ArgumentException("A dataset file cannot hold " + value.ToString(CultureInfo.InvariantCulture) + ": it is not valid JSON.", nameof(value));
-            if (value == 0) return "0.0"; // also −0, whose sign means nothing in a pose and only puzzles readers
-            var text = value.ToString("R", CultureInfo.InvariantCulture);
-            if (!RoundTripIsExact && double.Parse(text, NumberStyles.Float, CultureInfo.InvariantCulture) != value)
-                text = value.ToString("G17", CultureInfo.InvariantCulture);
-            text = text.Replace("E", "e");
-            if (text.IndexOf('.') < 0 && text.IndexOf('e') < 0) text += ".0";
-            return text;
-        }
-
-        // .NET Core 3.0 and later format "R" as the shortest text that parses back exactly (a documented guarantee),
-        // so the check above is skipped there: half the cost of a 300 000-view transforms file. Mono — Unity's
-        // runtime — and .NET Framework report version 4 and keep the check. Either way the text is the same.
-        static readonly bool RoundTripIsExact = Type.GetType("Mono.Runtime") == null && Environment.Version.Major >= 5;
+        /// <exception cref="ArgumentException">NaN or infinity, which JSON cannot hold.</exception>
+        public static string Format(double value) =>
+            ShortestDoubleText.Json(value); // 0.0 also for −0, whose sign means nothing in a pose and only puzzles readers
 
         public static void Write(JsonWriter writer, double value) => writer.WriteRawValue(Format(value));
 

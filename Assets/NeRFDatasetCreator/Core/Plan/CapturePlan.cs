@@ -139,7 +139,9 @@ namespace NerfDatasetCreator
             var distance = ResolveDistance(copy, target);
             var normalisation = SceneNormalisation.ForTarget(copy.Normalisation, target.Centre, target.BoundingRadius, distance, copy.NormalisedTargetRadius);
             var time = TimePlanning.Resolve(copy, target.ClipLengthSeconds);
-            var views = new List<PlannedView>();
+            var total = 0;
+            foreach (var split in DatasetSplits.All) total += TimePlanning.ViewCount(copy, time, split);
+            var views = new List<PlannedView>(total);
             foreach (var split in DatasetSplits.All)
             {
                 var s = copy.Split(split);
@@ -148,17 +150,15 @@ namespace NerfDatasetCreator
                 var poses = cameras != null
                     ? cameras.Cameras.Select(c => c.Pose).ToList()
                     : CameraRig.Place(s.Formation.ToFormation(copy.Seed, splitName), s.Count, target.Centre, distance);
-                var kinds = DatasetLayout.FileKinds(s);
+                var kinds = DatasetLayout.FileKinds(s).ToArray(); // shared by the split's views
+                // A plain loop without LINQ: this runs once per view, up to 300 000 times.
                 foreach (var slot in TimePlanning.Slots(time, split, poses.Count))
                 {
                     var pose = poses[slot.Camera];
-                    // A plain loop: this runs once per view, up to 300 000 times.
-                    var files = new PlannedFile[kinds.Count];
-                    for (var k = 0; k < files.Length; k++) files[k] = new PlannedFile(kinds[k], DatasetLayout.RelativePath(split, slot.Index, kinds[k]));
                     var matrix = cameras != null
                         ? PosePlacement.ToOutput(cameras.Cameras[slot.Camera].FileCameraToWorld, cameras.Poses.Normalisation, normalisation)
-                        : normalisation.ApplyToCameraToWorld(BlenderConvention.CameraToWorld(pose));
-                    views.Add(new PlannedView(split, slot.Index, pose, matrix, files, slot.Time));
+                        : normalisation.CameraToWorld(pose);
+                    views.Add(new PlannedView(split, slot.Index, pose, matrix, kinds, slot.Time));
                 }
             }
             var warnings = PlanWarnings.For(copy, target, normalisation, views.Select(v => v.Pose))

@@ -11,16 +11,22 @@ namespace NerfDatasetCreator
     [Serializable]
     public sealed class PlannedView
     {
-        public PlannedView(DatasetSplit split, int index, UnityPose pose, Matrix4x4d transformMatrix, IReadOnlyList<PlannedFile> files,
+        /// <param name="kinds">The kinds of file the view writes, colour first; one array is shared by a split's views.</param>
+        public PlannedView(DatasetSplit split, int index, UnityPose pose, Matrix4x4d transformMatrix, IReadOnlyList<DatasetFileKind> kinds,
             ViewTime? time = null)
         {
             Split = split;
             Index = index;
             Pose = pose;
             TransformMatrix = transformMatrix;
-            Files = files;
+            if (kinds == null) throw new ArgumentNullException(nameof(kinds));
+            _kinds = kinds as DatasetFileKind[] ?? new List<DatasetFileKind>(kinds).ToArray();
             Time = time;
         }
+
+        // The kinds, not the files: a file's path follows from them (DatasetLayout), and a 300 000-view plan then holds
+        // 300 000 objects rather than 1.2 million (no path strings, no file objects until asked for).
+        readonly DatasetFileKind[] _kinds;
 
         /// <summary>When a dynamic capture renders this view (<see cref="TimePlanning"/>); null in a static capture.</summary>
         public ViewTime? Time { get; }
@@ -35,7 +41,16 @@ namespace NerfDatasetCreator
 
         public Matrix4x4d TransformMatrix { get; }
 
-        public IReadOnlyList<PlannedFile> Files { get; }
+        /// <summary>The files the view writes, colour first (made on each call).</summary>
+        public IReadOnlyList<PlannedFile> Files
+        {
+            get
+            {
+                var files = new PlannedFile[_kinds.Length];
+                for (var k = 0; k < files.Length; k++) files[k] = new PlannedFile(_kinds[k], DatasetLayout.RelativePath(Split, Index, _kinds[k]));
+                return files;
+            }
+        }
 
         /// <summary><c>r_7</c>.</summary>
         public string Stem => DatasetLayout.Stem(Index);
@@ -45,8 +60,8 @@ namespace NerfDatasetCreator
 
         public bool Writes(DatasetFileKind kind)
         {
-            foreach (var f in Files)
-                if (f.Kind == kind) return true;
+            for (var k = 0; k < _kinds.Length; k++)
+                if (_kinds[k] == kind) return true;
             return false;
         }
     }

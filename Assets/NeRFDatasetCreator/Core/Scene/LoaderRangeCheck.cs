@@ -20,22 +20,38 @@ namespace NerfDatasetCreator
         public static IReadOnlyList<ValidationProblem> Check(IEnumerable<Vector3d> cameraCentres, double targetRadius, Vector3d? targetCentre = null)
         {
             var centre = targetCentre ?? Vector3d.Zero;
-            var distances = cameraCentres.Select(c => Vector3d.Distance(c, centre)).ToList();
             var problems = new List<ValidationProblem>();
-            if (distances.Count == 0) return problems;
             var b = Math.Max(0, targetRadius);
-            var suggestion = SuggestedScaleText(distances, b);
+            // One pass without lists: a plan checks up to 300 000 cameras here.
+            int count = 0, nearCount = 0, farCount = 0;
+            double sum = 0, nearest = double.PositiveInfinity, farthest = double.NegativeInfinity;
+            foreach (var c in cameraCentres)
+            {
+                var d = Vector3d.Distance(c, centre);
+                count++;
+                sum += d;
+                if (d - b < SceneNormalisation.NerfNear)
+                {
+                    nearCount++;
+                    nearest = Math.Min(nearest, d);
+                }
+                if (d + b > SceneNormalisation.NerfFar)
+                {
+                    farCount++;
+                    farthest = Math.Max(farthest, d);
+                }
+            }
+            if (count == 0) return problems;
+            var suggestion = SuggestedScaleText(sum / count, b);
 
-            var tooNear = distances.Where(d => d - b < SceneNormalisation.NerfNear).ToList();
-            if (tooNear.Count > 0)
-                problems.Add(new ValidationProblem(Field + ".near", F(tooNear.Min() - b),
-                    $"{tooNear.Count} of {distances.Count} cameras are closer to the target's surface than NeRF's fixed near distance {F(SceneNormalisation.NerfNear)} (closest: {F(tooNear.Min() - b)} output units); bmild/nerf and nerf-pytorch will not see that part.",
+            if (nearCount > 0)
+                problems.Add(new ValidationProblem(Field + ".near", F(nearest - b),
+                    $"{nearCount} of {count} cameras are closer to the target's surface than NeRF's fixed near distance {F(SceneNormalisation.NerfNear)} (closest: {F(nearest - b)} output units); bmild/nerf and nerf-pytorch will not see that part.",
                     suggestion));
 
-            var tooFar = distances.Where(d => d + b > SceneNormalisation.NerfFar).ToList();
-            if (tooFar.Count > 0)
-                problems.Add(new ValidationProblem(Field + ".far", F(tooFar.Max() + b),
-                    $"{tooFar.Count} of {distances.Count} cameras see target surface beyond NeRF's fixed far distance {F(SceneNormalisation.NerfFar)} (farthest: {F(tooFar.Max() + b)} output units); bmild/nerf and nerf-pytorch will cut it off.",
+            if (farCount > 0)
+                problems.Add(new ValidationProblem(Field + ".far", F(farthest + b),
+                    $"{farCount} of {count} cameras see target surface beyond NeRF's fixed far distance {F(SceneNormalisation.NerfFar)} (farthest: {F(farthest + b)} output units); bmild/nerf and nerf-pytorch will cut it off.",
                     suggestion));
 
             var reach = centre.Length + b;
@@ -55,9 +71,8 @@ namespace NerfDatasetCreator
             Check(poses.Select(p => normalisation.ApplyToUnityPoint(p.Position)), targetRadiusUnity * normalisation.Scale,
                 normalisation.ApplyToUnityPoint(targetCentreUnity));
 
-        static string SuggestedScaleText(List<double> distances, double b)
+        static string SuggestedScaleText(double meanDistance, double b)
         {
-            var meanDistance = distances.Average();
             if (!(meanDistance > 0)) return "Move the cameras away from the target.";
             var s = SceneNormalisation.NerfSyntheticCameraRadius / meanDistance;
             var fits = b <= SceneNormalisation.PresetMaxTargetRadiusFraction * meanDistance;

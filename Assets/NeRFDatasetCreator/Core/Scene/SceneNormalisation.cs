@@ -75,6 +75,17 @@ namespace NerfDatasetCreator
         /// <summary>A Unity world point straight into the normalised output world.</summary>
         public Vector3d ApplyToUnityPoint(Vector3d unityPoint) => ApplyToPoint(BlenderConvention.FromUnity(unityPoint));
 
+        /// <summary>
+        /// A Unity camera pose as its normalised output c2w: the same matrix as
+        /// <c>ApplyToCameraToWorld(BlenderConvention.CameraToWorld(pose))</c> without the matrix in between (the plan makes one per view).
+        /// </summary>
+        public Matrix4x4d CameraToWorld(UnityPose pose)
+        {
+            var rotation = pose.Rotation;
+            return Matrix4x4d.FromColumns(BlenderConvention.FromUnity(rotation.Right), BlenderConvention.FromUnity(rotation.Up),
+                -BlenderConvention.FromUnity(rotation.Forward), ApplyToUnityPoint(pose.Position));
+        }
+
         /// <summary>A raw output c2w into the normalised world: same rotation, moved centre.</summary>
         public Matrix4x4d ApplyToCameraToWorld(Matrix4x4d rawCameraToWorld) => Matrix4x4d.FromColumns(
             rawCameraToWorld.Column(0), rawCameraToWorld.Column(1), rawCameraToWorld.Column(2),

@@ -1,5 +1,3 @@
-using Newtonsoft.Json;
-
 namespace NerfDatasetCreator
 {
     /// <summary>
@@ -14,20 +12,6 @@ namespace NerfDatasetCreator
         public const string Time = "time";
         public const string Seconds = "time_seconds";
         public const string Step = "time_step";
-        public const string Camera = "camera_id";
-
-        /// <summary>Writes a frame's time keys (after its transform_matrix): time and time_seconds, plus time_step and camera_id in multi-view.</summary>
-        public static void Write(JsonWriter w, ViewTime time)
-        {
-            w.WritePropertyName(Time);
-            JsonNumbers.Write(w, time.Normalised);
-            w.WritePropertyName(Seconds);
-            JsonNumbers.Write(w, time.Seconds);
-            if (time.Camera >= 0)
-            {
-                w.WritePropertyName(Step); w.WriteValue(time.Step);
-                w.WritePropertyName(Camera); w.WriteValue(time.Camera);
-            }
-        }
+        public const string Camera = "camera_id"; // written with the others by TransformsFramesText
     }
 }

@@ -130,7 +130,8 @@ namespace NerfDatasetCreator
         /// <summary>The views of a split whose formation places <paramref name="cameras"/> cameras (the split's count), in file order.</summary>
         public static IReadOnlyList<Slot> Slots(TimeRange range, DatasetSplit split, int cameras)
         {
-            var slots = new List<Slot>();
+            // Sized once: a split of 100 000 views would otherwise leave 8 MB of outgrown arrays on the large-object heap.
+            var slots = new List<Slot>(range != null && range.Mode == TimeMode.MultiView ? range.Steps * cameras : cameras);
             if (range == null)
             {
                 for (var i = 0; i < cameras; i++) slots.Add(new Slot(i, i, null));

@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Linq;
 using Newtonsoft.Json;
 
 namespace NerfDatasetCreator
@@ -37,7 +36,7 @@ namespace NerfDatasetCreator
 
         /// <summary>The same text as <see cref="Write(CapturePlan, DatasetSplit)"/>, streamed into <paramref name="output"/> (a file: no string of the whole file is built).</summary>
         public static void Write(CapturePlan plan, DatasetSplit split, System.IO.TextWriter output) =>
-            Write(plan.Intrinsics, plan.RotationOf(split), plan.ViewsOf(split).ToList(),
+            Write(plan.Intrinsics, plan.RotationOf(split), plan.Views, split,
                 ExtraOutputs.HasPng(plan.Settings.Split(split).Depth), plan.AabbScale, plan.Normalisation, output);
 
         /// <param name="aabbScale">instant-ngp's scene cube (<see cref="NerfDatasetCreator.AabbScale"/>); 1 for one object at nerf_synthetic's scale.</param>
@@ -47,19 +46,24 @@ namespace NerfDatasetCreator
         {
             using (var text = JsonNumbers.CreateText())
             {
-                Write(intrinsics, rotation, views, declareDepthScale, aabbScale, normalisation, text);
+                Write(intrinsics, rotation, views, null, declareDepthScale, aabbScale, normalisation, text);
                 return text.ToString();
             }
         }
 
-        static void Write(CameraIntrinsics intrinsics, double rotation, IReadOnlyList<PlannedView> views, bool declareDepthScale,
+        // The views of split (all views when null) among views: a plan's split is written without a list of its own.
+        static void Write(CameraIntrinsics intrinsics, double rotation, IReadOnlyList<PlannedView> views, DatasetSplit? split, bool declareDepthScale,
             int aabbScale, SceneNormalisation normalisation, System.IO.TextWriter text)
         {
             if (intrinsics == null) throw new ArgumentNullException(nameof(intrinsics));
-            var anyDepthPng = declareDepthScale || views.Any(v => v.Writes(DatasetFileKind.DepthPng));
+            var anyDepthPng = declareDepthScale;
+            for (var i = 0; i < views.Count && !anyDepthPng; i++)
+                anyDepthPng = (split == null || views[i].Split == split.Value) && views[i].Writes(DatasetFileKind.DepthPng);
             using (var w = JsonNumbers.CreateWriter(text, 4))
             {
-                w.CloseOutput = false; // the final line end follows
+                // Newtonsoft writes the keys before "frames"; TransformsFramesText writes the frames and closes the object.
+                w.CloseOutput = false;
+                w.AutoCompleteOnClose = false;
                 w.WriteStartObject();
                 Number(w, "camera_angle_x", intrinsics.CameraAngleX);
                 Number(w, "camera_angle_y", intrinsics.CameraAngleY);
@@ -80,44 +84,10 @@ namespace NerfDatasetCreator
                     w.WritePropertyName(SceneNormalisationKey);
                     JsonNumbers.WriteToken(w, normalisation.ToJson());
                 }
-                w.WritePropertyName("frames");
-                w.WriteStartArray();
-                foreach (var v in views) WriteFrame(w, v, rotation);
-                w.WriteEndArray();
-                w.WriteEndObject();
+                w.Flush();
             }
+            TransformsFramesText.Write(text, views, split, rotation);
             text.Write("\n");
-        }
-
-        static void WriteFrame(JsonWriter w, PlannedView v, double rotation)
-        {
-            if (!v.TransformMatrix.IsFinite)
-                throw new InvalidParameterException(new[]
-                {
-                    new ValidationProblem(DatasetSplits.Name(v.Split) + "[" + v.Index + "].transform_matrix", v.TransformMatrix.ToString(), // Matrix4x4d formats with the invariant culture
-                        "is not finite; JSON cannot hold it and every loader would fail.", "Check the settings that placed this camera."),
-                });
-            w.WriteStartObject();
-            w.WritePropertyName("file_path"); w.WriteValue(v.FramePath);
-            Number(w, "rotation", rotation);
-            w.WritePropertyName("transform_matrix");
-            WriteMatrix(w, v.TransformMatrix);
-            if (v.Time.HasValue) TimeKeys.Write(w, v.Time.Value);
-            if (v.Writes(DatasetFileKind.DepthPng))
-            {
-                var depth = DatasetLayout.FrameKeyPath(v.Split, v.Index, DatasetFileKind.DepthPng);
-                w.WritePropertyName("depth_path"); w.WriteValue(depth);
-                w.WritePropertyName("depth_file_path"); w.WriteValue(depth);
-            }
-            if (v.Writes(DatasetFileKind.NormalPng))
-            {
-                w.WritePropertyName("normal_path"); w.WriteValue(DatasetLayout.FrameKeyPath(v.Split, v.Index, DatasetFileKind.NormalPng));
-            }
-            if (v.Writes(DatasetFileKind.MaskPng))
-            {
-                w.WritePropertyName("mask_path"); w.WriteValue(DatasetLayout.FrameKeyPath(v.Split, v.Index, DatasetFileKind.MaskPng));
-            }
-            w.WriteEndObject();
         }
 
         /// <summary>A 4×4 matrix as nested rows, <c>transform_matrix[row][column]</c>.</summary>

@@ -16,6 +16,32 @@ namespace NerfDatasetCreator.Tests
             Assert.That(gray, Is.EqualTo(new byte[] { 64, 128, 191, 255 }));
         }
 
+        [TestCase(1, 2)]
+        [TestCase(4, 2)]
+        [TestCase(1, 3)]
+        [TestCase(4, 1)]
+        public void EverySupersamplingGivesTheRoundedMeanOfItsBlock(int bytesPerPixel, int k)
+        {
+            // Random coverage, against the definition written out here: round(sum / k²), halves up, top row first.
+            const int ow = 7, oh = 5;
+            var random = new SeededRandom(31 + k);
+            var frame = new RawFrame(ow * k, oh * k, k) { Mask = new byte[ow * k * oh * k * bytesPerPixel], MaskBytesPerPixel = bytesPerPixel };
+            for (var i = 0; i < frame.Mask.Length; i++) frame.Mask[i] = (byte)(random.NextUInt64() % 4 == 0 ? 255 : random.NextUInt64() % 256);
+            var gray = new byte[ow * oh];
+            MaskEncoding.Encode(frame, gray);
+            for (var oy = 0; oy < oh; oy++)
+                for (var ox = 0; ox < ow; ox++)
+                {
+                    var sum = 0;
+                    var sourceRow = (oh - 1 - oy) * k; // source rows are bottom-up
+                    for (var dy = 0; dy < k; dy++)
+                        for (var dx = 0; dx < k; dx++)
+                            sum += frame.Mask[((sourceRow + dy) * ow * k + ox * k + dx) * bytesPerPixel];
+                    var expected = (int)System.Math.Floor((double)sum / (k * k) + 0.5);
+                    Assert.That(gray[oy * ow + ox], Is.EqualTo(expected), "pixel " + ox + "," + oy);
+                }
+        }
+
         [Test]
         public void SingleChannelMaskIsRead()
         {

@@ -93,6 +93,42 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void FramesAreTheTextNewtonsoftWritesForTheSameTree()
+        {
+            // The frames are written by hand (TransformsFramesText); the reference is Newtonsoft's indented writer on
+            // the same JSON tree, every key kind included: time keys of a multi-view capture, depth, normal and mask paths.
+            var settings = new DatasetSettings { Seed = 5, Width = 16, Height = 16 };
+            settings.Train.Count = 3;
+            settings.Train.Depth = ExtraOutput.PngAndExr;
+            settings.Train.Normal = ExtraOutput.PngAndExr;
+            settings.Train.Mask = true;
+            settings.Val.Count = 2;
+            settings.Test.Count = 1;
+            settings.Time.Mode = TimeMode.MultiView;
+            settings.Time.StartSeconds = 2;
+            settings.Time.EndSeconds = 6;
+            settings.Time.Steps = 3;
+            var plans = new[] { CapturePlan.Build(settings, PlanTarget.AtOrigin), SmallPlan() };
+            foreach (var plan in plans)
+                foreach (var split in DatasetSplits.All)
+                {
+                    var ours = BlenderTransformsWriter.Write(plan, split);
+                    Assert.That(ours, Is.EqualTo(Reserialised(ours)), DatasetSplits.Name(split));
+                }
+            Assert.That(BlenderTransformsWriter.Write(plans[0], DatasetSplit.Train), Does.Contain("\"camera_id\": 2,").And.Contain("\"normal_path\": \"./train/r_8_normal_0000.png\""));
+            Assert.That(BlenderTransformsWriter.Write(plans[1], DatasetSplit.Val), Does.EndWith("\"frames\": []\n}\n"));
+        }
+
+        static string Reserialised(string json)
+        {
+            using (var text = JsonNumbers.CreateText())
+            {
+                using (var w = JsonNumbers.CreateWriter(text, 4)) JsonNumbers.WriteToken(w, JToken.Parse(json));
+                return text + "\n";
+            }
+        }
+
+        [Test]
         public void AnEmptySplitStillGetsAFileWithAnEmptyFrameList()
         {
             var val = JObject.Parse(BlenderTransformsWriter.Write(SmallPlan(), DatasetSplit.Val));
