@@ -157,7 +157,7 @@ namespace NerfDatasetCreator.Editor.Tests.CameraSources
         }
 
         [Test]
-        public void TheUsersSceneNeverMovesNorBecomesDirtyAndTwoRunsAreEqual()
+        public void TheUsersCameraNeverMovesNoUserObjectChangesAndTwoRunsAreEqual()
         {
             var scene = TestScene.Open();
             try
