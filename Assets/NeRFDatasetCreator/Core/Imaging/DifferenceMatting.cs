@@ -123,15 +123,11 @@ namespace NerfDatasetCreator
             }
         }
 
-        // Half bits: 1.0, and the exponent field (all ones: infinity or NaN).
-        const int HalfOne = 0x3C00, HalfExponent = 0x7C00;
-
         /// <summary>
         /// The transparent-background, linear-light case of <see cref="Resolve"/> (a Linear project's capture), with
-        /// the same arithmetic in the same order, so the bytes are identical: written out without calls (Mono does not
-        /// inline small methods) and, for k = 2, two whole-block tests first — the background (black over black, white
-        /// over white: alpha 0, written as 0,0,0,0) and fully covered blocks (both renders equal, finite: alpha 1,
-        /// T = 0, so each premultiplied colour is K itself and the colour is the mean of K).
+        /// the same arithmetic in the same order, so the bytes are identical, written out without calls (Mono does not
+        /// inline small methods). k = 2 on a little-endian machine — the default capture — takes
+        /// <see cref="ResolveTransparentLinearTwoByTwo"/> instead.
         /// </summary>
         static void ResolveTransparentLinear(ushort[] black, ushort[] white, byte[] rgba, int k, int width, int ow, int oh)
         {
@@ -139,7 +135,6 @@ namespace NerfDatasetCreator
             byte[] encodeTable = Srgb.EncodeBucketLookup;
             float[] threshold = Srgb.EncodeThresholdLookup;
             float inverseSamples = 1f / (k * k);
-            int rowStride = width * 4;
             for (int oy = 0; oy < oh; oy++)
             {
                 int blockRow = RowOrder.SourceBlockRow(oy, oh, k);
@@ -148,48 +143,7 @@ namespace NerfDatasetCreator
                 {
                     int first = blockRow * width + ox * k;
                     float alphaSum = 0, r = 0, g = 0, b = 0;
-                    if (k == 2)
-                    {
-                        int c0 = first * 4, c1 = c0 + rowStride;
-                        if ((black[c0] | black[c0 + 1] | black[c0 + 2] | black[c0 + 4] | black[c0 + 5] | black[c0 + 6]
-                             | black[c1] | black[c1 + 1] | black[c1 + 2] | black[c1 + 4] | black[c1 + 5] | black[c1 + 6]) == 0
-                            && white[c0] == HalfOne && white[c0 + 1] == HalfOne && white[c0 + 2] == HalfOne
-                            && white[c0 + 4] == HalfOne && white[c0 + 5] == HalfOne && white[c0 + 6] == HalfOne
-                            && white[c1] == HalfOne && white[c1 + 1] == HalfOne && white[c1 + 2] == HalfOne
-                            && white[c1 + 4] == HalfOne && white[c1 + 5] == HalfOne && white[c1 + 6] == HalfOne)
-                        {
-                            rgba[o] = rgba[o + 1] = rgba[o + 2] = rgba[o + 3] = 0;
-                            continue;
-                        }
-                        if (white[c0] == black[c0] && white[c0 + 1] == black[c0 + 1] && white[c0 + 2] == black[c0 + 2]
-                            && white[c0 + 4] == black[c0 + 4] && white[c0 + 5] == black[c0 + 5] && white[c0 + 6] == black[c0 + 6]
-                            && white[c1] == black[c1] && white[c1 + 1] == black[c1 + 1] && white[c1 + 2] == black[c1 + 2]
-                            && white[c1 + 4] == black[c1 + 4] && white[c1 + 5] == black[c1 + 5] && white[c1 + 6] == black[c1 + 6]
-                            && ((black[c0] & HalfExponent) != HalfExponent) && ((black[c0 + 1] & HalfExponent) != HalfExponent)
-                            && ((black[c0 + 2] & HalfExponent) != HalfExponent) && ((black[c0 + 4] & HalfExponent) != HalfExponent)
-                            && ((black[c0 + 5] & HalfExponent) != HalfExponent) && ((black[c0 + 6] & HalfExponent) != HalfExponent)
-                            && ((black[c1] & HalfExponent) != HalfExponent) && ((black[c1 + 1] & HalfExponent) != HalfExponent)
-                            && ((black[c1 + 2] & HalfExponent) != HalfExponent) && ((black[c1 + 4] & HalfExponent) != HalfExponent)
-                            && ((black[c1 + 5] & HalfExponent) != HalfExponent) && ((black[c1 + 6] & HalfExponent) != HalfExponent))
-                        {
-                            // Per sample a = 1, t = 0 and (K + K + 0 − 0)·0.5 = K exactly; sums from +0 in the same order.
-                            r += half[black[c0]];
-                            g += half[black[c0 + 1]];
-                            b += half[black[c0 + 2]];
-                            r += half[black[c0 + 4]];
-                            g += half[black[c0 + 5]];
-                            b += half[black[c0 + 6]];
-                            r += half[black[c1]];
-                            g += half[black[c1 + 1]];
-                            b += half[black[c1 + 2]];
-                            r += half[black[c1 + 4]];
-                            g += half[black[c1 + 5]];
-                            b += half[black[c1 + 6]];
-                            alphaSum = 4;
-                        }
-                        else SumSamples(black, white, half, first, width, k, ref alphaSum, ref r, ref g, ref b);
-                    }
-                    else SumSamples(black, white, half, first, width, k, ref alphaSum, ref r, ref g, ref b);
+                    SumSamples(black, white, half, first, width, k, ref alphaSum, ref r, ref g, ref b);
 
                     // round(255·mean alpha), halves up.
                     int alpha = (int)(alphaSum * inverseSamples * 255f + 0.5f);
