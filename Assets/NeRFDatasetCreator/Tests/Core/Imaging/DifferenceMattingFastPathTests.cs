@@ -58,6 +58,77 @@ namespace NerfDatasetCreator.Tests
             Assert.That(Array.FindAll(fast, b => b != 0).Length, Is.GreaterThan(fast.Length / 4), "the inputs cover something");
         }
 
+        /// <summary>
+        /// The k = 2 path tests a block's four samples as 64-bit words (R, G, B in the low 48 bits; alpha ignored) and
+        /// the exponent fields of three lanes at once: every lane of every sample must count. Background and fully
+        /// covered blocks with exactly one half changed — one bit of one lane of one sample, or one lane set to an
+        /// infinity, a NaN, the largest finite half, −0 or a subnormal — give the bytes of the per-sample loop.
+        /// </summary>
+        [Test]
+        public void TwoByTwoWordTestsSeeEveryLaneOfEverySample()
+        {
+            const int k = 2;
+            ushort[] specials = { 0x7C00, 0xFC00, 0x7E00, 0x7C01, 0xFFFF, 0x7BFF, 0xFBFF, 0x8000, 0x0001, 0x3C00, 0x0000 };
+            int cases = 4 * 4 * (16 * 2 + specials.Length * 2) + 8; // sample × lane (alpha included) × changes, + plain blocks
+            int outputWidth = 41, outputHeight = (cases + outputWidth - 1) / outputWidth;
+            var frame = new RawFrame(outputWidth * k, outputHeight * k, k);
+            frame.ColorOverBlack = new ushort[frame.Width * frame.Height * 4];
+            frame.ColorOverWhite = new ushort[frame.Width * frame.Height * 4];
+            var random = new SeededRandom(11);
+            int block = 0;
+            void Block(bool covered, int sample, int lane, bool inWhite, Func<ushort, ushort> change)
+            {
+                int ox = block % outputWidth, oy = block / outputWidth;
+                block++;
+                for (int s = 0; s < 4; s++)
+                {
+                    int p = ((oy * k + s / 2) * frame.Width + ox * k + s % 2) * 4;
+                    for (int c = 0; c < 4; c++)
+                    {
+                        ushort value = (ushort)(0x3000 | (int)(random.NextUInt64() % 0xC00));
+                        frame.ColorOverBlack[p + c] = covered ? value : (ushort)0;
+                        frame.ColorOverWhite[p + c] = covered ? value : (ushort)0x3C00;
+                        if (c == 3) frame.ColorOverWhite[p + c] = (ushort)random.NextUInt64(); // alpha: anything
+                    }
+                    if (s == sample && change != null)
+                    {
+                        ushort[] target = inWhite ? frame.ColorOverWhite : frame.ColorOverBlack;
+                        target[p + lane] = change(target[p + lane]);
+                    }
+                }
+            }
+            for (int sample = 0; sample < 4; sample++)
+                for (int lane = 0; lane < 4; lane++)
+                {
+                    for (int bit = 0; bit < 16; bit++)
+                    {
+                        int flip = 1 << bit;
+                        Block(false, sample, lane, bit % 2 == 0, v => (ushort)(v ^ flip));
+                        Block(true, sample, lane, bit % 2 == 1, v => (ushort)(v ^ flip));
+                    }
+                    foreach (ushort special in specials)
+                    {
+                        Block(false, sample, lane, false, v => special);
+                        int before = block;
+                        Block(true, sample, lane, false, v => special);
+                        // The same special value in both renders: still "equal", so only the exponent test can reject it.
+                        int ox = before % outputWidth, oy = before / outputWidth;
+                        int p = ((oy * k + sample / 2) * frame.Width + ox * k + sample % 2) * 4 + lane;
+                        frame.ColorOverWhite[p] = frame.ColorOverBlack[p];
+                    }
+                }
+            for (int i = 0; i < 4; i++)
+            {
+                Block(false, 0, 0, false, null);
+                Block(true, 0, 0, false, null);
+            }
+            Assert.That(block, Is.EqualTo(cases));
+
+            var fast = new byte[outputWidth * outputHeight * 4];
+            DifferenceMatting.Resolve(frame, fast);
+            Assert.That(fast, Is.EqualTo(Reference(frame)));
+        }
+
         static void Fill(int kind, int channel, SeededRandom random, out ushort black, out ushort white)
         {
             ushort any = (ushort)random.NextUInt64();

@@ -46,6 +46,55 @@ namespace NerfDatasetCreator.Tests
             Assert.That(rgb, Is.EqualTo(new byte[] { 128, 128, 255, 0, 0, 0 }));
         }
 
+        /// <summary>
+        /// At supersampling 1 every pixel is <see cref="NormalEncoding.Component"/> of its own sample, or (0,0,0) where
+        /// the sample's squared length is not above 0.25 (NaN included) — whatever the width, the stride and the frame
+        /// (the loop is written out for Mono); checked pixel by pixel on random unit normals mixed with background,
+        /// ±1 exactly, values beyond ±1, infinities, NaN and short vectors.
+        /// </summary>
+        [TestCase(1, 1, 4, false)]
+        [TestCase(3, 5, 4, true)]
+        [TestCase(4, 3, 4, true)]
+        [TestCase(4, 1, 3, false)]
+        [TestCase(8, 7, 3, true)]
+        [TestCase(13, 4, 4, false)]
+        [TestCase(64, 9, 4, true)]
+        [TestCase(36, 6, 3, false)]
+        public void OneSamplePerPixelGivesEachPixelsComponents(int w, int h, int stride, bool unityWorld)
+        {
+            var random = new SeededRandom(w * 100 + h * 10 + stride);
+            float[] specials = { 1f, -1f, 1.0000001f, -1.0000001f, 0.99999994f, -0.99999994f, 0f, -0f, 2f, -3f,
+                float.PositiveInfinity, float.NegativeInfinity, float.NaN, 0.003921f, -0.003922f };
+            var normals = new float[w * h * stride];
+            for (int p = 0; p < w * h; p++)
+            {
+                int kind = (int)(random.NextUInt64() % 4);
+                for (int c = 0; c < stride; c++)
+                {
+                    float v = (float)(random.NextDouble() * 2 - 1);
+                    if (kind == 0) v = 0; // background
+                    else if (kind == 1) v = specials[random.NextUInt64() % (ulong)specials.Length];
+                    else if (kind == 2) v *= 0.4f; // short: background unless long enough
+                    normals[p * stride + c] = v;
+                }
+            }
+            var rgb = new byte[w * h * 3];
+            NormalEncoding.Encode(new RawFrame(w, h, 1) { Normals = normals, NormalFloatsPerPixel = stride, NormalsInUnityWorld = unityWorld }, rgb);
+
+            int yAt = unityWorld ? 2 : 1, zAt = unityWorld ? 1 : 2, covered = 0;
+            for (int oy = 0; oy < h; oy++)
+                for (int ox = 0; ox < w; ox++)
+                {
+                    int n = ((h - 1 - oy) * w + ox) * stride, o = (oy * w + ox) * 3;
+                    float x = normals[n], y = normals[n + yAt], z = normals[n + zAt];
+                    bool surface = x * x + y * y + z * z > 0.25f;
+                    if (surface) covered++;
+                    var expected = surface ? new[] { NormalEncoding.Component(x), NormalEncoding.Component(y), NormalEncoding.Component(z) } : new byte[3];
+                    Assert.That(new[] { rgb[o], rgb[o + 1], rgb[o + 2] }, Is.EqualTo(expected), $"pixel ({ox}, {oy}) from ({x}, {y}, {z})");
+                }
+            if (w * h >= 16) Assert.That(covered, Is.InRange(1, w * h - 1), "the input mixes surface and background");
+        }
+
         [TestCase(1)]
         [TestCase(2)]
         public void UnityWorldNormalsGiveTheSameBytesAsRelabellingFirst(int k)
