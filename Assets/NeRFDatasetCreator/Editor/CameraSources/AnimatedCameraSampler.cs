@@ -2,11 +2,8 @@ using System;
 using System.Collections.Generic;
 using System.Reflection;
 using UnityEditor;
-using UnityEditor.SceneManagement;
 using UnityEngine;
 using UnityEngine.Playables;
-using UnityEngine.SceneManagement;
-using Object = UnityEngine.Object;
 
 namespace NerfDatasetCreator.Editor
 {
@@ -111,20 +108,9 @@ namespace NerfDatasetCreator.Editor
             problem = null;
             var relative = RelativePath(root.transform, camera.transform);
             var name = SceneObjectPath.Of(camera.gameObject);
-            var scene = EditorSceneManager.NewPreviewScene();
-            GameObject holder = null;
-            try
+            using (var sceneCopy = SceneCopy.OfObject(root, "animated camera"))
             {
-                // As TimeMeasurement and CaptureStage: copied under an inactive holder, scripts off before it is activated.
-                holder = EditorUtility.CreateGameObjectWithHideFlags("NeRF Dataset Creator animated camera", HideFlags.HideAndDontSave);
-                SceneManager.MoveGameObjectToScene(holder, scene);
-                holder.SetActive(false);
-                var copy = Object.Instantiate(root, holder.transform, true);
-                foreach (var t in copy.GetComponentsInChildren<Transform>(true)) t.gameObject.hideFlags = HideFlags.HideAndDontSave;
-                foreach (var script in copy.GetComponentsInChildren<MonoBehaviour>(true))
-                    if (script != null) script.enabled = false;
-                copy.SetActive(true);
-                holder.SetActive(true);
+                var copy = sceneCopy.Root;
                 var copiedTransform = relative.Length == 0 ? copy.transform : copy.transform.Find(relative);
                 var copied = copiedTransform == null ? null : copiedTransform.GetComponent<Camera>();
                 if (copied == null) throw new InvalidOperationException("The copy of " + name + " was not found at " + relative + ".");
@@ -138,11 +124,6 @@ namespace NerfDatasetCreator.Editor
                     result.Add(new SceneCamera(name + " @ " + time.ToString("0.####", System.Globalization.CultureInfo.InvariantCulture) + " s", read.Pose, read.VerticalFovDegrees));
                 }
                 return result;
-            }
-            finally
-            {
-                EditorSceneManager.ClosePreviewScene(scene);
-                if (holder != null) Object.DestroyImmediate(holder);
             }
         }
 

@@ -20,7 +20,8 @@ namespace NerfDatasetCreator.Editor
     /// references (<c>m_ExposedReferences</c>, the table <c>SetReferenceValue</c> fills, Modules/Director/ScriptBindings/
     /// PlayableDirector.bindings.cs:95). A scene holds no serialized reference into another scene, so one scene's roots are
     /// a closed set. The user's objects are only read; the copies are built under an inactive holder and scripts are
-    /// disabled (all but those <paramref name="keepEnabled"/> accepts) before anything is activated, as the capture does.
+    /// disabled (all but those the caller keeps) before anything is activated, as the capture does. <see cref="OfObject"/> is the
+    /// same for one object, for the dynamic capture's measurement and the animated-camera sampler.
     /// </summary>
     sealed class SceneCopy : IDisposable
     {
@@ -32,12 +33,9 @@ namespace NerfDatasetCreator.Editor
 
         public static SceneCopy Of(Scene scene, Func<MonoBehaviour, bool> keepEnabled)
         {
-            var copy = new SceneCopy { Preview = EditorSceneManager.NewPreviewScene() };
+            var copy = Begin("NeRF Dataset Creator scene copy");
             try
             {
-                copy.Holder = EditorUtility.CreateGameObjectWithHideFlags("NeRF Dataset Creator scene copy", HideFlags.HideAndDontSave);
-                SceneManager.MoveGameObjectToScene(copy.Holder, copy.Preview);
-                copy.Holder.SetActive(false);
                 var pairs = new List<KeyValuePair<GameObject, GameObject>>();
                 foreach (var root in scene.GetRootGameObjects())
                 {
@@ -47,12 +45,7 @@ namespace NerfDatasetCreator.Editor
                     copy.Map(root, clone);
                 }
                 copy.Remap();
-                foreach (var pair in pairs)
-                {
-                    foreach (var t in pair.Value.GetComponentsInChildren<Transform>(true)) t.gameObject.hideFlags = HideFlags.HideAndDontSave;
-                    foreach (var script in pair.Value.GetComponentsInChildren<MonoBehaviour>(true))
-                        if (script != null && !keepEnabled(script)) script.enabled = false;
-                }
+                foreach (var pair in pairs) Quiet(pair.Value, keepEnabled);
                 copy.Holder.SetActive(true);
                 return copy;
             }
@@ -61,6 +54,58 @@ namespace NerfDatasetCreator.Editor
                 copy.Dispose();
                 throw;
             }
+        }
+
+        /// <summary>
+        /// A copy of one object and its children (<see cref="Root"/>), active even if the original is not, every script
+        /// disabled: what the dynamic capture's measurement and the animated-camera sampler pose with
+        /// <see cref="ContentClock"/>. References inside the hierarchy are remapped by <c>Object.Instantiate</c> itself.
+        /// </summary>
+        public static SceneCopy OfObject(GameObject original, string purpose)
+        {
+            var copy = Begin("NeRF Dataset Creator " + purpose);
+            try
+            {
+                copy.Root = Object.Instantiate(original, copy.Holder.transform, true);
+                Quiet(copy.Root, script => false);
+                copy.Root.SetActive(true);
+                copy.Holder.SetActive(true);
+                return copy;
+            }
+            catch
+            {
+                copy.Dispose();
+                throw;
+            }
+        }
+
+        /// <summary>The copied object of <see cref="OfObject"/>.</summary>
+        public GameObject Root { get; private set; }
+
+        /// <summary>A preview scene with an inactive holder: nothing copied under it wakes before its scripts are off.</summary>
+        static SceneCopy Begin(string holderName)
+        {
+            var copy = new SceneCopy { Preview = EditorSceneManager.NewPreviewScene() };
+            try
+            {
+                copy.Holder = EditorUtility.CreateGameObjectWithHideFlags(holderName, HideFlags.HideAndDontSave);
+                SceneManager.MoveGameObjectToScene(copy.Holder, copy.Preview);
+                copy.Holder.SetActive(false);
+                return copy;
+            }
+            catch
+            {
+                copy.Dispose();
+                throw;
+            }
+        }
+
+        /// <summary>Hides the copied objects and disables every script <paramref name="keepEnabled"/> does not accept.</summary>
+        static void Quiet(GameObject clone, Func<MonoBehaviour, bool> keepEnabled)
+        {
+            foreach (var t in clone.GetComponentsInChildren<Transform>(true)) t.gameObject.hideFlags = HideFlags.HideAndDontSave;
+            foreach (var script in clone.GetComponentsInChildren<MonoBehaviour>(true))
+                if (script != null && !keepEnabled(script)) script.enabled = false;
         }
 
         /// <summary>The copy of a user's object (GameObject or component), or null.</summary>

@@ -2,9 +2,7 @@ using System;
 using System.Collections.Generic;
 using NerfDatasetCreator.Editor.Capture;
 using UnityEditor;
-using UnityEditor.SceneManagement;
 using UnityEngine;
-using UnityEngine.SceneManagement;
 using Object = UnityEngine.Object;
 
 namespace NerfDatasetCreator.Editor
@@ -96,27 +94,7 @@ namespace NerfDatasetCreator.Editor
         /// <summary>Runs <paramref name="use"/> on a temporary copy of the target in a preview scene, scripts off, then destroys it.</summary>
         static T WithCopy<T>(GameObject target, Func<GameObject, T> use)
         {
-            var scene = EditorSceneManager.NewPreviewScene();
-            GameObject holder = null;
-            try
-            {
-                // As CaptureStage: copied under an inactive holder, scripts off before it is activated.
-                holder = EditorUtility.CreateGameObjectWithHideFlags("NeRF Dataset Creator time copy", HideFlags.HideAndDontSave);
-                SceneManager.MoveGameObjectToScene(holder, scene);
-                holder.SetActive(false);
-                var copy = Object.Instantiate(target, holder.transform, true);
-                foreach (var t in copy.GetComponentsInChildren<Transform>(true)) t.gameObject.hideFlags = HideFlags.HideAndDontSave;
-                foreach (var script in copy.GetComponentsInChildren<MonoBehaviour>(true))
-                    if (script != null) script.enabled = false;
-                copy.SetActive(true);
-                holder.SetActive(true);
-                return use(copy);
-            }
-            finally
-            {
-                EditorSceneManager.ClosePreviewScene(scene);
-                if (holder != null) Object.DestroyImmediate(holder);
-            }
+            using (var copy = SceneCopy.OfObject(target, "time copy")) return use(copy.Root);
         }
 
         /// <summary>
