@@ -59,11 +59,32 @@ namespace NerfDatasetCreator
                 for (int ox = 0; ox < ow; ox++, n += stride, o += 3)
                 {
                     float x = normals[n], y = normals[n + yAt], z = normals[n + zAt];
-                    if (!(x * x + y * y + z * z > 0.25f))
+                    float lengthSquared = x * x + y * y + z * z;
+                    if (!(lengthSquared > 0.25f))
                     {
                         rgb[o] = 0;
                         rgb[o + 1] = 0;
                         rgb[o + 2] = 0;
+                        continue;
+                    }
+                    if (lengthSquared < 4f)
+                    {
+                        // Every component is in (−2, 2), so v·127.5 + 128 is in (−127, 383): truncated to an int and
+                        // clamped to [0, 255] in integers it is Component(v) exactly (v ≤ −1 gives at most 0.5 → 0,
+                        // v ≥ 1 at least 255.5 → 255). Integer tests rather than two float tests per component: Mono
+                        // keeps floats on the stack and pays for each float comparison and conditional.
+                        int c = (int)(x * 127.5f + 128f);
+                        if (c < 0) c = 0;
+                        else if (c > 255) c = 255;
+                        rgb[o] = (byte)c;
+                        c = (int)(y * 127.5f + 128f);
+                        if (c < 0) c = 0;
+                        else if (c > 255) c = 255;
+                        rgb[o + 1] = (byte)c;
+                        c = (int)(z * 127.5f + 128f);
+                        if (c < 0) c = 0;
+                        else if (c > 255) c = 255;
+                        rgb[o + 2] = (byte)c;
                         continue;
                     }
                     rgb[o] = !(x > -1) ? (byte)0 : x >= 1 ? (byte)255 : (byte)(x * 127.5f + 128f);
