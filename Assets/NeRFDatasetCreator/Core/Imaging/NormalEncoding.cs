@@ -21,7 +21,7 @@ namespace NerfDatasetCreator
             int yAt = frame.NormalsInUnityWorld ? 2 : 1, zAt = 3 - yAt;
             if (frame.Supersampling == 1)
             {
-                EncodeOneSamplePerPixel(normals, stride, yAt, zAt, ow, oh, rgb);
+                EncodeOneSamplePerPixel(frame, rgb);
                 return;
             }
             int[] order = PointSampling.Order(frame.Supersampling, frame.Width);
@@ -50,8 +50,12 @@ namespace NerfDatasetCreator
         /// Supersampling 1 — the capture renders its data passes at the output size — so each pixel is its own
         /// sample: one flat loop with <see cref="Component"/> written out, because Mono does not inline it.
         /// </summary>
-        static void EncodeOneSamplePerPixel(float[] normals, int stride, int yAt, int zAt, int ow, int oh, byte[] rgb)
+        static void EncodeOneSamplePerPixel(RawFrame frame, byte[] rgb)
         {
+            // Read here rather than passed in: with fewer parameters Mono keeps the loop's indices in registers.
+            float[] normals = frame.Normals;
+            int ow = frame.OutputWidth, oh = frame.OutputHeight, stride = frame.NormalFloatsPerPixel;
+            int yAt = frame.NormalsInUnityWorld ? 2 : 1, zAt = 3 - yAt;
             for (int oy = 0; oy < oh; oy++)
             {
                 int n = (oh - 1 - oy) * ow * stride; // source rows are bottom-up
@@ -87,9 +91,9 @@ namespace NerfDatasetCreator
                         rgb[o + 2] = (byte)c;
                         continue;
                     }
-                    rgb[o] = !(x > -1) ? (byte)0 : x >= 1 ? (byte)255 : (byte)(x * 127.5f + 128f);
-                    rgb[o + 1] = !(y > -1) ? (byte)0 : y >= 1 ? (byte)255 : (byte)(y * 127.5f + 128f);
-                    rgb[o + 2] = !(z > -1) ? (byte)0 : z >= 1 ? (byte)255 : (byte)(z * 127.5f + 128f);
+                    rgb[o] = !(x > -1) ? (byte)0 : x >= 1 ? (byte)255 : (byte)(int)(x * 127.5f + 128f);
+                    rgb[o + 1] = !(y > -1) ? (byte)0 : y >= 1 ? (byte)255 : (byte)(int)(y * 127.5f + 128f);
+                    rgb[o + 2] = !(z > -1) ? (byte)0 : z >= 1 ? (byte)255 : (byte)(int)(z * 127.5f + 128f);
                 }
             }
         }
