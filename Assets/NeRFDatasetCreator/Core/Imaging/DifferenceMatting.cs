@@ -264,13 +264,28 @@ namespace NerfDatasetCreator
                 int e;
                 float v = r * unpremultiply;
                 if (v >= 1) pixel |= 255;
-                else if (v > 0) { e = encodeTable[(int)(v * Srgb.EncodeBucketScale)]; pixel |= v >= threshold[e + 1] ? (uint)(e + 1) : (uint)e; }
+                else if (v > 0)
+                {
+                    e = encodeTable[(int)(v * Srgb.EncodeBucketScale)];
+                    if (v >= threshold[e + 1]) e++;
+                    pixel |= (uint)e;
+                }
                 v = g * unpremultiply;
                 if (v >= 1) pixel |= 255 << 8;
-                else if (v > 0) { e = encodeTable[(int)(v * Srgb.EncodeBucketScale)]; pixel |= (v >= threshold[e + 1] ? (uint)(e + 1) : (uint)e) << 8; }
+                else if (v > 0)
+                {
+                    e = encodeTable[(int)(v * Srgb.EncodeBucketScale)];
+                    if (v >= threshold[e + 1]) e++;
+                    pixel |= (uint)e << 8;
+                }
                 v = b * unpremultiply;
                 if (v >= 1) pixel |= 255 << 16;
-                else if (v > 0) { e = encodeTable[(int)(v * Srgb.EncodeBucketScale)]; pixel |= (v >= threshold[e + 1] ? (uint)(e + 1) : (uint)e) << 16; }
+                else if (v > 0)
+                {
+                    e = encodeTable[(int)(v * Srgb.EncodeBucketScale)];
+                    if (v >= threshold[e + 1]) e++;
+                    pixel |= (uint)e << 16;
+                }
                 pixels[o] = pixel;
             }
         }
