@@ -25,7 +25,7 @@ namespace NerfDatasetCreator
 
             int k = frame.Supersampling, width = frame.Width, clamped = 0;
             float[] depth = frame.Depth;
-            if (k == 1) return MillimetresOneSamplePerPixel(depth, ow, oh, scale, millimetres);
+            if (k == 1) return MillimetresOneSamplePerPixel(frame, millimetres, scale);
             int[] order = PointSampling.Order(k, width);
 
             for (int oy = 0; oy < oh; oy++)
@@ -54,28 +54,34 @@ namespace NerfDatasetCreator
         /// Supersampling 1 (the capture renders its data passes at the output size): each pixel is its own sample, so
         /// the loop needs no sampling order and no helper calls, which Mono would not inline. Same values as above.
         /// </summary>
-        static int MillimetresOneSamplePerPixel(float[] depth, int ow, int oh, double scale, ushort[] millimetres)
+        static int MillimetresOneSamplePerPixel(RawFrame frame, ushort[] millimetres, double scale)
         {
-            int clamped = 0;
+            // Fields read here rather than passed in, one index per array, truncation through int: each measured
+            // faster on Mono (fewer spilled locals), same values.
+            float[] depth = frame.Depth;
+            int ow = frame.OutputWidth, oh = frame.OutputHeight, clamped = 0;
             bool unscaled = scale == 1;
             for (int oy = 0; oy < oh; oy++)
             {
                 int d = (oh - 1 - oy) * ow; // source rows are bottom-up
                 int o = oy * ow;
-                for (int ox = 0; ox < ow; ox++)
+                for (int end = o + ow; o < end; o++, d++)
                 {
-                    float z = depth[d + ox];
+                    float z = depth[d];
                     if (!unscaled) z = (float)(z * scale);
-                    ushort mm;
-                    if (!(z > 0)) mm = 0;
-                    else
+                    if (!(z > 0))
                     {
-                        float scaled = z * 1000f + 0.5f;
-                        if (scaled >= 65536f) { mm = 65535; clamped++; }
-                        else if (scaled < 2f) mm = 1;
-                        else mm = (ushort)scaled;
+                        millimetres[o] = 0;
+                        continue;
                     }
-                    millimetres[o + ox] = mm;
+                    float scaled = z * 1000f + 0.5f;
+                    if (scaled >= 65536f)
+                    {
+                        millimetres[o] = 65535;
+                        clamped++;
+                    }
+                    else if (scaled < 2f) millimetres[o] = 1;
+                    else millimetres[o] = (ushort)(int)scaled;
                 }
             }
             return clamped;

@@ -47,7 +47,10 @@ namespace NerfDatasetCreator
             if (!background.IsSolid && !frame.ColorIsGammaEncoded)
             {
                 // One RGBA half pixel is one 64-bit word on a little-endian machine (every Unity editor platform).
-                if (k == 2 && System.BitConverter.IsLittleEndian) ResolveTransparentLinearTwoByTwo(black, white, rgba, width, ow, oh);
+                // Several blocks at a time where Vector<T> is accelerated (.NET); Mono, Unity's runtime, takes the scalar path.
+                if (k == 2 && System.BitConverter.IsLittleEndian && System.Numerics.Vector.IsHardwareAccelerated)
+                    DifferenceMattingVectors.ResolveTransparentLinearTwoByTwo(black, white, rgba, width, ow, oh);
+                else if (k == 2 && System.BitConverter.IsLittleEndian) ResolveTransparentLinearTwoByTwo(black, white, rgba, width, ow, oh);
                 else ResolveTransparentLinear(black, white, rgba, k, width, ow, oh);
                 return;
             }
@@ -175,15 +178,12 @@ namespace NerfDatasetCreator
         // The R, G, B halves of one RGBA half pixel read as a little-endian 64-bit word (alpha, the top 16 bits, is
         // ignored); white's RGB; each lane's exponent field; the carry that reaches a lane's top bit only from an
         // all-ones exponent (infinity or NaN).
-        const ulong RgbLanes = 0xFFFF_FFFF_FFFF, WhiteRgb = 0x3C00_3C00_3C00, ExponentLanes = 0x7C00_7C00_7C00,
+        internal const ulong RgbLanes = 0xFFFF_FFFF_FFFF, WhiteRgb = 0x3C00_3C00_3C00, ExponentLanes = 0x7C00_7C00_7C00,
             ExponentCarry = 0x0400_0400_0400, LaneTops = 0x8000_8000_8000;
 
         /// <summary>
-        /// <see cref="ResolveTransparentLinear"/> for k = 2 (the default capture), with the same bytes: each sample is
-        /// read as one 64-bit word (<see cref="System.Runtime.InteropServices.MemoryMarshal.Cast{TFrom,TTo}(System.Span{TFrom})"/>,
-        /// no copy, no unsafe code), so the background test (black RGB all +0, white RGB all 1) and the fully covered
-        /// test (equal RGB, no infinite or NaN lane, tested for three lanes at once) are 8 loads and a few ALU
-        /// operations per block instead of 24 to 48 loads; the covered block's halves come from the words already read.
+        /// <see cref="ResolveTransparentLinear"/> for k = 2 (the default capture), with the same bytes, one output row
+        /// at a time through <see cref="TwoByTwoRun"/>.
         /// </summary>
         static void ResolveTransparentLinearTwoByTwo(ushort[] black, ushort[] white, byte[] rgba, int width, int ow, int oh)
         {
@@ -191,76 +191,102 @@ namespace NerfDatasetCreator
             System.Span<ulong> whiteWords = System.Runtime.InteropServices.MemoryMarshal.Cast<ushort, ulong>(new System.Span<ushort>(white));
             // One output pixel R, G, B, A is one little-endian 32-bit word.
             System.Span<uint> pixels = System.Runtime.InteropServices.MemoryMarshal.Cast<byte, uint>(new System.Span<byte>(rgba));
+            for (int oy = 0; oy < oh; oy++)
+                TwoByTwoRun(black, white, blackWords, whiteWords, pixels, RowOrder.SourceBlockRow(oy, oh, 2) * width, width, oy * ow, ow);
+        }
+
+        /// <summary>
+        /// <paramref name="count"/> output pixels from <paramref name="o"/> on, whose first block starts at sample
+        /// <paramref name="first"/> (the next ones 2 samples apart): each sample is read as one 64-bit word
+        /// (<see cref="System.Runtime.InteropServices.MemoryMarshal.Cast{TFrom,TTo}(System.Span{TFrom})"/>, no copy, no
+        /// unsafe code), so the background test (black RGB all +0, white RGB all 1) and the fully covered test (equal
+        /// RGB, no infinite or NaN lane, tested for three lanes at once) are 8 loads and a few ALU operations per block
+        /// instead of 24 to 48 loads; the covered block's halves come from the words already read. Written out without
+        /// calls: Mono does not inline.
+        /// </summary>
+        internal static void TwoByTwoRun(ushort[] black, ushort[] white, System.Span<ulong> blackWords, System.Span<ulong> whiteWords,
+            System.Span<uint> pixels, int first, int width, int o, int count)
+        {
             float[] half = HalfFloat.Lookup;
             byte[] encodeTable = Srgb.EncodeBucketLookup;
             float[] threshold = Srgb.EncodeThresholdLookup;
-            for (int oy = 0; oy < oh; oy++)
+            for (int end = o + count; o < end; o++, first += 2)
             {
-                int blockRow = RowOrder.SourceBlockRow(oy, oh, 2);
-                int o = oy * ow;
-                for (int ox = 0; ox < ow; ox++, o++)
+                int below = first + width;
+                ulong b0 = blackWords[first], b1 = blackWords[first + 1], b2 = blackWords[below], b3 = blackWords[below + 1];
+                ulong w0 = whiteWords[first], w1 = whiteWords[first + 1], w2 = whiteWords[below], w3 = whiteWords[below + 1];
+                float r = 0, g = 0, b = 0, unpremultiply;
+                uint alpha;
+                if (((b0 | b1 | b2 | b3) & RgbLanes) == 0
+                    && (w0 & RgbLanes) == WhiteRgb && (w1 & RgbLanes) == WhiteRgb && (w2 & RgbLanes) == WhiteRgb && (w3 & RgbLanes) == WhiteRgb)
                 {
-                    int first = blockRow * width + ox * 2, below = first + width;
-                    ulong b0 = blackWords[first], b1 = blackWords[first + 1], b2 = blackWords[below], b3 = blackWords[below + 1];
-                    ulong w0 = whiteWords[first], w1 = whiteWords[first + 1], w2 = whiteWords[below], w3 = whiteWords[below + 1];
-                    float r = 0, g = 0, b = 0, unpremultiply;
-                    uint alpha;
-                    if (((b0 | b1 | b2 | b3) & RgbLanes) == 0
-                        && (w0 & RgbLanes) == WhiteRgb && (w1 & RgbLanes) == WhiteRgb && (w2 & RgbLanes) == WhiteRgb && (w3 & RgbLanes) == WhiteRgb)
+                    pixels[o] = 0;
+                    continue;
+                }
+                if ((((b0 ^ w0) | (b1 ^ w1) | (b2 ^ w2) | (b3 ^ w3)) & RgbLanes) == 0
+                    && ((((b0 & ExponentLanes) + ExponentCarry) | ((b1 & ExponentLanes) + ExponentCarry)
+                         | ((b2 & ExponentLanes) + ExponentCarry) | ((b3 & ExponentLanes) + ExponentCarry)) & LaneTops) == 0)
+                {
+                    // Per sample a = 1, t = 0 and (K + K + 0 − 0)·0.5 = K exactly; sums from +0 in the same order.
+                    // Alpha sum 4: round(255·4/4) = 255, and 1/4 is exact.
+                    r += half[(int)(b0 & 0xFFFF)];
+                    g += half[(int)(b0 >> 16) & 0xFFFF];
+                    b += half[(int)(b0 >> 32) & 0xFFFF];
+                    r += half[(int)(b1 & 0xFFFF)];
+                    g += half[(int)(b1 >> 16) & 0xFFFF];
+                    b += half[(int)(b1 >> 32) & 0xFFFF];
+                    r += half[(int)(b2 & 0xFFFF)];
+                    g += half[(int)(b2 >> 16) & 0xFFFF];
+                    b += half[(int)(b2 >> 32) & 0xFFFF];
+                    r += half[(int)(b3 & 0xFFFF)];
+                    g += half[(int)(b3 >> 16) & 0xFFFF];
+                    b += half[(int)(b3 >> 32) & 0xFFFF];
+                    alpha = 255;
+                    unpremultiply = 0.25f;
+                }
+                else
+                {
+                    float alphaSum = 0;
+                    SumSamples(black, white, half, first, width, 2, ref alphaSum, ref r, ref g, ref b);
+                    // round(255·mean alpha), halves up.
+                    int rounded = (int)(alphaSum * 0.25f * 255f + 0.5f);
+                    if (rounded <= 0)
                     {
                         pixels[o] = 0;
                         continue;
                     }
-                    if ((((b0 ^ w0) | (b1 ^ w1) | (b2 ^ w2) | (b3 ^ w3)) & RgbLanes) == 0
-                        && ((((b0 & ExponentLanes) + ExponentCarry) | ((b1 & ExponentLanes) + ExponentCarry)
-                             | ((b2 & ExponentLanes) + ExponentCarry) | ((b3 & ExponentLanes) + ExponentCarry)) & LaneTops) == 0)
-                    {
-                        // Per sample a = 1, t = 0 and (K + K + 0 − 0)·0.5 = K exactly; sums from +0 in the same order.
-                        // Alpha sum 4: round(255·4/4) = 255, and 1/4 is exact.
-                        r += half[(int)(b0 & 0xFFFF)];
-                        g += half[(int)(b0 >> 16) & 0xFFFF];
-                        b += half[(int)(b0 >> 32) & 0xFFFF];
-                        r += half[(int)(b1 & 0xFFFF)];
-                        g += half[(int)(b1 >> 16) & 0xFFFF];
-                        b += half[(int)(b1 >> 32) & 0xFFFF];
-                        r += half[(int)(b2 & 0xFFFF)];
-                        g += half[(int)(b2 >> 16) & 0xFFFF];
-                        b += half[(int)(b2 >> 32) & 0xFFFF];
-                        r += half[(int)(b3 & 0xFFFF)];
-                        g += half[(int)(b3 >> 16) & 0xFFFF];
-                        b += half[(int)(b3 >> 32) & 0xFFFF];
-                        alpha = 255;
-                        unpremultiply = 0.25f;
-                    }
-                    else
-                    {
-                        float alphaSum = 0;
-                        SumSamples(black, white, half, first, width, 2, ref alphaSum, ref r, ref g, ref b);
-                        // round(255·mean alpha), halves up.
-                        int rounded = (int)(alphaSum * 0.25f * 255f + 0.5f);
-                        if (rounded <= 0)
-                        {
-                            pixels[o] = 0;
-                            continue;
-                        }
-                        alpha = rounded > 255 ? 255u : (uint)rounded;
-                        unpremultiply = 1f / alphaSum;
-                    }
-
-                    // Srgb.Encode written out.
-                    uint pixel = alpha << 24;
-                    int e;
-                    float v = r * unpremultiply;
-                    if (v >= 1) pixel |= 255;
-                    else if (v > 0) { e = encodeTable[(int)(v * Srgb.EncodeBucketScale)]; pixel |= v >= threshold[e + 1] ? (uint)(e + 1) : (uint)e; }
-                    v = g * unpremultiply;
-                    if (v >= 1) pixel |= 255 << 8;
-                    else if (v > 0) { e = encodeTable[(int)(v * Srgb.EncodeBucketScale)]; pixel |= (v >= threshold[e + 1] ? (uint)(e + 1) : (uint)e) << 8; }
-                    v = b * unpremultiply;
-                    if (v >= 1) pixel |= 255 << 16;
-                    else if (v > 0) { e = encodeTable[(int)(v * Srgb.EncodeBucketScale)]; pixel |= (v >= threshold[e + 1] ? (uint)(e + 1) : (uint)e) << 16; }
-                    pixels[o] = pixel;
+                    alpha = rounded > 255 ? 255u : (uint)rounded;
+                    unpremultiply = 1f / alphaSum;
                 }
+
+                // Srgb.Encode written out.
+                uint pixel = alpha << 24;
+                int e;
+                float v = r * unpremultiply;
+                if (v >= 1) pixel |= 255;
+                else if (v > 0)
+                {
+                    e = encodeTable[(int)(v * Srgb.EncodeBucketScale)];
+                    if (v >= threshold[e + 1]) e++;
+                    pixel |= (uint)e;
+                }
+                v = g * unpremultiply;
+                if (v >= 1) pixel |= 255 << 8;
+                else if (v > 0)
+                {
+                    e = encodeTable[(int)(v * Srgb.EncodeBucketScale)];
+                    if (v >= threshold[e + 1]) e++;
+                    pixel |= (uint)e << 8;
+                }
+                v = b * unpremultiply;
+                if (v >= 1) pixel |= 255 << 16;
+                else if (v > 0)
+                {
+                    e = encodeTable[(int)(v * Srgb.EncodeBucketScale)];
+                    if (v >= threshold[e + 1]) e++;
+                    pixel |= (uint)e << 16;
+                }
+                pixels[o] = pixel;
             }
         }
 

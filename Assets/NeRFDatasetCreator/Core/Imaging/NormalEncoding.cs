@@ -21,7 +21,7 @@ namespace NerfDatasetCreator
             int yAt = frame.NormalsInUnityWorld ? 2 : 1, zAt = 3 - yAt;
             if (frame.Supersampling == 1)
             {
-                EncodeOneSamplePerPixel(normals, stride, yAt, zAt, ow, oh, rgb);
+                EncodeOneSamplePerPixel(frame, rgb);
                 return;
             }
             int[] order = PointSampling.Order(frame.Supersampling, frame.Width);
@@ -50,8 +50,12 @@ namespace NerfDatasetCreator
         /// Supersampling 1 — the capture renders its data passes at the output size — so each pixel is its own
         /// sample: one flat loop with <see cref="Component"/> written out, because Mono does not inline it.
         /// </summary>
-        static void EncodeOneSamplePerPixel(float[] normals, int stride, int yAt, int zAt, int ow, int oh, byte[] rgb)
+        static void EncodeOneSamplePerPixel(RawFrame frame, byte[] rgb)
         {
+            // Read here rather than passed in: with fewer parameters Mono keeps the loop's indices in registers.
+            float[] normals = frame.Normals;
+            int ow = frame.OutputWidth, oh = frame.OutputHeight, stride = frame.NormalFloatsPerPixel;
+            int yAt = frame.NormalsInUnityWorld ? 2 : 1, zAt = 3 - yAt;
             for (int oy = 0; oy < oh; oy++)
             {
                 int n = (oh - 1 - oy) * ow * stride; // source rows are bottom-up
@@ -59,16 +63,37 @@ namespace NerfDatasetCreator
                 for (int ox = 0; ox < ow; ox++, n += stride, o += 3)
                 {
                     float x = normals[n], y = normals[n + yAt], z = normals[n + zAt];
-                    if (!(x * x + y * y + z * z > 0.25f))
+                    float lengthSquared = x * x + y * y + z * z;
+                    if (!(lengthSquared > 0.25f))
                     {
                         rgb[o] = 0;
                         rgb[o + 1] = 0;
                         rgb[o + 2] = 0;
                         continue;
                     }
-                    rgb[o] = !(x > -1) ? (byte)0 : x >= 1 ? (byte)255 : (byte)(x * 127.5f + 128f);
-                    rgb[o + 1] = !(y > -1) ? (byte)0 : y >= 1 ? (byte)255 : (byte)(y * 127.5f + 128f);
-                    rgb[o + 2] = !(z > -1) ? (byte)0 : z >= 1 ? (byte)255 : (byte)(z * 127.5f + 128f);
+                    if (lengthSquared < 4f)
+                    {
+                        // Every component is in (−2, 2), so v·127.5 + 128 is in (−127, 383): truncated to an int and
+                        // clamped to [0, 255] in integers it is Component(v) exactly (v ≤ −1 gives at most 0.5 → 0,
+                        // v ≥ 1 at least 255.5 → 255). Integer tests rather than two float tests per component: Mono
+                        // keeps floats on the stack and pays for each float comparison and conditional.
+                        int c = (int)(x * 127.5f + 128f);
+                        if (c < 0) c = 0;
+                        else if (c > 255) c = 255;
+                        rgb[o] = (byte)c;
+                        c = (int)(y * 127.5f + 128f);
+                        if (c < 0) c = 0;
+                        else if (c > 255) c = 255;
+                        rgb[o + 1] = (byte)c;
+                        c = (int)(z * 127.5f + 128f);
+                        if (c < 0) c = 0;
+                        else if (c > 255) c = 255;
+                        rgb[o + 2] = (byte)c;
+                        continue;
+                    }
+                    rgb[o] = !(x > -1) ? (byte)0 : x >= 1 ? (byte)255 : (byte)(int)(x * 127.5f + 128f);
+                    rgb[o + 1] = !(y > -1) ? (byte)0 : y >= 1 ? (byte)255 : (byte)(int)(y * 127.5f + 128f);
+                    rgb[o + 2] = !(z > -1) ? (byte)0 : z >= 1 ? (byte)255 : (byte)(int)(z * 127.5f + 128f);
                 }
             }
         }

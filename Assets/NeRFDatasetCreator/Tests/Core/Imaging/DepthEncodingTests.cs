@@ -17,6 +17,42 @@ namespace NerfDatasetCreator.Tests
             Assert.That(clamped, Is.EqualTo(0));
         }
 
+        /// <summary>
+        /// Supersampling 1 (the capture's depth pass) over several rows of odd length, at scale 1 and not: each pixel
+        /// is its own sample from the row mirrored top to bottom, round(z·1000) halves up, 1 below 0.5 mm, clamped
+        /// and counted beyond 65.535 m; no surface for 0, negatives and NaN.
+        /// </summary>
+        [TestCase(1.0)]
+        [TestCase(0.37)]
+        public void OneSamplePerPixelRowsGiveEachPixelsMillimetres(double scale)
+        {
+            const int w = 13, h = 7;
+            var random = new SeededRandom(5);
+            float[] specials = { 0f, -0f, -1f, float.NaN, float.PositiveInfinity, 0.0004f, 0.0015f, 0.0025f, 65.5345f, 65.5355f, 200f };
+            var depth = new float[w * h];
+            for (int i = 0; i < depth.Length; i++)
+                depth[i] = random.NextUInt64() % 3 == 0 ? specials[random.NextUInt64() % (ulong)specials.Length] : (float)(random.NextDouble() * 80);
+            var mm = new ushort[w * h];
+            int clamped = DepthEncoding.ToMillimetres(new RawFrame(w, h, 1) { Depth = depth }, mm, scale);
+
+            int expectedClamped = 0;
+            for (int oy = 0; oy < h; oy++)
+                for (int ox = 0; ox < w; ox++)
+                {
+                    float z = depth[(h - 1 - oy) * w + ox]; // source rows are bottom-up
+                    double metres = scale == 1 ? z : (float)(z * scale);
+                    int expected = !(metres > 0) ? 0 : System.Math.Max(1, (int)System.Math.Floor((float)metres * 1000f + 0.5f));
+                    if (expected > 65535)
+                    {
+                        expected = 65535;
+                        expectedClamped++;
+                    }
+                    Assert.That(mm[oy * w + ox], Is.EqualTo(expected), $"pixel ({ox}, {oy}) from {z:R}");
+                }
+            Assert.That(clamped, Is.EqualTo(expectedClamped));
+            Assert.That(expectedClamped, Is.GreaterThan(0), "some depths are beyond the 16-bit range");
+        }
+
         [Test]
         public void DepthsBeyond65Point535MetresAreClampedAndCounted()
         {

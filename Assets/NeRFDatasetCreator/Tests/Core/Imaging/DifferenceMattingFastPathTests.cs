@@ -129,6 +129,68 @@ namespace NerfDatasetCreator.Tests
             Assert.That(fast, Is.EqualTo(Reference(frame)));
         }
 
+        /// <summary>
+        /// Where <see cref="System.Numerics.Vector.IsHardwareAccelerated"/> (this test's .NET on x64 or Arm64), k = 2
+        /// takes several blocks at a time (two with AVX2): runs of background and of covered blocks — covered by
+        /// halves from 0 and subnormals to the largest finite, 1 and above, −0 and negatives, infinities and NaN
+        /// (which must leave the vector path) — for widths 1 to 33, so that groups straddle every position of a row and
+        /// the row's last pixels fall outside whole groups; the sample after each group (which the vector path loads
+        /// and clears) is anything. Same bytes as the per-sample loop.
+        /// </summary>
+        [Test]
+        public void TwoByTwoGroupsOfBlocksEqualThePerSampleLoop()
+        {
+            const int k = 2;
+            ushort[] covers = { 0x0000, 0x0001, 0x03FF, 0x0400, 0x2E66, 0x3BFF, 0x3C00, 0x3C01, 0x4400, 0x7BFF };
+            ushort[] leaves = { 0x8000, 0xBC00, 0x8001, 0x7C00, 0xFC00, 0x7E00, 0x7C01 };
+            var random = new SeededRandom(23);
+            int checkedBlocks = 0;
+            for (int outputWidth = 1; outputWidth <= 33; outputWidth++)
+            {
+                const int outputHeight = 5;
+                var frame = new RawFrame(outputWidth * k, outputHeight * k, k);
+                frame.ColorOverBlack = new ushort[frame.Width * frame.Height * 4];
+                frame.ColorOverWhite = new ushort[frame.Width * frame.Height * 4];
+                for (int i = 0; i < frame.ColorOverBlack.Length; i++)
+                {
+                    frame.ColorOverBlack[i] = (ushort)random.NextUInt64();
+                    frame.ColorOverWhite[i] = (ushort)random.NextUInt64();
+                }
+                int kind = 0;
+                for (int oy = 0; oy < outputHeight; oy++)
+                    for (int ox = 0; ox < outputWidth; ox++)
+                    {
+                        // Runs: mostly the kind of the block before, so that whole groups are background or covered.
+                        if (random.NextUInt64() % 4 == 0) kind = (int)(random.NextUInt64() % 5);
+                        for (int s = 0; s < 4; s++)
+                        {
+                            int p = ((oy * k + s / 2) * frame.Width + ox * k + s % 2) * 4;
+                            for (int c = 0; c < 3; c++)
+                            {
+                                ushort black, white;
+                                switch (kind)
+                                {
+                                    case 0: black = 0; white = 0x3C00; break; // background
+                                    case 1: black = white = (ushort)(0x3000 | (int)(random.NextUInt64() % 0xC00)); break; // covered, [0.125, 1)
+                                    case 2: black = white = covers[random.NextUInt64() % (ulong)covers.Length]; break; // covered, edge values
+                                    case 3: // covered but for a rare lane that leaves the vector path
+                                        black = white = random.NextUInt64() % 24 == 0 ? leaves[random.NextUInt64() % (ulong)leaves.Length] : (ushort)0x3555;
+                                        break;
+                                    default: black = (ushort)(0x3000 | (int)(random.NextUInt64() % 0xC00)); white = 0x3C00; break; // partly covered
+                                }
+                                frame.ColorOverBlack[p + c] = black;
+                                frame.ColorOverWhite[p + c] = white;
+                            }
+                        }
+                        checkedBlocks++;
+                    }
+                var fast = new byte[outputWidth * outputHeight * 4];
+                DifferenceMatting.Resolve(frame, fast);
+                Assert.That(fast, Is.EqualTo(Reference(frame)), $"output width {outputWidth}");
+            }
+            Assert.That(checkedBlocks, Is.EqualTo(5 * 33 * 34 / 2));
+        }
+
         static void Fill(int kind, int channel, SeededRandom random, out ushort black, out ushort white)
         {
             ushort any = (ushort)random.NextUInt64();

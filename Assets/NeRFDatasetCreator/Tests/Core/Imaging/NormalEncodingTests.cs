@@ -52,6 +52,58 @@ namespace NerfDatasetCreator.Tests
         /// (the loop is written out for Mono); checked pixel by pixel on random unit normals mixed with background,
         /// ±1 exactly, values beyond ±1, infinities, NaN and short vectors.
         /// </summary>
+        /// <summary>
+        /// Supersampling 1 encodes normals of squared length below 4 with an integer clamp instead of Component's
+        /// float tests: every component value within a few ulps of each byte's edge ((b − 128)/127.5), of ±1 and of
+        /// ±2's neighbourhood, and [−2, 2] in steps of 1/256, in each of the three positions (both frames), and pixels
+        /// whose squared length is just below and just above 4, give Component's bytes.
+        /// </summary>
+        [TestCase(false)]
+        [TestCase(true)]
+        public void OneSamplePerPixelIntegerClampEqualsComponentNearEveryEdge(bool unityWorld)
+        {
+            var values = new System.Collections.Generic.List<float>();
+            void Around(float centre)
+            {
+                float v = centre;
+                for (int i = 0; i < 4; i++) v = NextDown(v);
+                for (int i = 0; i < 9; i++, v = NextUp(v)) values.Add(v);
+            }
+            // Component(v) = floor(v·127.5 + 128) steps where v·127.5 + 128 is a whole number b.
+            for (int b = 0; b <= 256; b++) Around((float)((b - 128) / 127.5));
+            for (int i = -512; i <= 512; i++) values.Add(i / 256f); // (−2, 2) in steps of 1/256: the clamps' ranges
+            foreach (float edge in new[] { 1f, -1f, 1.99f, -1.99f, 1.9999999f, -1.9999999f, 0f }) Around(edge);
+            // Each value in x, y and z in turn, with a partner component that keeps the squared length in (0.25, 4).
+            int pixels = values.Count * 3 + 4;
+            var normals = new float[pixels * 4];
+            for (int i = 0; i < values.Count * 3; i++)
+            {
+                float v = values[i / 3], partner = System.Math.Abs(v) > 0.75f ? 0f : 0.9f;
+                int at = i % 3, other = (at + 1) % 3;
+                normals[i * 4 + at] = v;
+                normals[i * 4 + other] = partner;
+            }
+            // Squared length just below 4 (components near ±1.1547) and just above it.
+            float[][] edges = { new[] { 1.1547f, -1.1547f, 1.1547f }, new[] { -1.1548f, 1.1548f, -1.1548f }, new[] { 1.9999999f, 0.1f, 0f }, new[] { -2f, 0f, 0.0001f } };
+            for (int i = 0; i < 4; i++)
+                for (int c = 0; c < 3; c++) normals[(values.Count * 3 + i) * 4 + c] = edges[i][c];
+
+            var rgb = new byte[pixels * 3];
+            NormalEncoding.Encode(new RawFrame(pixels, 1, 1) { Normals = normals, NormalsInUnityWorld = unityWorld }, rgb);
+            int yAt = unityWorld ? 2 : 1, zAt = 3 - yAt;
+            for (int p = 0; p < pixels; p++)
+            {
+                float x = normals[p * 4], y = normals[p * 4 + yAt], z = normals[p * 4 + zAt];
+                Assert.That(x * x + y * y + z * z, Is.GreaterThan(0.25f), "every pixel is a surface");
+                Assert.That(new[] { rgb[p * 3], rgb[p * 3 + 1], rgb[p * 3 + 2] },
+                    Is.EqualTo(new[] { NormalEncoding.Component(x), NormalEncoding.Component(y), NormalEncoding.Component(z) }), $"pixel {p} from ({x:R}, {y:R}, {z:R})");
+            }
+        }
+
+        static float NextUp(float v) => v == 0 ? float.Epsilon : System.BitConverter.Int32BitsToSingle(System.BitConverter.SingleToInt32Bits(v) + (v > 0 ? 1 : -1));
+
+        static float NextDown(float v) => -NextUp(-v);
+
         [TestCase(1, 1, 4, false)]
         [TestCase(3, 5, 4, true)]
         [TestCase(4, 3, 4, true)]
