@@ -1,12 +1,11 @@
 namespace NerfDatasetCreator
 {
     /// <summary>
-    /// PNG's None, Sub, Up and Average filters (PNG spec §9.2) on a row held as 64-bit words, eight bytes at a time:
+    /// PNG's five filters (PNG spec §9.2) on a row held as 64-bit words, eight bytes at a time:
     /// byte k of a word is row byte 8·j + k (the words are filled with Buffer.BlockCopy on a little-endian machine).
     /// Bytes are subtracted and averaged within their own 8 bits (SWAR) so that no borrow or carry crosses into the
     /// next byte. Mono, which runs the editor, neither vectorises nor removes the bounds checks of a byte loop, and a
-    /// word loop does an eighth of the iterations. Paeth needs byte-wise comparisons and stays in
-    /// <see cref="PngRowFilter"/>.
+    /// word loop does an eighth of the iterations; Paeth's byte comparisons too are done on whole words.
     /// </summary>
     internal static class PngWordFilter
     {
@@ -20,7 +19,7 @@ namespace NerfDatasetCreator
         internal const int SampleEvery = 8;
 
         /// <summary>
-        /// Writes the residuals of filter <paramref name="type"/> (0–3) for the row <paramref name="row"/>[0…words)
+        /// Writes the residuals of filter <paramref name="type"/> (0–4) for the row <paramref name="row"/>[0…words)
         /// with the row above <paramref name="up"/> (zeros for the first row) at <paramref name="output"/>[at].
         /// <paramref name="shift"/> is 8 × bytes per pixel (8…32).
         /// </summary>
@@ -51,7 +50,7 @@ namespace NerfDatasetCreator
                         output[at + j] = ((x | High) - (b & Low7)) ^ ((x ^ ~b) & High);
                     }
                     break;
-                default:
+                case 3:
                 {
                     ulong before = 0;
                     for (int j = 0; j < words; j++)
@@ -62,6 +61,42 @@ namespace NerfDatasetCreator
                         ulong average = (a & b) + (((a ^ b) & NotLowBits) >> 1);
                         output[at + j] = ((x | High) - (average & Low7)) ^ ((x ^ ~average) & High);
                         before = x;
+                    }
+                    break;
+                }
+                default:
+                {
+                    ulong before = 0, beforeUp = 0;
+                    for (int j = 0; j < words; j++)
+                    {
+                        ulong x = row[j], b = up[j];
+                        ulong a = (x << shift) | (before >> back), c = (b << shift) | (beforeUp >> back);
+                        // Paeth's predictor per byte (PNG spec §9.4), without a branch. With pa = |b − c| and
+                        // pb = |a − c|: where a − c and b − c have the same sign, pc = pa + pb is never below either,
+                        // so the choice is a if pa ≤ pb, else b; where c lies between a and b (signs differ),
+                        // pc = |pa − pb|, so a if 2·pa ≤ pb, else b if 2·pb ≤ pa, else c. 2·p ≤ q is p ≤ ⌊q / 2⌋,
+                        // which stays within a byte. An unsigned byte test x ≥ y: the low seven bits compared by a
+                        // subtraction that cannot borrow out of the byte, the top bits combined with it; the
+                        // results live in each byte's top bit, spread to a byte mask by a multiplication.
+                        ulong ac = a ^ c, bc = b ^ c;
+                        ulong aAtLeastC = ((a & ~c) | (~ac & ((a | High) - (c & Low7)))) & High;
+                        ulong bAtLeastC = ((b & ~c) | (~bc & ((b | High) - (c & Low7)))) & High;
+                        // |a − c| and |b − c|: the larger byte minus the smaller, which cannot borrow.
+                        ulong top = c ^ (ac & ((aAtLeastC >> 7) * 0xFF));
+                        ulong pb = top - (top ^ ac);
+                        top = c ^ (bc & ((bAtLeastC >> 7) * 0xFF));
+                        ulong pa = top - (top ^ bc);
+                        ulong paAtMostPb = ((pb & ~pa) | (~(pb ^ pa) & ((pb | High) - (pa & Low7)))) & High;
+                        ulong twicePaAtMostPb = ~pa & ((((pb >> 1) & Low7) | High) - (pa & Low7)) & High;
+                        ulong twicePbAtMostPa = ~pb & ((((pa >> 1) & Low7) | High) - (pb & Low7)) & High;
+                        ulong between = aAtLeastC ^ bAtLeastC;
+                        ulong takeA = paAtMostPb ^ ((paAtMostPb ^ twicePaAtMostPb) & between);
+                        ulong takeB = (~between | twicePbAtMostPa) & High;
+                        ulong bOrC = c ^ (bc & ((takeB >> 7) * 0xFF));
+                        ulong paeth = bOrC ^ ((a ^ bOrC) & ((takeA >> 7) * 0xFF));
+                        output[at + j] = ((x | High) - (paeth & Low7)) ^ ((x ^ ~paeth) & High);
+                        before = x;
+                        beforeUp = b;
                     }
                     break;
                 }

@@ -187,8 +187,8 @@ namespace NerfDatasetCreator
         const long MaxHuffmanBytes = 1L << 30;
 
         /// <summary>
-        /// Copies each row into 64-bit words, filters it there (<see cref="PngWordFilter"/>; Paeth, asked for by
-        /// name, byte-wise) and places it with its type byte in the thread's <see cref="HuffmanDeflate"/> stream.
+        /// Copies each row into 64-bit words, filters it there (<see cref="PngWordFilter"/>) and places it with its
+        /// type byte in the thread's <see cref="HuffmanDeflate"/> stream.
         /// </summary>
         static void FilterIntoWords(Scratch s, byte[] pixels, ushort[] samples, int width, int height, PngPixelFormat format, PngFilter filter)
         {
@@ -216,8 +216,7 @@ namespace NerfDatasetCreator
                     PngWordFilter.SwapBytePairs(row, rowWords);
                 }
                 int type = filter == PngFilter.Adaptive ? PngWordFilter.Choose(row, above, rowWords, shift) : (int)filter;
-                if (type <= 3) PngWordFilter.Apply(type, row, above, rowWords, shift, filtered, 0);
-                else FilterBytewise(s, pixels, samples, y, width, rowBytes, bpp, type, filtered);
+                PngWordFilter.Apply(type, row, above, rowWords, shift, filtered, 0);
                 deflate.PutRow(y, type, filtered);
                 var swap = above;
                 above = row;
@@ -283,20 +282,6 @@ namespace NerfDatasetCreator
             PutType(file, iend + 4, "IEND");
             PutUInt32(file, iend + 8, Crc32.Compute(file, iend + 4, 4));
             return file;
-        }
-
-        /// <summary>A filter the word path lacks (Paeth): byte-wise into a byte row, then copied into the words.</summary>
-        static void FilterBytewise(Scratch s, byte[] pixels, ushort[] samples, int y, int width, int rowBytes, int bpp, int type, ulong[] filtered)
-        {
-            if (s.Batch.Length < rowBytes + 1) s.Batch = new byte[rowBytes + 1];
-            if (samples != null && y > 0)
-            {
-                // SelectRow swaps Row and PreviousRow; bring row y − 1 back into Row first.
-                ToBigEndian(samples, (y - 1) * width, width, s.Row);
-            }
-            SelectRow(s, pixels, samples, y, width, rowBytes, out var src, out var srcOffset, out var prev, out var prevOffset);
-            PngRowFilter.Apply(type, src, srcOffset, prev, prevOffset, rowBytes, bpp, s.Batch, 0);
-            Buffer.BlockCopy(s.Batch, 1, filtered, 0, rowBytes);
         }
 
         /// <summary>Row y's bytes and the row above (zeros for the first row); ushort samples become big-endian byte rows.</summary>
