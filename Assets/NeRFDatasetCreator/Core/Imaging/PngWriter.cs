@@ -28,9 +28,10 @@ namespace NerfDatasetCreator
         public const PngCompression DefaultCompression = PngCompression.Huffman;
 
         /// <summary>
-        /// The row filter used when none is given: per row, the filter with the smallest sum of |residual| — with
-        /// Huffman over every <see cref="PngWordFilter.SampleEvery"/>-th 8-byte word and among None, Sub, Up and
-        /// Average; with DeflateStream over every byte and among all five.
+        /// The row filter used when none is given: per row, the one of the five filters whose residuals look
+        /// cheapest — with Huffman, an estimate of their bits on pairs of 8-byte words (one pair in
+        /// <see cref="PngWordFilter.SampleEvery"/> words, every other row; <see cref="PngWordFilter.Choose"/>); with
+        /// DeflateStream, the smallest sum of |residual| over every byte.
         /// </summary>
         public const PngFilter DefaultFilter = PngFilter.Adaptive;
 
@@ -206,6 +207,7 @@ namespace NerfDatasetCreator
             ulong[] row = s.WordRow, above = s.WordRowAbove, filtered = s.Filtered;
             Array.Clear(above, 0, rowWords);
             int shift = 8 * bpp;
+            int type = 0;
             for (int y = 0; y < height; y++)
             {
                 row[rowWords - 1] = 0; // the padding past the row's end
@@ -215,7 +217,11 @@ namespace NerfDatasetCreator
                     Buffer.BlockCopy(samples, y * rowBytes, row, 0, rowBytes);
                     PngWordFilter.SwapBytePairs(row, rowWords);
                 }
-                int type = filter == PngFilter.Adaptive ? PngWordFilter.Choose(row, above, rowWords, shift) : (int)filter;
+                // Adaptive: a row's neighbours are alike, so every odd row takes the type chosen for the row above
+                // (half the estimates; the benchmark's files within −0.4…+1.8 % of choosing every row), unless that
+                // was None, which may be the background above an object's first row.
+                if (filter != PngFilter.Adaptive) type = (int)filter;
+                else if ((y & 1) == 0 || type == 0) type = PngWordFilter.Choose(row, above, rowWords, shift);
                 PngWordFilter.Apply(type, row, above, rowWords, shift, filtered, 0);
                 deflate.PutRow(y, type, filtered);
                 var swap = above;

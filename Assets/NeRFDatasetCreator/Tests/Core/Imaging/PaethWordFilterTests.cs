@@ -5,8 +5,8 @@ using NUnit.Framework;
 namespace NerfDatasetCreator.Tests
 {
     /// <summary>
-    /// PNG's Paeth filter computed on 64-bit words (eight bytes at once, no branch) by the Huffman encoder, both when
-    /// asked for by name and when the adaptive choice picks it: every file is decoded by
+    /// PNG's Paeth filter computed on 64-bit words (eight bytes at once, no branch per byte) by the Huffman encoder,
+    /// both when asked for by name and when the adaptive choice picks it: every file is decoded by
     /// <see cref="ReferencePngDecoder"/>, whose own byte-wise Paeth predictor (PNG spec §9.4) unfilters it, and must
     /// give the input back bit for bit — for every (left, above, above-left) byte triple, every pixel size, rows whose
     /// length is not a multiple of 8 bytes, a single pixel and a first row (where the row above is zeros).
@@ -62,7 +62,7 @@ namespace NerfDatasetCreator.Tests
         static IEnumerable<TestCaseData> Cases()
         {
             foreach (PngPixelFormat format in Enum.GetValues(typeof(PngPixelFormat)))
-            foreach (var content in new[] { "noise", "gradient", "render", "stripes" })
+            foreach (var content in new[] { "noise", "gradient", "render", "stripes", "flat", "zeros" })
             foreach (var shape in Shapes)
                 yield return new TestCaseData(format, content, shape[0], shape[1]);
         }
@@ -92,6 +92,67 @@ namespace NerfDatasetCreator.Tests
                 expected[2 * i + 1] = (byte)samples[i];
             }
             Assert.That(png.Pixels, Is.EqualTo(expected));
+        }
+
+        [TestCase(PngPixelFormat.Gray8)]
+        [TestCase(PngPixelFormat.Rgb8)]
+        [TestCase(PngPixelFormat.Rgba8)]
+        [TestCase(PngPixelFormat.Gray16)]
+        public void AdaptiveChoosesPaethWhereOnlyPaethPredictsMostBytes(PngPixelFormat format)
+        {
+            // Left half: vertical stripes (each column one random value), which Up and Paeth (c = a, so b) predict
+            // exactly and Sub does not. Right half: random values in horizontal pairs of pixels, which Paeth predicts
+            // exactly on every second pixel (b = c, so a), Sub as well and Up never. Only Paeth leaves nothing to
+            // code on the left and about half on the right, so the adaptive choice must take it on most rows.
+            const int width = 96, height = 40;
+            int bpp = PngWriter.BytesPerPixel(format);
+            var random = new SeededRandom(21);
+            var columns = new byte[width / 2 * bpp];
+            for (int i = 0; i < columns.Length; i++) columns[i] = (byte)random.NextUInt64();
+            var pixels = new byte[width * height * bpp];
+            for (int y = 0; y < height; y++)
+            {
+                for (int i = 0; i < width / 2 * bpp; i++) pixels[y * width * bpp + i] = columns[i];
+                for (int x = width / 2; x < width; x += 2)
+                for (int k = 0; k < bpp; k++)
+                {
+                    byte value = (byte)random.NextUInt64();
+                    pixels[(y * width + x) * bpp + k] = value;
+                    pixels[(y * width + x + 1) * bpp + k] = value;
+                }
+                // With four bytes a pixel, Up's residuals of a pair would repeat a whole pixel (a nearly free match):
+                // a fresh last byte in every second pixel keeps Up from that, and Paeth still predicts the other three.
+                if (bpp == 4)
+                    for (int x = width / 2 + 1; x < width; x += 2) pixels[(y * width + x) * bpp + 3] = (byte)random.NextUInt64();
+            }
+            var png = ReferencePngDecoder.Decode(PngWriter.Encode(pixels, width, height, format));
+            Assert.That(png.Pixels, Is.EqualTo(pixels));
+            int paethRows = 0;
+            foreach (int filter in png.RowFilters) if (filter == 4) paethRows++;
+            Assert.That(paethRows, Is.GreaterThanOrEqualTo(height * 3 / 4), "rows filtered with Paeth: " + string.Join(",", png.RowFilters));
+        }
+
+        [Test]
+        public void AdaptiveDecidesEveryOtherRowAndAfterEveryNoneRow()
+        {
+            // Rows are estimated in pairs: an odd row takes the type of the row above unless that was None, which
+            // may be the background above an object; the file must decode either way.
+            var pixels = PngWriterTests.RenderLike(120, 90, 4, seed: 17);
+            var png = ReferencePngDecoder.Decode(PngWriter.Encode(pixels, 120, 90, PngPixelFormat.Rgba8));
+            Assert.That(png.Pixels, Is.EqualTo(pixels));
+            Assert.That(new HashSet<int>(png.RowFilters).Count, Is.GreaterThan(2), "the render needs more than one filter besides None");
+            for (int y = 1; y < png.Height; y += 2)
+                if (png.RowFilters[y - 1] != 0)
+                    Assert.That(png.RowFilters[y], Is.EqualTo(png.RowFilters[y - 1]), "row " + y);
+
+            // Empty even rows (None) and horizontal ramps on odd rows: each odd row is estimated afresh, and a ramp
+            // is all one Sub residual.
+            var ramps = new byte[64 * 12 * 4];
+            for (int y = 1; y < 12; y += 2)
+                for (int i = 0; i < 64 * 4; i++) ramps[y * 64 * 4 + i] = (byte)(10 + y + 3 * (i / 4));
+            var rampPng = ReferencePngDecoder.Decode(PngWriter.Encode(ramps, 64, 12, PngPixelFormat.Rgba8));
+            Assert.That(rampPng.Pixels, Is.EqualTo(ramps));
+            for (int y = 0; y < 12; y++) Assert.That(rampPng.RowFilters[y], Is.EqualTo(y % 2 == 0 ? 0 : 1), "row " + y);
         }
 
         static void AssertSameBytes(byte[] actual, byte[] expected)
