@@ -20,11 +20,11 @@ namespace NerfDatasetCreator
         /// Words per pair of adjacent words that <see cref="Choose"/> samples on a long row (1 in 16: on the
         /// benchmark's 800-pixel rows within ±1 % of 1 in 8, at half the cost of the estimate, which the Paeth
         /// candidate had doubled); shorter rows are sampled more densely, down to every word, so that each row
-        /// has at least <see cref="MinSamples"/> pairs where it can.
+        /// has at least <see cref="MinSamples"/> pairs where it can (a 200-pixel gray row at 1 in 16 has two).
         /// </summary>
         internal const int SampleEvery = 16;
 
-        const int MinSamples = 16;
+        const int MinSamples = 8;
 
         /// <summary>
         /// Writes the residuals of filter <paramref name="type"/> (0–4) for the row <paramref name="row"/>[0…words)
@@ -91,12 +91,13 @@ namespace NerfDatasetCreator
 
         /// <summary>
         /// PNG's Paeth predictor (spec §9.4) of every byte of a word from the bytes to the left (<paramref name="a"/>),
-        /// above (<paramref name="b"/>) and above-left (<paramref name="c"/>), with no branch per byte. With pa = |b − c| and
-        /// pb = |a − c|: where a − c and b − c have the same sign, pc = pa + pb is never below either, so the choice is
-        /// a if pa ≤ pb, else b; where c lies between a and b (signs differ), pc = |pa − pb|, so a if 2·pa ≤ pb, else
-        /// b if 2·pb ≤ pa, else c. 2·p ≤ q is p ≤ ⌊q / 2⌋, which stays within a byte. An unsigned byte test x ≥ y:
-        /// the low seven bits compared by a subtraction that cannot borrow out of the byte, the top bits combined with
-        /// it; the results live in each byte's top bit, spread to a byte mask by a multiplication.
+        /// above (<paramref name="b"/>) and above-left (<paramref name="c"/>), with no branch per byte. With
+        /// pa = |b − c| and pb = |a − c|: where a − c and b − c have the same sign, pc = pa + pb is never below either,
+        /// so the choice is a if pa ≤ pb, else b; where c lies between a and b (signs differ), pc = |pa − pb|, so a if
+        /// 2·pa ≤ pb, else b if 2·pb ≤ pa, else c. 2·p ≤ q is p ≤ ⌊q / 2⌋, which stays within a byte. An unsigned
+        /// byte test x ≥ y: the low seven bits compared by a subtraction that cannot borrow out of the byte, the top
+        /// bits combined with it; the results live in each byte's top bit, spread to a byte mask by a multiplication.
+        /// The tests check it through the filter against the reference decoder's byte-wise Paeth for every (a, b, c).
         /// </summary>
         static ulong PaethPredictor(ulong a, ulong b, ulong c)
         {
@@ -124,8 +125,9 @@ namespace NerfDatasetCreator
 
         /// <summary>
         /// The filter among the five that leaves the least to code, estimated on pairs of adjacent words, one pair in
-        /// every <see cref="SampleEvery"/> words or more often on short rows: the <see cref="Cost"/> of the second word's residuals — about the
-        /// bits a literal needs, nothing for bytes inside a run that <see cref="HuffmanDeflate"/> sends as a match.
+        /// every <see cref="SampleEvery"/> words or more often on short rows: the <see cref="Cost"/> of the second
+        /// word's residuals — about the bits a literal needs, nothing for bytes inside a run that
+        /// <see cref="HuffmanDeflate"/> sends as a match.
         /// The first word serves for the residuals a pixel earlier, except for Paeth (twice the cost of the other
         /// four together), whose sampled word is compared with zeros a pixel before it. Ties go to the lower type, so
         /// an all-zero row gets None, whose type byte 0 lets a run of zeros go on into the next row; a row whose None

@@ -218,7 +218,7 @@ namespace NerfDatasetCreator
                     PngWordFilter.SwapBytePairs(row, rowWords);
                 }
                 // Adaptive: a row's neighbours are alike, so every odd row takes the type chosen for the row above
-                // (half the estimates; the benchmark's files within −0.4…+1.8 % of choosing every row), unless that
+                // (half the estimates; the benchmark's files within −0.2…+1.8 % of choosing every row), unless that
                 // was None, which may be the background above an object's first row.
                 if (filter != PngFilter.Adaptive) type = (int)filter;
                 else if ((y & 1) == 0 || type == 0) type = PngWordFilter.Choose(row, above, rowWords, shift);
