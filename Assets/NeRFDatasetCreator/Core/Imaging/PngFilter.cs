@@ -2,8 +2,9 @@ namespace NerfDatasetCreator
 {
     /// <summary>
     /// Which PNG row filter (PNG spec §9) precedes DEFLATE. The five fixed types use one filter for every row;
-    /// <see cref="Adaptive"/> picks per row the filter whose output has the smallest sum of absolute values (the
-    /// heuristic the PNG specification recommends and libpng uses).
+    /// <see cref="Adaptive"/> picks one per row: with DeflateStream the filter whose output has the smallest sum of
+    /// absolute values (the heuristic the PNG specification recommends and libpng uses); with the project's own
+    /// encoders the one whose sampled residuals look cheapest to code (<see cref="PngWriter.DefaultFilter"/>).
     /// </summary>
     public enum PngFilter
     {
@@ -13,7 +14,7 @@ namespace NerfDatasetCreator
         Average = 3,
         Paeth = 4,
 
-        /// <summary>Per row, the one of the five with the minimum sum of absolute differences.</summary>
+        /// <summary>Per row, the one of the five whose output looks cheapest to code.</summary>
         Adaptive = 5,
     }
 }
