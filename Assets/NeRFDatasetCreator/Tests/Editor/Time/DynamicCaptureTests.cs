@@ -106,25 +106,15 @@ namespace NerfDatasetCreator.Editor.Tests
                     // Where the clip puts the cube's centre at this view's time, seen from this view's camera.
                     var seconds = view.Time.Value.Seconds;
                     var centre = new Vector3((float)seconds, 0, 0);
-                    camera.transform.SetPositionAndRotation(
-                        new Vector3((float)view.Pose.Position.X, (float)view.Pose.Position.Y, (float)view.Pose.Position.Z),
-                        new Quaternion((float)view.Pose.Rotation.X, (float)view.Pose.Rotation.Y, (float)view.Pose.Rotation.Z, (float)view.Pose.Rotation.W));
+                    view.Pose.ApplyTo(camera.transform);
                     var expected = camera.WorldToViewportPoint(centre) * 64;
 
                     Assert.That(texture.LoadImage(File.ReadAllBytes(Path.Combine(result.DatasetFolder, view.Files[0].RelativePath))), Is.True);
-                    double sx = 0, sy = 0, sa = 0;
-                    for (var y = 0; y < 64; y++)
-                        for (var x = 0; x < 64; x++)
-                        {
-                            var a = texture.GetPixel(x, y).a;
-                            sx += a * (x + 0.5);
-                            sy += a * (y + 0.5);
-                            sa += a;
-                        }
+                    var centroid = AlphaCentroid.Of(texture, out var sa);
                     Assert.That(sa, Is.GreaterThan(0), view.FramePath);
                     // A cube's silhouette centroid is not exactly its projected centre under perspective: 1 px at 64 px.
-                    Assert.That(sx / sa, Is.EqualTo(expected.x).Within(1.0), view.FramePath + " x at " + seconds + " s");
-                    Assert.That(sy / sa, Is.EqualTo(expected.y).Within(1.0), view.FramePath + " y at " + seconds + " s");
+                    Assert.That(centroid.x, Is.EqualTo(expected.x).Within(1.0), view.FramePath + " x at " + seconds + " s");
+                    Assert.That(centroid.y, Is.EqualTo(expected.y).Within(1.0), view.FramePath + " y at " + seconds + " s");
                 }
             }
             finally

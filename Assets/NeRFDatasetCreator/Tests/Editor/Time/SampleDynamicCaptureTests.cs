@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
+using NerfDatasetCreator.Editor.Capture;
 using NerfDatasetCreator.Editor.Tests.Capture;
 using Newtonsoft.Json.Linq;
 using NUnit.Framework;
@@ -165,9 +166,7 @@ namespace NerfDatasetCreator.Editor.Tests
                 {
                     var seconds = view.Time.Value.Seconds;
                     Assert.That(written[view.FramePath], Is.EqualTo(seconds).Within(1e-9), view.FramePath + ": the batch run wrote the planned time");
-                    camera.transform.SetPositionAndRotation(
-                        new Vector3((float)view.Pose.Position.X, (float)view.Pose.Position.Y, (float)view.Pose.Position.Z),
-                        new Quaternion((float)view.Pose.Rotation.X, (float)view.Pose.Rotation.Y, (float)view.Pose.Rotation.Z, (float)view.Pose.Rotation.W));
+                    view.Pose.ApplyTo(camera.transform);
 
                     // Where the clip puts the cube at this time: its 8 corners through this view's camera; the silhouette is
                     // their convex hull, and its area centroid is where the image's alpha centroid must be.
@@ -183,20 +182,11 @@ namespace NerfDatasetCreator.Editor.Tests
                     Assert.That(Vector2.Distance(expected, centre), Is.LessThan(0.02f * width), "the silhouette's centroid lies near the projected centre");
 
                     Assert.That(texture.LoadImage(File.ReadAllBytes(Path.Combine(dataset, view.Files[0].RelativePath))), Is.True);
-                    double sx = 0, sy = 0, sa = 0;
-                    var pixels = texture.GetPixels32();
-                    for (var py = 0; py < texture.height; py++)
-                        for (var px = 0; px < texture.width; px++)
-                        {
-                            var a = pixels[py * texture.width + px].a / 255.0;
-                            sx += a * (px + 0.5);
-                            sy += a * (py + 0.5);
-                            sa += a;
-                        }
+                    var centroid = AlphaCentroid.Of(texture, out var sa);
                     Assert.That(sa, Is.GreaterThan(0), view.FramePath);
                     // Anti-aliased edges (2× supersampling) move an alpha centroid by a fraction of a pixel: 1 px at 400 px.
-                    Assert.That(sx / sa, Is.EqualTo(expected.x).Within(1.0), view.FramePath + " x at " + seconds + " s");
-                    Assert.That(sy / sa, Is.EqualTo(expected.y).Within(1.0), view.FramePath + " y at " + seconds + " s");
+                    Assert.That(centroid.x, Is.EqualTo(expected.x).Within(1.0), view.FramePath + " x at " + seconds + " s");
+                    Assert.That(centroid.y, Is.EqualTo(expected.y).Within(1.0), view.FramePath + " y at " + seconds + " s");
                 }
             }
             finally
