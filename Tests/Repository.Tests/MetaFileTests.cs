@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Diagnostics;
 using System.IO;
 using System.Linq;
 using NUnit.Framework;
@@ -73,48 +72,6 @@ namespace NerfDatasetCreator.Repository.Tests
                 .Where(m => !File.ReadAllText(m).Contains("folderAsset: yes"))
                 .ToList();
             Assert.That(bad, Is.Empty);
-        }
-
-        [Test]
-        public void TheUpmTreeIsAPackageWithAMetaForEverything()
-        {
-            var tree = Path.Combine(Path.GetTempPath(), "nerf-upm-" + Guid.NewGuid().ToString("N"));
-            try
-            {
-                RunAssembleScript(tree);
-                Assert.That(File.Exists(Path.Combine(tree, "package.json")), Is.True);
-                foreach (var projectFolder in new[] { "Assets", "Packages", "ProjectSettings", "Tests" + Path.DirectorySeparatorChar + "Core.Tests" })
-                    Assert.That(Directory.Exists(Path.Combine(tree, projectFolder)), Is.False, projectFolder + " must not be in the package");
-                Assert.That(MetaFiles.MissingMetas(tree), Is.Empty);
-                Assert.That(MetaFiles.OrphanedMetas(tree), Is.Empty);
-                Assert.That(File.Exists(Path.Combine(tree, "package.json.meta")), Is.True);
-                Assert.That(Directory.Exists(Path.Combine(tree, "Core")), Is.True, "the plugin's Core folder sits at the package root");
-                // The sample is imported by Package Manager into Assets/, so it needs its .metas too.
-                var sample = Path.Combine(tree, "Samples~", "NeRFSample");
-                Assert.That(File.Exists(Path.Combine(sample, "NeRFSample.unity")), Is.True);
-                Assert.That(MetaFiles.MissingMetas(sample), Is.Empty);
-                var declared = Newtonsoft.Json.Linq.JObject.Parse(File.ReadAllText(Path.Combine(tree, "package.json")))["samples"][0]["path"];
-                Assert.That(Directory.Exists(Path.Combine(tree, (string)declared)), Is.True, "package.json's sample path exists in the package");
-            }
-            finally
-            {
-                if (Directory.Exists(tree)) Directory.Delete(tree, true);
-            }
-        }
-
-        static void RunAssembleScript(string outDir)
-        {
-            var start = new ProcessStartInfo("bash", "\"" + RepositoryPaths.Combine(".ci", "assemble-upm") + "\" \"" + outDir + "\"")
-            {
-                RedirectStandardOutput = true,
-                RedirectStandardError = true,
-                UseShellExecute = false,
-            };
-            using var process = Process.Start(start);
-            var stderr = process.StandardError.ReadToEnd();
-            process.StandardOutput.ReadToEnd();
-            process.WaitForExit();
-            Assert.That(process.ExitCode, Is.EqualTo(0), "assemble-upm failed: " + stderr);
         }
     }
 }
