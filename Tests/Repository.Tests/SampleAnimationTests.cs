@@ -53,7 +53,9 @@ namespace NerfDatasetCreator.Repository.Tests
         {
             var settings = Config(file);
             Assert.That(settings.Target, Is.EqualTo(SampleClip.AnimatedTarget));
-            Assert.That(settings.Scene, Is.EqualTo("Assets/Samples/NeRFSample/NeRFSample.unity"));
+            Assert.That(settings.Scene, Is.EqualTo("NeRFSample.unity"), "beside the config, so it works where Package Manager imports the sample");
+            Assert.That(ScenePath.Resolve(settings.Scene, RepositoryPaths.Combine("Assets", "Samples", "NeRFSample", file), RepositoryPaths.Root),
+                Is.EqualTo("Assets/Samples/NeRFSample/NeRFSample.unity"));
             Assert.That(settings.Time.Sources & TimeSources.Animation, Is.EqualTo(TimeSources.Animation), "the clip is a legacy Animation's");
             Assert.That(settings.Time.Enabled, Is.True);
         }

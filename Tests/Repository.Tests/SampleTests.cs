@@ -100,9 +100,42 @@ namespace NerfDatasetCreator.Repository.Tests
         [TestCaseSource(nameof(Configs))]
         public void EverySampleConfigsSceneExistsAndHoldsItsTarget(string file)
         {
-            var settings = DatasetSettingsJson.ReadFile(Path.Combine(SampleFolder, file)).Settings;
-            var scene = RepositoryPaths.Combine(settings.Scene.Split('/'));
-            Assert.That(File.Exists(scene), Is.True, settings.Scene);
+            AssertSceneHoldsTarget(RepositoryPaths.Root, Path.Combine(SampleFolder, file), "Assets/Samples/NeRFSample/NeRFSample.unity");
+        }
+
+        /// <summary>
+        /// Package Manager ▸ Samples ▸ Import copies Samples~/NeRFSample to
+        /// Assets/Samples/&lt;package displayName&gt;/&lt;version&gt;/&lt;sample displayName&gt;/ (UnityCsReference,
+        /// PackageSample.cs, Sample.importPath). The batch entry resolves each config's scene from there (ScenePath).
+        /// </summary>
+        [TestCaseSource(nameof(Configs))]
+        public void EverySampleConfigFindsItsSceneWherePackageManagerImportsTheSample(string file)
+        {
+            var manifest = Newtonsoft.Json.Linq.JObject.Parse(File.ReadAllText(RepositoryPaths.Combine("package.json")));
+            var project = Path.Combine(Path.GetTempPath(), "nerf-imported-sample-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                var relative = "Assets/Samples/" + (string)manifest["displayName"] + "/" + (string)manifest["version"] + "/" + (string)manifest["samples"][0]["displayName"];
+                Assert.That(relative, Is.EqualTo("Assets/Samples/NeRF Dataset Creator/0.1.0/NeRF Sample"));
+                var imported = Path.Combine(project, relative);
+                Directory.CreateDirectory(imported);
+                foreach (var source in Directory.GetFiles(SampleFolder))
+                    File.Copy(source, Path.Combine(imported, Path.GetFileName(source)));
+                AssertSceneHoldsTarget(project, Path.Combine(imported, file), relative + "/NeRFSample.unity");
+            }
+            finally
+            {
+                if (Directory.Exists(project)) Directory.Delete(project, true);
+            }
+        }
+
+        static void AssertSceneHoldsTarget(string projectRoot, string configPath, string expectedScene)
+        {
+            var settings = DatasetSettingsJson.ReadFile(configPath).Settings;
+            var resolved = ScenePath.Resolve(settings.Scene, configPath, projectRoot);
+            Assert.That(resolved, Is.EqualTo(expectedScene));
+            var scene = Path.Combine(projectRoot, Path.Combine(resolved.Split('/')));
+            Assert.That(File.Exists(scene), Is.True, resolved);
             Assert.That(Regex.IsMatch(File.ReadAllText(scene), @"^\s*m_Name: " + Regex.Escape(settings.Target) + @"\s*$", RegexOptions.Multiline),
                 Is.True, "the scene has a GameObject named " + settings.Target);
         }

@@ -67,7 +67,11 @@ namespace NerfDatasetCreator.Editor
             foreach (var warning in read.Warnings) Debug.LogWarning(Prefix + warning);
             var settings = read.Settings;
 
-            var scenePath = string.IsNullOrWhiteSpace(args.Scene) ? settings.Scene : args.Scene;
+            // -nerfScene is project-relative; the config's "scene" may also be relative to the config file (ScenePath),
+            // so the sample's configs work where Package Manager imports them.
+            var scenePath = string.IsNullOrWhiteSpace(args.Scene) ? ScenePath.Resolve(settings.Scene, configPath, projectRoot) : args.Scene;
+            if (scenePath == null)
+                return Refuse("the scene is outside the project", new[] { new ValidationProblem("scene", settings.Scene, "leads outside the project folder " + projectRoot + ".", "Name a scene of this project: Assets/… from the project folder, or a path relative to the config file.") });
             if (!string.IsNullOrWhiteSpace(scenePath))
             {
                 if (!File.Exists(Path.Combine(projectRoot, scenePath)))
