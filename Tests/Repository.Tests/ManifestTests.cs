@@ -53,6 +53,18 @@ namespace NerfDatasetCreator.Repository.Tests
         }
 
         [Test]
+        public void TheToolPackageCarriesTheCommandNameAndThePackagesVersion()
+        {
+            // README: dotnet tool install … NerfDatasetCreator.Tool installs the command nerf-dataset.
+            var project = System.Xml.Linq.XDocument.Load(Path.Combine(RepositoryPaths.PluginFolder, "Tools~", "nerf-dataset", "nerf-dataset.csproj"));
+            string Property(string name) => project.Descendants(name).Single().Value;
+            Assert.That(Property("PackAsTool"), Is.EqualTo("true"));
+            Assert.That(Property("ToolCommandName"), Is.EqualTo("nerf-dataset"));
+            Assert.That(Property("PackageId"), Is.EqualTo("NerfDatasetCreator.Tool"));
+            Assert.That(Property("Version"), Is.EqualTo((string)Json("package.json")["version"]));
+        }
+
+        [Test]
         public void ProjectOpensInUnity2022_3()
         {
             var version = File.ReadAllText(RepositoryPaths.Combine("ProjectSettings", "ProjectVersion.txt"));
