@@ -23,9 +23,10 @@ namespace NerfDatasetCreator
             // Inside-out views: near/far from the target mean nothing; one plain warning replaces them.
             var volume = VolumePlanning.InsideOutWarning(settings);
             if (volume != null && (loaders & TargetLoaders.Nerf) != 0) warnings.Add(volume);
-            foreach (var problem in LoaderRangeCheck.ForCapture(poses, normalisation, target.Centre, Radius(target)))
+            foreach (var (range, problem) in LoaderRangeCheck.ClassifiedForCapture(poses, normalisation, target.Centre, Radius(target),
+                         NormalisationModes.Name(settings.Normalisation)))
             {
-                var isRange = problem.Field == LoaderRangeCheck.Field + ".near" || problem.Field == LoaderRangeCheck.Field + ".far";
+                var isRange = range != LoaderRangeCheck.Range.InitialCloud;
                 if (isRange && volume != null) continue;
                 var keep = isRange
                     ? (loaders & TargetLoaders.Nerf) != 0
