@@ -151,6 +151,7 @@ namespace NerfDatasetCreator.Editor
                 action => EditorApplication.delayCall += () => action())
             {
                 PickNotice = pickNotice,
+                PickCameras = ChooseCameras,
             };
             scroll = EditorGUILayout.BeginScrollView(scroll);
             preset = PresetSection.Draw(context, preset, report, new PresetSection.Actions
