@@ -86,6 +86,27 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void DNerfsDefaultTestskipBreaksAnEvenNumberOfOurMonocularTrainViews()
+        {
+            foreach (var (count, lastKept) in new[] { (6, 0.8), (5, 1.0) })
+            {
+                using (var temp = new TempFolder())
+                {
+                    var folder = temp.Combine("d");
+                    var s = Dynamic(16, 16, TimeMode.Monocular, TargetLoaders.Nerf);
+                    s.Train.Count = count;
+                    TestDatasets.FromPlan(folder, CapturePlan.Build(s, new PlanTarget(Vector3d.Zero, 0.5)));
+                    var times = ((JArray)JObject.Parse(File.ReadAllText(Path.Combine(folder, "transforms_train.json")))["frames"]).Select(f => (double)f["time"]).ToList();
+                    Assert.That(times.Last(), Is.EqualTo(1.0), "our last train view is at time 1");
+                    // load_blender.py:90–92 with run_dnerf.py's default testskip 2: meta['frames'][::2], train included;
+                    // run_dnerf.py:638 then asserts times[i_train[-1]] == 1.
+                    var kept = times.Where((t, i) => i % 2 == 0).ToList();
+                    Assert.That(kept.Last(), Is.EqualTo(lastKept).Within(1e-12), count + " train views");
+                }
+            }
+        }
+
+        [Test]
         public void StillCapturesAndOtherLoadersGetNoneOfThese()
         {
             var still = Dynamic(16, 12, TimeMode.Monocular, TargetLoaders.All);
