@@ -22,14 +22,15 @@ namespace NerfDatasetCreator
         /// What is wrong and how to fix it, and where (1-based line and column; Newtonsoft's <paramref name="line"/> and
         /// <paramref name="column"/> on entry, the place to edit on return).
         /// </summary>
-        public static string Explain(string message, string text, ref int line, ref int column)
+        /// <param name="emptyAdvice">What an empty file should hold; null for a settings config's advice.</param>
+        public static string Explain(string message, string text, ref int line, ref int column, string emptyAdvice = null)
         {
             var first = FirstSentence(message);
             if (string.IsNullOrWhiteSpace(text))
             {
                 line = 0;
                 column = 0;
-                return "the file is empty. A config is a JSON object: write {} for the defaults (every key is optional), or save one from the window (Save config for batch…).";
+                return "the file is empty. " + (emptyAdvice ?? "A config is a JSON object: write {} for the defaults (every key is optional), or save one from the window (Save config for batch…).");
             }
             if (first.StartsWith("After parsing a value an unexpected character was encountered", StringComparison.Ordinal))
             {
