@@ -413,7 +413,8 @@ namespace NerfDatasetCreator
             public ExtraOutput Extra(JToken t, string path)
             {
                 if (!ExtraOutputs.TryParse(String(t, path), out var output))
-                    throw Error(t, path, "must be \"none\", \"png\", \"exr\" or \"png+exr\", not " + Describe(t) + ".");
+                    throw Error(t, path, "must be \"none\", \"png\", \"exr\" or \"png+exr\", not " + Describe(t) + "." +
+                        SpellingSuggestion.Sentence((string)t, new[] { "none", "png", "exr", "png+exr" }));
                 return output;
             }
         }

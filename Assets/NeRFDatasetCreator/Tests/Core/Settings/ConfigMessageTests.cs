@@ -117,6 +117,12 @@ namespace NerfDatasetCreator.Tests
             Assert.That(mode.Detail, Does.EndWith("Did you mean \"recentre\"?"));
             var kind = Assert.Throws<SettingsFormatException>(() => DatasetSettingsJson.Read("{ \"splits\": { \"val\": { \"formation\": { \"kind\": \"obrit\" } } } }"));
             Assert.That(kind.Detail, Does.EndWith("Did you mean \"orbit\"?"));
+            var time = Assert.Throws<SettingsFormatException>(() => DatasetSettingsJson.Read("{ \"time\": { \"mode\": \"multiview\" } }"));
+            Assert.That(time.Detail, Does.EndWith("Did you mean \"multi-view\"?"));
+            var source = Assert.Throws<SettingsFormatException>(() => DatasetSettingsJson.Read("{ \"time\": { \"sources\": [\"animater\"] } }"));
+            Assert.That(source.Detail, Does.EndWith("Did you mean \"animator\"?"));
+            var depth = Assert.Throws<SettingsFormatException>(() => DatasetSettingsJson.Read("{ \"splits\": { \"train\": { \"depth\": \"pgn\" } } }"));
+            Assert.That(depth.Detail, Does.EndWith("Did you mean \"png\"?"));
             // Nothing close: no guess.
             Assert.That(DatasetSettingsJson.Read("{ \"colour\": 3 }").Warnings.Single().Fix, Does.Not.Contain("Did you mean"));
         }
