@@ -128,9 +128,11 @@ namespace NerfDatasetCreator.Editor
             if (last == null) return;
             EditorGUILayout.LabelField(last.Succeeded ? "Last run: done" : "Last run: exit " + last.ExitCode + (last.ExitCode == ToolExitCodes.UsageError ? " (usage)" : " (refused or problems found)"), EditorStyles.boldLabel);
             EditorGUILayout.SelectableLabel(last.CommandLine, EditorStyles.wordWrappedMiniLabel, GUILayout.Height(EditorGUIUtility.singleLineHeight * 2));
+            var text = string.Join("\n", last.Lines);
+            // Wrapped height at the view's width, so long lines (the tool's messages are one sentence each) are not cut.
+            var height = EditorStyles.wordWrappedLabel.CalcHeight(new GUIContent(text), Mathf.Max(100, EditorGUIUtility.currentViewWidth - 40));
             outputScroll = EditorGUILayout.BeginScrollView(outputScroll, GUILayout.MinHeight(80), GUILayout.MaxHeight(240));
-            EditorGUILayout.SelectableLabel(string.Join("\n", last.Lines), EditorStyles.wordWrappedLabel,
-                GUILayout.Height(EditorStyles.wordWrappedLabel.lineHeight * (last.Lines.Count + 1) + 8));
+            EditorGUILayout.SelectableLabel(text, EditorStyles.wordWrappedLabel, GUILayout.Height(height));
             EditorGUILayout.EndScrollView();
         }
 
