@@ -129,7 +129,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
             Assert.That(run.Out, Is.Empty);
             Assert.That(run.Err, Is.EqualTo(
-                "error: outDir = " + file + ": already exists; convert never overwrites files. Move or delete it, or pass another output folder.\n" +
+                "error: output = " + file + ": already exists (an earlier convert?); convert never overwrites files. Move or delete it, or convert into another folder (--out <folder>).\n" +
                 "convert refused: 1 problem; nothing was written.\n"));
             Assert.That(File.ReadAllText(file), Is.EqualTo("edited by hand"));
         }
@@ -143,7 +143,7 @@ namespace NerfDatasetCreator.Tool.Tests
             File.WriteAllText(leftover, "mine");
             var run = ToolRun.Of("convert", _dataset, "--to", "nerfstudio");
             Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
-            Assert.That(run.Err, Does.StartWith("error: outDir = " + leftover + ": already exists; convert never overwrites files."));
+            Assert.That(run.Err, Does.StartWith("error: output = " + leftover + ": already exists (an earlier convert?); convert never overwrites files."));
             Assert.That(File.Exists(Path.Combine(_dataset, "transforms.json")), Is.False, "nothing of the export was placed");
             Assert.That(Directory.GetFiles(paths), Is.EqualTo(new[] { leftover }));
             Assert.That(File.ReadAllText(leftover), Is.EqualTo("mine"));

@@ -197,7 +197,7 @@ namespace NerfDatasetCreator.Tool.Tests
             var output = _scratch.PathOf(new string('x', 240));
             var run = ToolRun.Of("plan", "--config", config, "--out", output);
             Assert.That(run.ExitCode, Is.EqualTo(2), run.ToString());
-            Assert.That(run.Err, Does.StartWith("error: name = xxxx").And.Contain("240 bytes"));
+            Assert.That(run.Err, Does.StartWith("error: --out = xxxx").And.Contain("240 bytes"));
             Assert.That(Interruptions.Entries(_scratch.Root).Where(n => n.StartsWith("xxxx")), Is.Empty);
         }
 

@@ -24,10 +24,13 @@ namespace NerfDatasetCreator
             var folder = Path.Combine(outDir, FolderName);
             foreach (var split in DatasetSplits.Names)
             {
-                var poses = scene.Split(split).Select(f => f.CameraToWorld).ToList();
+                var frames = scene.Split(split).ToList();
+                var poses = frames.Select(f => f.CameraToWorld).ToList();
                 if (poses.Count == 0) continue;
+                // A dynamic capture's times go into nerfstudio's path as render_time; instant-ngp's path has no time
+                // (convert already warns that the ngp export holds none).
                 var json = target == ExportTarget.Nerfstudio
-                    ? NerfstudioCameraPath.Build(poses, scene.Intrinsics)
+                    ? NerfstudioCameraPath.Build(poses, scene.Intrinsics, times: frames.Select(f => f.Time).ToList())
                     : NgpCameraPath.Build(poses, scene.Intrinsics);
                 var file = Path.Combine(folder, split + ".json");
                 // Checked here, before anything is placed: found only at the move, it would leave a half-placed export.

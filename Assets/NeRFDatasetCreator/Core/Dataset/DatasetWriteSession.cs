@@ -48,12 +48,12 @@ namespace NerfDatasetCreator
         /// <summary>
         /// Finishes or rolls back an interrupted earlier run on <paramref name="datasetFolder"/> (<see cref="Recovered"/>),
         /// checks it (<see cref="SafeOutput.CheckOutputFolder"/>; throws <see cref="InvalidParameterException"/> with
-        /// every problem) and creates the working folder with its journal.
+        /// every problem, naming the folder <paramref name="field"/>, as the user gave it) and creates the working folder with its journal.
         /// </summary>
-        public static DatasetWriteSession Begin(string datasetFolder, OverwritePolicy policy, string projectRoot = null, DateTime? now = null)
+        public static DatasetWriteSession Begin(string datasetFolder, OverwritePolicy policy, string projectRoot = null, DateTime? now = null, string field = "outputFolder")
         {
             var recovered = IsUsablePath(datasetFolder) ? Recovery.Run(datasetFolder) : Array.Empty<RecoveryNote>();
-            var problems = SafeOutput.CheckOutputFolder(datasetFolder, projectRoot, policy);
+            var problems = SafeOutput.CheckOutputFolder(datasetFolder, projectRoot, policy, field);
             if (problems.Count > 0) throw new InvalidParameterException(problems);
             var full = Path.GetFullPath(datasetFolder).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
             var parent = Path.GetDirectoryName(full);

@@ -39,11 +39,11 @@ namespace NerfDatasetCreator
         /// <summary>
         /// Every reason not to write a dataset into <paramref name="datasetFolder"/>. With no
         /// <paramref name="projectRoot"/>, a Unity project is recognised by an <c>Assets</c> folder next to
-        /// <c>ProjectSettings</c>.
+        /// <c>ProjectSettings</c>. <paramref name="field"/> is what the user gave the folder as: the config's
+        /// <c>outputFolder</c>, or a command line's <c>--out</c>.
         /// </summary>
-        public static IReadOnlyList<ValidationProblem> CheckOutputFolder(string datasetFolder, string projectRoot, OverwritePolicy policy)
+        public static IReadOnlyList<ValidationProblem> CheckOutputFolder(string datasetFolder, string projectRoot, OverwritePolicy policy, string field = "outputFolder")
         {
-            const string field = "outputFolder";
             var problems = new List<ValidationProblem>();
             string full;
             try

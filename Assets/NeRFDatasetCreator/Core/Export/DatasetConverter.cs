@@ -157,13 +157,17 @@ namespace NerfDatasetCreator
             return new ConversionResult(outDir, outDir, all, warnings);
         }
 
+        /// <summary>The field a refused destination is named by: what the user chooses with <c>--out</c> (or the export's default place).</summary>
+        public const string ExportOutputField = "output";
+
         /// <summary>Refuses, naming it, a destination that exists: convert never overwrites (every export checks before writing).</summary>
         internal static void EnsureAbsent(string path)
         {
             if (File.Exists(path) || Directory.Exists(path))
                 throw new InvalidParameterException(new[]
                 {
-                    new ValidationProblem("outDir", path, "already exists; convert never overwrites files.", "Move or delete it, or pass another output folder."),
+                    new ValidationProblem(ExportOutputField, path, "already exists (an earlier convert?); convert never overwrites files.",
+                        "Move or delete it, or convert into another folder (--out <folder>)."),
                 });
         }
 

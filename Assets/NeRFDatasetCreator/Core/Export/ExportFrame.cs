@@ -11,7 +11,7 @@ namespace NerfDatasetCreator
     /// </summary>
     public sealed class ExportFrame
     {
-        public ExportFrame(string split, string imagePath, Matrix4x4d cameraToWorld, string depthPath = null, string maskPath = null)
+        public ExportFrame(string split, string imagePath, Matrix4x4d cameraToWorld, string depthPath = null, string maskPath = null, double? time = null)
         {
             if (string.IsNullOrEmpty(split)) throw new ArgumentException("A frame needs a split (train, val or test).", nameof(split));
             if (string.IsNullOrEmpty(imagePath)) throw new ArgumentException("A frame needs an image path.", nameof(imagePath));
@@ -25,7 +25,11 @@ namespace NerfDatasetCreator
             CameraToWorld = cameraToWorld;
             DepthPath = string.IsNullOrEmpty(depthPath) ? null : ExportPaths.Normalise(depthPath);
             MaskPath = string.IsNullOrEmpty(maskPath) ? null : ExportPaths.Normalise(maskPath);
+            Time = time.HasValue && !double.IsNaN(time.Value) && !double.IsInfinity(time.Value) ? time : null;
         }
+
+        /// <summary>The frame's <c>time</c> in [0, 1] of a dynamic capture (D-NeRF's key), or null for a still frame.</summary>
+        public double? Time { get; }
 
         /// <summary><c>train</c>, <c>val</c> or <c>test</c>.</summary>
         public string Split { get; }

@@ -24,7 +24,7 @@ namespace NerfDatasetCreator
         public static ExportTarget? Parse(string value, out ValidationProblem problem)
         {
             var index = Array.FindIndex(Names, n => string.Equals(n, value?.Trim(), StringComparison.OrdinalIgnoreCase));
-            problem = index >= 0 ? null : new ValidationProblem("--to", value ?? "", "is not an export format.", "Use one of: " + string.Join(", ", Names.Select(n => n)) + ".");
+            problem = index >= 0 ? null : new ValidationProblem("--to", value ?? "", "is not an export format.", "Use one of: " + string.Join(", ", Names.Select(n => n)) + "." + SpellingSuggestion.Sentence(value, Names));
             return index >= 0 ? (ExportTarget?)index : null;
         }
     }

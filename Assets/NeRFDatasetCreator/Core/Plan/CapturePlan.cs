@@ -93,14 +93,19 @@ namespace NerfDatasetCreator
 
             if (settings.AutoDistance && !target.HasBounds)
             {
-                problems.Add(new ValidationProblem("distance", "\"auto\"", "needs the target's bounds, which are unknown here.",
-                    "Pick a target with renderers, or give the distance as a number."));
+                problems.Add(target.IsHeadless
+                    ? new ValidationProblem("distance", "\"auto\"", "needs the target's bounds, which only Unity measures: the headless tool plans for a target at the origin of unknown size.",
+                        "Give the distance as a number (about 3.5 × the target's radius keeps it in every loader's range; the window's Target step shows the suggestion), or capture with \"auto\" in Unity.")
+                    : new ValidationProblem("distance", "\"auto\"", "needs the target's bounds, which are unknown here.",
+                        "Pick a target with renderers, or give the distance as a number."));
                 return problems;
             }
             if (settings.Normalisation == NormalisationMode.FitTargetRadius && !target.HasBounds)
                 problems.Add(new ValidationProblem("normalisation", "\"" + NormalisationModes.Name(settings.Normalisation) + "\"",
                     "scales the target to a chosen radius, which needs the target's bounds; they are unknown here.",
-                    "Pick a target with renderers, or use \"recentre\" or \"nerf-synthetic\"."));
+                    target.IsHeadless
+                        ? "The headless tool knows no target: use \"recentre\" or \"nerf-synthetic\" here, or capture with \"fit-radius\" in Unity."
+                        : "Pick a target with renderers, or use \"recentre\" or \"nerf-synthetic\"."));
             if (!target.HasBounds) return problems;
             var distance = ResolveDistance(settings, target);
             var b = target.BoundingRadius;

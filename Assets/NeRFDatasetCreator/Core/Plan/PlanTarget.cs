@@ -8,10 +8,16 @@ namespace NerfDatasetCreator
     public readonly struct PlanTarget
     {
         public PlanTarget(Vector3d centre, double boundingRadius, double clipLengthSeconds = 0)
+            : this(centre, boundingRadius, clipLengthSeconds, false)
+        {
+        }
+
+        PlanTarget(Vector3d centre, double boundingRadius, double clipLengthSeconds, bool headless)
         {
             Centre = centre;
             BoundingRadius = boundingRadius;
             ClipLengthSeconds = clipLengthSeconds;
+            IsHeadless = headless;
         }
 
         public Vector3d Centre { get; }
@@ -22,6 +28,15 @@ namespace NerfDatasetCreator
 
         /// <summary>A target at the Unity origin with unknown bounds (the headless tool's case).</summary>
         public static PlanTarget AtOrigin => new PlanTarget(Vector3d.Zero, 0);
+
+        /// <summary>
+        /// The headless tool's target: at the origin with unknown bounds, and no scene to pick another from, so a
+        /// message asks for a number rather than "a target with renderers".
+        /// </summary>
+        public static PlanTarget Headless => new PlanTarget(Vector3d.Zero, 0, 0, true);
+
+        /// <summary>True for <see cref="Headless"/>: there is no scene, so no target can be picked.</summary>
+        public bool IsHeadless { get; }
 
         public bool HasBounds => BoundingRadius > 0 && !double.IsInfinity(BoundingRadius);
     }

@@ -6,7 +6,8 @@ namespace NerfDatasetCreator
     /// The plan-time warnings of reference §2.4 for the loaders the settings list: <see cref="LoaderRangeCheck"/>'s
     /// near/far checks only matter to NeRF (bmild/nerf, nerf-pytorch); its initial-cloud check matters to 3DGS when no
     /// points3d.ply is written, and to nerfstudio when the target leaves its ±1.5 box; instant-ngp warns when no
-    /// aabb_scale holds the target; nerfstudio when the splits differ in depth or masks (<see cref="SplitExtrasCheck"/>).
+    /// aabb_scale holds the target; nerfstudio when the splits differ in depth or masks (<see cref="SplitExtrasCheck"/>);
+    /// D-NeRF and 4DGaussians (a dynamic capture's nerf and 3dgs) where their code cannot take the capture (<see cref="DynamicLoaderLimits"/>).
     /// With unknown bounds the target counts as a point at its centre.
     /// </summary>
     static class PlanWarnings
@@ -23,9 +24,10 @@ namespace NerfDatasetCreator
             // Inside-out views: near/far from the target mean nothing; one plain warning replaces them.
             var volume = VolumePlanning.InsideOutWarning(settings);
             if (volume != null && (loaders & TargetLoaders.Nerf) != 0) warnings.Add(volume);
-            foreach (var problem in LoaderRangeCheck.ForCapture(poses, normalisation, target.Centre, Radius(target)))
+            foreach (var (range, problem) in LoaderRangeCheck.ClassifiedForCapture(poses, normalisation, target.Centre, Radius(target),
+                         NormalisationModes.Name(settings.Normalisation)))
             {
-                var isRange = problem.Field == LoaderRangeCheck.Field + ".near" || problem.Field == LoaderRangeCheck.Field + ".far";
+                var isRange = range != LoaderRangeCheck.Range.InitialCloud;
                 if (isRange && volume != null) continue;
                 var keep = isRange
                     ? (loaders & TargetLoaders.Nerf) != 0
@@ -35,6 +37,7 @@ namespace NerfDatasetCreator
             }
             if ((loaders & TargetLoaders.InstantNgp) != 0) AabbScale.ForRadius(reach, warnings);
             if ((loaders & TargetLoaders.Nerfstudio) != 0) warnings.AddRange(SplitExtrasCheck.For(settings));
+            warnings.AddRange(DynamicLoaderLimits.For(settings));
             return warnings;
         }
 

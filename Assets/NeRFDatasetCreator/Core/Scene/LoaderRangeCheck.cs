@@ -15,12 +15,43 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class LoaderRangeCheck
     {
+        /// <summary>
+        /// The key a plan's warnings name: the setting that fixes them. (They used to name "normalisation.near",
+        /// ".far" and ".targetRadius", keys no config has.)
+        /// </summary>
         public const string Field = "normalisation";
 
-        public static IReadOnlyList<ValidationProblem> Check(IEnumerable<Vector3d> cameraCentres, double targetRadius, Vector3d? targetCentre = null)
+        /// <summary>What a dataset's warnings name when no settings are known (validate, convert): the poses themselves.</summary>
+        public const string DatasetField = "transform_matrix";
+
+        /// <summary>Which of the loaders' ranges a warning is about.</summary>
+        public enum Range
+        {
+            /// <summary>NeRF's near 2 (bmild/nerf, nerf-pytorch).</summary>
+            Near,
+            /// <summary>NeRF's far 6.</summary>
+            Far,
+            /// <summary>3DGS's random initial cloud in ±1.3 (and nerfstudio's ±1.5 box).</summary>
+            InitialCloud,
+        }
+
+        /// <summary>
+        /// The warnings for a dataset's cameras, named <see cref="DatasetField"/> with the measured distance as the value.
+        /// </summary>
+        public static IReadOnlyList<ValidationProblem> Check(IEnumerable<Vector3d> cameraCentres, double targetRadius, Vector3d? targetCentre = null) =>
+            Classified(cameraCentres, targetRadius, targetCentre, null).Select(r => r.Problem).ToList();
+
+        /// <summary>
+        /// Each warning with its <see cref="Range"/>. With <paramref name="normalisationMode"/> (a plan's), they name the
+        /// <c>normalisation</c> setting and its value, which is what fixes them; without, the dataset's poses.
+        /// </summary>
+        public static List<(Range Range, ValidationProblem Problem)> Classified(IEnumerable<Vector3d> cameraCentres, double targetRadius,
+            Vector3d? targetCentre, string normalisationMode)
         {
             var centre = targetCentre ?? Vector3d.Zero;
-            var problems = new List<ValidationProblem>();
+            var problems = new List<(Range, ValidationProblem)>();
+            var field = normalisationMode == null ? DatasetField : Field;
+            string Shown(double measured) => normalisationMode == null ? F(measured) : "\"" + normalisationMode + "\"";
             var b = Math.Max(0, targetRadius);
             // One pass without lists: a plan checks up to 300 000 cameras here.
             int count = 0, nearCount = 0, farCount = 0;
@@ -45,20 +76,20 @@ namespace NerfDatasetCreator
             var suggestion = SuggestedScaleText(sum / count, b);
 
             if (nearCount > 0)
-                problems.Add(new ValidationProblem(Field + ".near", F(nearest - b),
+                problems.Add((Range.Near, new ValidationProblem(field, Shown(nearest - b),
                     $"{nearCount} of {count} cameras are closer to the target's surface than NeRF's fixed near distance {F(SceneNormalisation.NerfNear)} (closest: {F(nearest - b)} output units); bmild/nerf and nerf-pytorch will not see that part.",
-                    suggestion));
+                    suggestion)));
 
             if (farCount > 0)
-                problems.Add(new ValidationProblem(Field + ".far", F(farthest + b),
+                problems.Add((Range.Far, new ValidationProblem(field, Shown(farthest + b),
                     $"{farCount} of {count} cameras see target surface beyond NeRF's fixed far distance {F(SceneNormalisation.NerfFar)} (farthest: {F(farthest + b)} output units); bmild/nerf and nerf-pytorch will cut it off.",
-                    suggestion));
+                    suggestion)));
 
             var reach = centre.Length + b;
             if (reach > SceneNormalisation.GaussianSplattingInitHalfSize)
-                problems.Add(new ValidationProblem(Field + ".targetRadius", F(reach),
+                problems.Add((Range.InitialCloud, new ValidationProblem(field, Shown(reach),
                     $"the target reaches beyond 3DGS's random initial cloud [−1.3, 1.3]³ (and, above 1.5, nerfstudio blender-data's ±1.5 box).",
-                    "Recentre on the target and export points3d.ply (3DGS then starts from it), or scale the target to radius 1.3 (FitTargetRadius)."));
+                    "Recentre on the target and export points3d.ply (pointCloudPoints; 3DGS then starts from it), or scale the target to radius 1.3 (normalisation \"fit-radius\" with normalisedTargetRadius 1.3).")));
             return problems;
         }
 
@@ -67,9 +98,14 @@ namespace NerfDatasetCreator
         /// they will be after <paramref name="normalisation"/>.
         /// </summary>
         public static IReadOnlyList<ValidationProblem> ForCapture(IEnumerable<UnityPose> poses, SceneNormalisation normalisation,
-            Vector3d targetCentreUnity, double targetRadiusUnity) =>
-            Check(poses.Select(p => normalisation.ApplyToUnityPoint(p.Position)), targetRadiusUnity * normalisation.Scale,
-                normalisation.ApplyToUnityPoint(targetCentreUnity));
+            Vector3d targetCentreUnity, double targetRadiusUnity, string normalisationMode = null) =>
+            ClassifiedForCapture(poses, normalisation, targetCentreUnity, targetRadiusUnity, normalisationMode).Select(r => r.Problem).ToList();
+
+        /// <summary><see cref="ForCapture"/> with each warning's <see cref="Range"/>.</summary>
+        public static List<(Range Range, ValidationProblem Problem)> ClassifiedForCapture(IEnumerable<UnityPose> poses, SceneNormalisation normalisation,
+            Vector3d targetCentreUnity, double targetRadiusUnity, string normalisationMode) =>
+            Classified(poses.Select(p => normalisation.ApplyToUnityPoint(p.Position)), targetRadiusUnity * normalisation.Scale,
+                normalisation.ApplyToUnityPoint(targetCentreUnity), normalisationMode);
 
         static string SuggestedScaleText(double meanDistance, double b)
         {

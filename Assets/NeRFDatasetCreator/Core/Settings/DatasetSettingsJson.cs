@@ -147,7 +147,22 @@ namespace NerfDatasetCreator
             }
         }
 
-        public static SettingsReadResult ReadFile(string path) => Read(FileOps.ReadText(path), path);
+        /// <summary>
+        /// Reads a config file. A folder, a missing file and an empty file are each one <see cref="SettingsFormatException"/>
+        /// naming the file and the fix, not the runtime's text.
+        /// </summary>
+        public static SettingsReadResult ReadFile(string path)
+        {
+            if (Directory.Exists(path))
+            {
+                var configs = Directory.EnumerateFiles(path, "*.json").Select(Path.GetFileName).OrderBy(n => n, StringComparer.Ordinal).Take(3).ToList();
+                throw new SettingsFormatException(path, 0, 0, "", "is a folder, not a config file. Give the settings file itself" +
+                    (configs.Count > 0 ? ", e.g. " + Path.Combine(path, configs[0]) + " (this folder holds " + string.Join(", ", configs) + ")." : " (a .json file, such as one saved by the window's Save config for batch…)."));
+            }
+            if (!File.Exists(path))
+                throw new SettingsFormatException(path, 0, 0, "", "does not exist (looked for " + Path.GetFullPath(path) + "). Check the path; relative paths start at the current folder.");
+            return Read(FileOps.ReadText(path), path);
+        }
 
         /// <summary>
         /// Reads a config. Throws <see cref="SettingsFormatException"/> (with line and column) when the text is not
@@ -170,7 +185,9 @@ namespace NerfDatasetCreator
             }
             catch (JsonReaderException e)
             {
-                throw new SettingsFormatException(sourceName, e.LineNumber, e.LinePosition, "", "not valid JSON: " + FirstSentence(e.Message));
+                int line = e.LineNumber, column = e.LinePosition;
+                var detail = JsonSyntaxHelp.Explain(e.Message, text, ref line, ref column);
+                throw new SettingsFormatException(sourceName, line, column, "", detail);
             }
 
             var reader = new Reader(sourceName);
@@ -230,7 +247,8 @@ namespace NerfDatasetCreator
                     {
                         var itemPath = p + "[" + index++ + "]";
                         if (!TargetLoaderNames.TryParse(reader.String(item, itemPath), out var loader))
-                            throw reader.Error(item, itemPath, "is not a known loader; use one of " + TargetLoaderNames.NameList() + ".");
+                            throw reader.Error(item, itemPath, "is not a known loader; use one of " + TargetLoaderNames.NameList() + "." +
+                                SpellingSuggestion.Sentence(item.Type == JTokenType.String ? (string)item : "", TargetLoaderNames.NameList().Split(new[] { ", " }, StringSplitOptions.None)));
                         loaders |= loader;
                     }
                     s.Loaders = loaders;
@@ -238,7 +256,8 @@ namespace NerfDatasetCreator
                 ["normalisation"] = (t, p) =>
                 {
                     if (!NormalisationModes.TryParse(reader.String(t, p), out var mode))
-                        throw reader.Error(t, p, "must be one of " + NormalisationModes.NameList() + ", not " + Describe(t) + ".");
+                        throw reader.Error(t, p, "must be one of " + NormalisationModes.NameList() + ", not " + Describe(t) + "." +
+                            SpellingSuggestion.Sentence((string)t, NormalisationModes.All.Select(NormalisationModes.Name)));
                     s.Normalisation = mode;
                 },
                 ["normalisedTargetRadius"] = (t, p) => s.NormalisedTargetRadius = reader.Double(t, p),
@@ -249,6 +268,8 @@ namespace NerfDatasetCreator
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),
             });
+            if (reader.Errors.Count == 1) throw reader.Errors[0];
+            if (reader.Errors.Count > 1) throw new SettingsFormatException(reader.Errors);
             return new SettingsReadResult(s, reader.Warnings);
         }
 
@@ -272,7 +293,8 @@ namespace NerfDatasetCreator
             var kindToken = obj["kind"];
             if (kindToken == null) throw reader.Error(token, path + ".kind", "is missing; use one of " + FormationKinds.NameList() + ".");
             if (!FormationKinds.TryParse(reader.String(kindToken, path + ".kind"), out var kind))
-                throw reader.Error(kindToken, path + ".kind", Describe(kindToken) + " is not a known formation; use one of " + FormationKinds.NameList() + ".");
+                throw reader.Error(kindToken, path + ".kind", Describe(kindToken) + " is not a known formation; use one of " + FormationKinds.NameList() + "." +
+                    SpellingSuggestion.Sentence((string)kindToken, FormationKinds.All.Select(FormationKinds.Name)));
             f.Kind = kind;
             var handlers = new Dictionary<string, Action<JToken, string>> { ["kind"] = (t, p) => { } };
             foreach (var name in FormationSettings.ParameterNames(kind))
@@ -300,19 +322,15 @@ namespace NerfDatasetCreator
             }
         }
 
-        static string FirstSentence(string message)
-        {
-            // Newtonsoft appends " Path '…', line L, position P."; the caller reports the place itself.
-            var cut = message.IndexOf(" Path '", StringComparison.Ordinal);
-            if (cut < 0) cut = message.IndexOf(", line ", StringComparison.Ordinal);
-            return cut > 0 ? message.Substring(0, cut) : message;
-        }
 
         /// <summary>Walks a config, typing values and collecting warnings with the place they come from.</summary>
         internal sealed class Reader
         {
             readonly string _source;
             public readonly List<ValidationProblem> Warnings = new List<ValidationProblem>();
+
+            /// <summary>Every value of the wrong type: each key is read on its own, so one mistake hides no other.</summary>
+            public readonly List<SettingsFormatException> Errors = new List<SettingsFormatException>();
 
             public Reader(string source) => _source = source;
 
@@ -327,11 +345,23 @@ namespace NerfDatasetCreator
                 foreach (var property in ((JObject)token).Properties())
                 {
                     var childPath = path.Length == 0 ? property.Name : path + "." + property.Name;
-                    if (handlers.TryGetValue(property.Name, out var handler)) handler(property.Value, childPath);
+                    if (handlers.TryGetValue(property.Name, out var handler))
+                    {
+                        try
+                        {
+                            handler(property.Value, childPath);
+                        }
+                        catch (SettingsFormatException e)
+                        {
+                            // Collected, not thrown: the user sees every wrong value in one pass, as with range checks.
+                            Errors.Add(e);
+                        }
+                    }
                     else
                         Warnings.Add(new ValidationProblem(childPath, Describe(property.Value),
                             "is not a known setting" + unknownNote + Where(property) + " and is ignored.",
-                            "Remove it or correct its spelling; the known keys here are: " + string.Join(", ", handlers.Keys) + "."));
+                            "Remove it or correct its spelling; the known keys here are: " + string.Join(", ", handlers.Keys) + "." +
+                            SpellingSuggestion.Sentence(property.Name, handlers.Keys)));
                 }
             }
 
@@ -383,7 +413,8 @@ namespace NerfDatasetCreator
             public ExtraOutput Extra(JToken t, string path)
             {
                 if (!ExtraOutputs.TryParse(String(t, path), out var output))
-                    throw Error(t, path, "must be \"none\", \"png\", \"exr\" or \"png+exr\", not " + Describe(t) + ".");
+                    throw Error(t, path, "must be \"none\", \"png\", \"exr\" or \"png+exr\", not " + Describe(t) + "." +
+                        SpellingSuggestion.Sentence((string)t, new[] { "none", "png", "exr", "png+exr" }));
                 return output;
             }
         }

@@ -1,4 +1,6 @@
 using System;
+using System.Collections.Generic;
+using System.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -14,6 +16,28 @@ namespace NerfDatasetCreator
             Field = field ?? "";
             Detail = detail ?? "";
         }
+
+        /// <summary>
+        /// Every wrong value of a config at once, as range checks report them: the first is this exception's place and
+        /// detail; <see cref="All"/> lists each, and <see cref="Exception.Message"/> holds one line per error.
+        /// </summary>
+        public SettingsFormatException(IReadOnlyList<SettingsFormatException> errors)
+            : base(string.Join("\n", (errors ?? throw new ArgumentNullException(nameof(errors))).Select(e => e.Message)))
+        {
+            if (errors.Count == 0) throw new ArgumentException("at least one error", nameof(errors));
+            var first = errors[0];
+            FileName = first.FileName;
+            Line = first.Line;
+            Column = first.Column;
+            Field = first.Field;
+            Detail = first.Detail;
+            _all = errors.ToList();
+        }
+
+        readonly List<SettingsFormatException> _all;
+
+        /// <summary>Every error, in the order of the file (just this one for a syntax error).</summary>
+        public IReadOnlyList<SettingsFormatException> All => _all ?? new List<SettingsFormatException> { this };
 
         /// <summary>The file (or "config") the text came from.</summary>
         public string FileName { get; }

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using Newtonsoft.Json;
 using Newtonsoft.Json.Linq;
 
@@ -48,7 +49,8 @@ namespace NerfDatasetCreator
                 ["mode"] = (v, p) =>
                 {
                     if (!TimeModes.TryParse(reader.String(v, p), out var mode))
-                        throw reader.Error(v, p, "must be one of " + TimeModes.NameList() + ".");
+                        throw reader.Error(v, p, "must be one of " + TimeModes.NameList() + "." +
+                            SpellingSuggestion.Sentence((string)v, TimeModes.All.Select(TimeModes.Name)));
                     t.Mode = mode;
                 },
                 ["sources"] = (v, p) =>
@@ -60,7 +62,8 @@ namespace NerfDatasetCreator
                     {
                         var itemPath = p + "[" + index++ + "]";
                         if (!TimeSourceNames.TryParse(reader.String(item, itemPath), out var source))
-                            throw reader.Error(item, itemPath, "is not a time source; use one of " + TimeSourceNames.NameList() + ".");
+                            throw reader.Error(item, itemPath, "is not a time source; use one of " + TimeSourceNames.NameList() + "." +
+                                SpellingSuggestion.Sentence((string)item, new[] { "timeline", "animator", "animation", "particles" }));
                         sources |= source;
                     }
                     t.Sources = sources;

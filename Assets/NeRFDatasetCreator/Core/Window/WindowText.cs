@@ -73,6 +73,15 @@ namespace NerfDatasetCreator
         public static string ConfigError(SettingsFormatException error)
         {
             if (error == null) throw new ArgumentNullException(nameof(error));
+            var all = error.All;
+            if (all.Count > 1)
+            {
+                // Every wrong value at once, so that one load shows all there is to fix.
+                var parts = new System.Collections.Generic.List<string>();
+                foreach (var e in all) parts.Add(Where(e) + (e.Field.Length == 0 ? "" : e.Field + ": ") + e.Detail);
+                return "Not loaded (" + all.Count.ToString(CultureInfo.InvariantCulture) + " errors in " + System.IO.Path.GetFileName(error.FileName) + "): " +
+                       string.Join(" ", parts) + " The window's settings are unchanged.";
+            }
             var where = error.Line > 0
                 ? "line " + error.Line.ToString(CultureInfo.InvariantCulture) + ", column " + error.Column.ToString(CultureInfo.InvariantCulture)
                 : "";
@@ -80,6 +89,9 @@ namespace NerfDatasetCreator
             return "Not loaded (" + (where.Length == 0 ? "" : where + " of ") + System.IO.Path.GetFileName(error.FileName) + "): " + field + error.Detail +
                    " The window's settings are unchanged.";
         }
+
+        static string Where(SettingsFormatException e) =>
+            e.Line > 0 ? "(line " + e.Line.ToString(CultureInfo.InvariantCulture) + ", column " + e.Column.ToString(CultureInfo.InvariantCulture) + ") " : "";
 
         /// <summary>The progress line under the Create button.</summary>
         public static string Progress(int done, int total, double viewsPerSecond)

@@ -52,7 +52,8 @@ namespace NerfDatasetCreator.Editor
 
             var projectRoot = Directory.GetParent(Application.dataPath).FullName;
             var configPath = Path.GetFullPath(Path.Combine(projectRoot, args.ConfigPath));
-            if (!File.Exists(configPath))
+            // A folder is not "missing": DatasetSettingsJson.ReadFile says it is a folder and names a config inside it.
+            if (!File.Exists(configPath) && !Directory.Exists(configPath))
                 return Refuse("the config file is missing", new[] { new ValidationProblem("-nerfConfig", configPath, "does not exist.", "Pass the path of a config saved by the window (Save config for batch…) or written by hand.") });
             SettingsReadResult read;
             try

@@ -28,7 +28,7 @@ namespace NerfDatasetCreator.Editor
             switch (source.Kind)
             {
                 case CameraSourceKind.ImportedPoses:
-                    DrawImported(c, source);
+                    DrawImported(c, split, source);
                     break;
                 case CameraSourceKind.SceneCameras:
                     source.ObjectPath = PickObject(c, "Parent of the cameras", "Every active camera at and below this object is one view, in hierarchy order.", source.ObjectPath, typeof(GameObject));
@@ -48,12 +48,15 @@ namespace NerfDatasetCreator.Editor
             return true;
         }
 
-        static void DrawImported(WindowContext c, CameraSourceSettings source)
+        static void DrawImported(WindowContext c, DatasetSplit split, CameraSourceSettings source)
         {
             EditorGUILayout.BeginHorizontal();
             source.Path = EditorGUILayout.TextField(new GUIContent("File or model folder", "A transforms JSON (Blender, nerfstudio, instant-ngp, this plugin) or a COLMAP text model folder such as sparse/0; relative to the project folder."), source.Path ?? "");
-            if (GUILayout.Button("File…", GUILayout.Width(48))) c.Later(() => Pick(source, folder: false));
-            if (GUILayout.Button("Folder…", GUILayout.Width(60))) c.Later(() => Pick(source, folder: true));
+            // The dialog runs after this GUI event, when `source` (part of this event's working copy) is gone: the
+            // window stores the pick itself (PickedPaths.WithImportedCameras), as it does for the output folder.
+            var start = PickStart(source.Path);
+            if (GUILayout.Button("File…", GUILayout.Width(48))) c.Later(() => c.PickCameras?.Invoke(split, start, false));
+            if (GUILayout.Button("Folder…", GUILayout.Width(60))) c.Later(() => c.PickCameras?.Invoke(split, start, true));
             EditorGUILayout.EndHorizontal();
             var index = System.Array.IndexOf(FileSplitValues, source.FileSplit ?? "");
             index = EditorGUILayout.Popup("Cameras of the file", index < 0 ? 0 : index, FileSplitLabels);
@@ -141,16 +144,23 @@ namespace NerfDatasetCreator.Editor
             return path ?? "";
         }
 
-        static void Pick(CameraSourceSettings source, bool folder)
+        /// <summary>The folder a picker opens in: the current path's folder, or "" (the dialog's default).</summary>
+        static string PickStart(string path)
         {
-            var start = string.IsNullOrEmpty(source.Path) ? "" : Path.GetDirectoryName(Path.GetFullPath(source.Path));
-            var chosen = folder
+            try
+            {
+                return string.IsNullOrEmpty(path) ? "" : Path.GetDirectoryName(Path.GetFullPath(path));
+            }
+            catch (System.Exception e) when (e is System.ArgumentException || e is System.NotSupportedException || e is PathTooLongException)
+            {
+                return "";
+            }
+        }
+
+        /// <summary>The dialog of the File… and Folder… buttons; null when cancelled.</summary>
+        public static string ShowPicker(string start, bool folder) =>
+            folder
                 ? EditorUtility.OpenFolderPanel("COLMAP text model folder (cameras.txt, images.txt)", start, "")
                 : EditorUtility.OpenFilePanel("Transforms file", start, "json");
-            if (string.IsNullOrEmpty(chosen)) return;
-            // Inside the project the path is kept relative, so the config works on every machine that has the project.
-            var project = Path.GetFullPath(Directory.GetCurrentDirectory()).Replace('\\', '/').TrimEnd('/') + "/";
-            source.Path = chosen.Replace('\\', '/').StartsWith(project, System.StringComparison.Ordinal) ? chosen.Substring(project.Length) : chosen;
-        }
     }
 }

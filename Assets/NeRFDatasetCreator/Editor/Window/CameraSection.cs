@@ -10,7 +10,7 @@ namespace NerfDatasetCreator.Editor
 
         public static void Draw(WindowContext c)
         {
-            SectionHeader.Draw(c, WindowStep.Camera, "Camera");
+            if (!SectionHeader.Foldout(c, WindowStep.Camera, "Camera")) return;
             var s = c.Settings;
             var camera = s.Camera;
 

@@ -16,10 +16,25 @@ namespace NerfDatasetCreator.Editor
         {
             var chosen = EditorUtility.OpenFolderPanel("Parent folder of the dataset", start ?? ProjectRoot, "");
             if (string.IsNullOrEmpty(chosen) || this == null) return;
-            var edited = Store.Settings.Clone();
-            edited.OutputFolder = chosen;
-            Commit(edited, "Choose NeRF dataset folder");
+            UseOutputFolder(chosen);
         }
+
+        /// <summary>What the output folder's "…" picker does with the chosen folder: one undo step on the stored settings.</summary>
+        public void UseOutputFolder(string chosen) => Commit(PickedPaths.WithOutputFolder(Store.Settings, chosen), "Choose NeRF dataset folder");
+
+        void ChooseCameras(DatasetSplit split, string start, bool folder)
+        {
+            var chosen = CameraSourceSection.ShowPicker(start, folder);
+            if (string.IsNullOrEmpty(chosen) || this == null) return;
+            UseImportedCameras(split, chosen);
+        }
+
+        /// <summary>
+        /// What the Imported cameras' File… and Folder… pickers do with the chosen path: the split imports its cameras
+        /// from it (kept relative to the project when inside it), as one undo step on the stored settings.
+        /// </summary>
+        public void UseImportedCameras(DatasetSplit split, string chosen) =>
+            Commit(PickedPaths.WithImportedCameras(Store.Settings, split, chosen, ProjectRoot), "Choose imported cameras");
 
         void SavePreset()
         {

@@ -57,6 +57,7 @@ namespace NerfDatasetCreator.Editor
             preview.Enabled = previewOn;
             Undo.undoRedoPerformed += OnUndoRedo;
             CaptureController.Changed += Repaint;
+            DatasetToolRunner.Changed += Repaint;
             // Editor-wide events rather than the OnHierarchyChange / OnInspectorUpdate messages, which Unity sends only
             // to the visible tab of a dock area (HostView), so the preview keeps following a docked-away window too.
             EditorApplication.hierarchyChanged += OnHierarchyChanged;
@@ -69,6 +70,7 @@ namespace NerfDatasetCreator.Editor
         {
             Undo.undoRedoPerformed -= OnUndoRedo;
             CaptureController.Changed -= Repaint;
+            DatasetToolRunner.Changed -= Repaint;
             EditorApplication.hierarchyChanged -= OnHierarchyChanged;
             EditorApplication.update -= OnEditorUpdate;
             preview?.Dispose();
@@ -151,6 +153,7 @@ namespace NerfDatasetCreator.Editor
                 action => EditorApplication.delayCall += () => action())
             {
                 PickNotice = pickNotice,
+                PickCameras = ChooseCameras,
             };
             scroll = EditorGUILayout.BeginScrollView(scroll);
             preset = PresetSection.Draw(context, preset, report, new PresetSection.Actions
@@ -179,6 +182,7 @@ namespace NerfDatasetCreator.Editor
             PreviewSection.Draw(preview);
             previewOn = preview.Enabled;
             foregroundCapture = CreateSection.Draw(context, capture, StartCapture, foregroundCapture);
+            if (!capture.IsRunning) ExportSection.Draw(capture.LastResult);
             EditorGUILayout.EndScrollView();
         }
 

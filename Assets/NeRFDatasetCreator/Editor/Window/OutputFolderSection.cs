@@ -10,7 +10,7 @@ namespace NerfDatasetCreator.Editor
     {
         public static void Draw(WindowContext c, string projectRoot, Action<string> chooseFolder)
         {
-            SectionHeader.Draw(c, WindowStep.OutputFolder, "Output folder");
+            if (!SectionHeader.Foldout(c, WindowStep.OutputFolder, "Output folder")) return;
             var s = c.Settings;
             s.Name = EditorGUILayout.TextField("Dataset name", s.Name);
             ValidationMessages.For(c, WindowFields.Name);

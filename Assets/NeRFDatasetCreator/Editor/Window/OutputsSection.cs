@@ -9,7 +9,7 @@ namespace NerfDatasetCreator.Editor
     {
         public static void Draw(WindowContext c)
         {
-            SectionHeader.Draw(c, WindowStep.Outputs, "Outputs per split");
+            if (!SectionHeader.Foldout(c, WindowStep.Outputs, "Outputs per split")) return;
             EditorGUILayout.LabelField("Every view writes its RGBA image; add passes per split.", EditorStyles.wordWrappedMiniLabel);
             foreach (var split in DatasetSplits.All)
             {

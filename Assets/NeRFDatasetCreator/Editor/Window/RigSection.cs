@@ -11,7 +11,7 @@ namespace NerfDatasetCreator.Editor
 
         public static void Draw(WindowContext c)
         {
-            SectionHeader.Draw(c, WindowStep.Rig, "Rig per split");
+            if (!SectionHeader.Foldout(c, WindowStep.Rig, "Rig per split")) return;
             var s = c.Settings;
             s.Seed = EditorGUILayout.LongField("Seed (random formations)", s.Seed);
             ValidationMessages.For(c, WindowFields.Seed);

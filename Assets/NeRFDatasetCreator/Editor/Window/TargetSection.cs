@@ -9,7 +9,7 @@ namespace NerfDatasetCreator.Editor
     {
         public static void Draw(WindowContext c)
         {
-            SectionHeader.Draw(c, WindowStep.Target, "Target");
+            if (!SectionHeader.Foldout(c, WindowStep.Target, "Target")) return;
             var s = c.Settings;
 
             EditorGUI.BeginChangeCheck();

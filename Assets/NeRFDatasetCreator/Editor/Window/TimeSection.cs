@@ -11,7 +11,7 @@ namespace NerfDatasetCreator.Editor
     {
         public static void Draw(WindowContext c)
         {
-            SectionHeader.Draw(c, WindowStep.Time, "Time");
+            if (!SectionHeader.Foldout(c, WindowStep.Time, "Time")) return;
             var time = c.Settings.Time;
             time.Mode = (TimeMode)EditorGUILayout.Popup("Mode", (int)time.Mode, WindowText.TimeModeLabels);
             ValidationMessages.For(c, WindowFields.TimeModeField);

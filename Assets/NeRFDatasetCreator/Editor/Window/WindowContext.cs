@@ -48,5 +48,11 @@ namespace NerfDatasetCreator.Editor
         /// inside OnGUI, where a modal dialog or a render would break the window's layout state.
         /// </summary>
         public Action<Action> Later { get; }
+
+        /// <summary>
+        /// Opens the imported-cameras picker for a split (start folder, folder rather than file) and stores the pick
+        /// in the window's settings; set by the window, called from <see cref="Later"/>.
+        /// </summary>
+        public Action<DatasetSplit, string, bool> PickCameras { get; set; }
     }
 }

@@ -94,7 +94,8 @@ namespace NerfDatasetCreator
                         problems.Add(new ValidationProblem(field + ".file_path", image, $"is {header.Width}×{header.Height} but {sizeSource} is {size.Width}×{size.Height}.", "Every loader needs one image size for the whole dataset."));
                     frames.Add(new ExportFrame(split, image, c2w,
                         Extra(root, image, DatasetLayout.Suffix(DatasetFileKind.DepthPng), 16, size),
-                        Extra(root, image, DatasetLayout.Suffix(DatasetFileKind.MaskPng), 8, size)));
+                        Extra(root, image, DatasetLayout.Suffix(DatasetFileKind.MaskPng), 8, size),
+                        JsonValues.TryNumber(frame["time"], out var time) ? time : (double?)null));
                 }
             }
             InvalidParameterException.ThrowIfAny(problems.ToArray());

@@ -33,8 +33,10 @@ namespace NerfDatasetCreator
             }
             catch (JsonReaderException e)
             {
-                var cut = e.Message.IndexOf(" Path '", StringComparison.Ordinal);
-                throw new SettingsFormatException(sourceName, e.LineNumber, e.LinePosition, "", "not valid JSON: " + (cut > 0 ? e.Message.Substring(0, cut) : e.Message));
+                int line = e.LineNumber, column = e.LinePosition;
+                var detail = JsonSyntaxHelp.Explain(e.Message, text, ref line, ref column,
+                    "A transforms file is a JSON object with camera_angle_x and frames; write the split again (a capture, merge or convert).");
+                throw new SettingsFormatException(sourceName, line, column, "", detail);
             }
 
             var doc = new TransformsDocument();

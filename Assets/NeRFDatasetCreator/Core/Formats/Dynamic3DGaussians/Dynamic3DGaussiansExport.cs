@@ -43,7 +43,7 @@ namespace NerfDatasetCreator
                     "Nothing to do, or capture the views you want to evaluate as the test split."));
             if (scene.PointCloudPath == null)
                 throw Refuse("points3d.ply", "missing", "holds the target's surface at the first time step, which init_pt_cld.npz is made from (train.py:38); this dataset has none of this plugin's.",
-                    "Capture with the point cloud enabled (pointCloud in the settings).");
+                    "Capture again with pointCloudPoints above 0 in the settings (the window's Outputs step: points3d.ply points), e.g. 100000.");
             var masks = scene.HasMasks;
             var background = Background(config, masks, warnings);
 
@@ -91,10 +91,18 @@ namespace NerfDatasetCreator
             var time = config?[TimeRecord.Key] as JObject;
             var mode = (time?["mode"] as JValue)?.Value as string;
             if (mode != TimeModes.Name(TimeMode.MultiView) || time["steps"]?.Type != JTokenType.Integer || (int)time["steps"] < 1)
-                throw Refuse(DatasetLayout.ConfigFileName + ": time.mode", mode ?? "none",
+                throw Refuse(DatasetLayout.ConfigFileName + ": time.mode", ModeShown(config, time, mode),
                     "is not a multi-view capture: Dynamic 3D Gaussians fits each time step to every camera at that step (train.py:17, md['fn'][t]).",
                     "Capture with time.mode \"multi-view\" (see Documentation~/dynamic-capture.md).");
             return (int)time["steps"];
+        }
+
+        /// <summary>The capture's time mode as a user would write it: a dataset without a time record is static.</summary>
+        static string ModeShown(JObject config, JObject time, string mode)
+        {
+            if (mode != null) return "\"" + mode + "\"";
+            if (config == null) return "unknown (no " + DatasetLayout.ConfigFileName + " of this plugin)";
+            return time == null ? "\"" + TimeModes.Name(TimeMode.Static) + "\" (no time record: a still capture)" : "missing";
         }
 
         /// <summary>The split's frames by (time_step, camera_id) — each exactly once — or null for an empty split.</summary>

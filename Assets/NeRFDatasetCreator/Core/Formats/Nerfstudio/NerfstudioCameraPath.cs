@@ -13,7 +13,9 @@ namespace NerfDatasetCreator
     /// 4×4 <c>camera_to_world</c> (<c>torch.tensor(…).view(4, 4)[:3]</c>) and <c>fov</c>, the VERTICAL field of view in
     /// degrees (focal = (H/2) / tan(fov/2), viewer_legacy/server/utils.py line 51); cx, cy are W/2, H/2. render.py
     /// reads <c>seconds</c> (line 463) and renders at len(cameras)/seconds fps (line 101). <c>aspect</c> and <c>fps</c> are
-    /// what the viewer writes (viewer/render_panel.py lines 1093–1116) and are only informative.
+    /// what the viewer writes (viewer/render_panel.py lines 1093–1116) and are only informative. For a dynamic capture
+    /// every entry also carries <c>render_time</c>, the frame's <c>time</c>: get_path_from_json gives the cameras times
+    /// only when ALL entries have it (camera_paths.py at 08816c7: <c>if all("render_time" in camera …)</c>).
     /// <para>The matrices are in the MODEL's frame: nerfstudio-data moves and scales the file's poses before training
     /// (nerfstudio_dataparser.py lines 237–249: orientation "up", centring "poses", auto scale) and saves that as
     /// <c>dataparser_transforms.json</c> ({"transform": 3×4, "scale": s}, base_dataparser.py lines 84–87). Pass it to
@@ -25,20 +27,25 @@ namespace NerfDatasetCreator
         public const double DefaultFramesPerSecond = 24;
 
         public static JObject Build(IReadOnlyList<Matrix4x4d> cameraToWorld, CameraIntrinsics intrinsics, NerfstudioDataparserTransform dataparser = null,
-            double framesPerSecond = DefaultFramesPerSecond)
+            double framesPerSecond = DefaultFramesPerSecond, IReadOnlyList<double?> times = null)
         {
+            // Times only when every camera has one: nerfstudio ignores a partial set anyway.
+            var withTimes = times != null && times.Count == (cameraToWorld?.Count ?? -1) && times.All(t => t.HasValue);
             if (cameraToWorld == null || cameraToWorld.Count == 0) throw new ArgumentException("A camera path needs at least one camera.", nameof(cameraToWorld));
             if (intrinsics == null) throw new ArgumentNullException(nameof(intrinsics));
             InvalidParameterException.ThrowIfAny(ValidationProblem.OutsideRange("framesPerSecond", framesPerSecond, 0.001, 1000));
             var fov = intrinsics.CameraAngleY * 180 / Math.PI;
             var path = new JArray();
-            foreach (var m in cameraToWorld)
+            for (var i = 0; i < cameraToWorld.Count; i++)
             {
+                var m = cameraToWorld[i];
                 var model = dataparser == null ? m : dataparser.Apply(m);
                 var flat = new JArray();
                 for (var r = 0; r < 4; r++)
                     for (var c = 0; c < 4; c++) flat.Add(model[r, c]);
-                path.Add(new JObject { ["camera_to_world"] = flat, ["fov"] = fov, ["aspect"] = (double)intrinsics.Width / intrinsics.Height });
+                var entry = new JObject { ["camera_to_world"] = flat, ["fov"] = fov, ["aspect"] = (double)intrinsics.Width / intrinsics.Height };
+                if (withTimes) entry["render_time"] = times[i].Value;
+                path.Add(entry);
             }
             return new JObject
             {

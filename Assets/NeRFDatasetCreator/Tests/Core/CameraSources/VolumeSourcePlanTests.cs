@@ -58,12 +58,12 @@ namespace NerfDatasetCreator.Tests
             s.Loaders = TargetLoaders.All;
             var plan = CapturePlan.Build(s, PlanTarget.AtOrigin);
             var warnings = plan.Warnings;
-            Assume.That(LoaderRangeCheck.ForCapture(plan.Views.Select(v => v.Pose), plan.Normalisation, Vector3d.Zero, 0).Select(p => p.Field),
-                Does.Contain("normalisation.near"), "measured from the target, these cameras break NeRF's near 2");
+            Assume.That(LoaderRangeCheck.ClassifiedForCapture(plan.Views.Select(v => v.Pose), plan.Normalisation, Vector3d.Zero, 0, null).Select(p => p.Range),
+                Does.Contain(LoaderRangeCheck.Range.Near), "measured from the target, these cameras break NeRF's near 2");
             var plain = warnings.Single(w => w.Field == "splits.train.source");
             Assert.That(plain.Reason, Does.Contain("between 2 and 6 units"));
             Assert.That(plain.Fix, Does.StartWith("Train with the other exports: nerfstudio"));
-            Assert.That(warnings.Where(w => w.Field == "normalisation.near" || w.Field == "normalisation.far"), Is.Empty);
+            Assert.That(warnings.Where(w => w.Reason.Contains("NeRF's fixed")), Is.Empty);
             s.Loaders = TargetLoaders.All & ~TargetLoaders.Nerf;
             Assert.That(CapturePlan.Build(s, PlanTarget.AtOrigin).Warnings.Where(w => w.Field == "splits.train.source"), Is.Empty);
         }

@@ -58,7 +58,7 @@ namespace NerfDatasetCreator.Tests
             Edit("transforms_train.json", "1.2080823183059692", "1.0");
             var report = DatasetValidator.Validate(_lego);
             Assert.That(report.Problems, Is.Empty);
-            Assert.That(report.Warnings.Select(w => w.ToString()), Has.Exactly(1).Contains("normalisation.near").And.Contains("1 of 300 cameras"));
+            Assert.That(report.Warnings.Select(w => w.ToString()), Has.Exactly(1).Contains("transform_matrix = 1.415").And.Contains("closer to the target's surface than NeRF's fixed near distance 2").And.Contains("1 of 300 cameras"));
         }
 
         [Test]

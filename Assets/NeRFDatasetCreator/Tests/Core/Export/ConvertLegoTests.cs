@@ -167,7 +167,7 @@ namespace NerfDatasetCreator.Tests
 
             var e = Assert.Throws<InvalidParameterException>(() => DatasetConverter.Convert(_lego.Root, ExportTarget.Nerfstudio));
 
-            Assert.That(e.Problems[0].Field, Is.EqualTo("outDir"));
+            Assert.That(e.Problems[0].Field, Is.EqualTo("output"), "the name a user knows the destination by (--out), not a parameter of ours");
             Assert.That(e.Problems[0].Value, Is.EqualTo(existing));
             Assert.That(File.ReadAllText(existing), Is.EqualTo("user data"));
         }

@@ -127,7 +127,9 @@ namespace NerfDatasetCreator.Tests
         public void FarCamerasWarnForNerfAndThePresetClearsIt()
         {
             var recentred = CapturePlan.Build(Small(NormalisationMode.Recentre, 10), new PlanTarget(Centre, 1));
-            Assert.That(recentred.Warnings.Select(w => w.Field), Is.EqualTo(new[] { "normalisation.far" }));
+            // The warning names the setting that fixes it, with its value: a key the config really has (issue 23).
+            Assert.That(recentred.Warnings.Select(w => w.Field + " = " + w.Value), Is.EqualTo(new[] { "normalisation = \"recentre\"" }));
+            Assert.That(recentred.Warnings[0].Reason, Does.Contain("beyond NeRF's fixed far distance 6"));
             Assert.That(recentred.Warnings[0].Fix, Does.Contain("nerf_synthetic scale preset"));
 
             var preset = CapturePlan.Build(Small(NormalisationMode.NerfSyntheticScale, 10), new PlanTarget(Centre, 1));
@@ -143,7 +145,8 @@ namespace NerfDatasetCreator.Tests
         {
             var s = Small(NormalisationMode.Recentre, 5);
             s.Loaders = TargetLoaders.GaussianSplatting;
-            Assert.That(CapturePlan.Build(s, new PlanTarget(Centre, 1.4)).Warnings.Select(w => w.Field), Is.EqualTo(new[] { "normalisation.targetRadius" }));
+            Assert.That(CapturePlan.Build(s, new PlanTarget(Centre, 1.4)).Warnings.Select(w => w.Field), Is.EqualTo(new[] { "normalisation" }));
+            Assert.That(CapturePlan.Build(s, new PlanTarget(Centre, 1.4)).Warnings[0].Reason, Does.Contain("3DGS's random initial cloud"));
             s.PointCloudPoints = 1000;
             Assert.That(CapturePlan.Build(s, new PlanTarget(Centre, 1.4)).Warnings, Is.Empty);
         }

@@ -24,7 +24,7 @@ namespace NerfDatasetCreator.Tests
             var cameras = new[] { new Vector3d(0, 0, R * s) };
 
             Assert.That(LoaderRangeCheck.Check(cameras, 0.325 * R * s), Is.Empty);
-            Assert.That(LoaderRangeCheck.Check(cameras, 0.33 * R * s).Select(p => p.Field), Is.EqualTo(new[] { "normalisation.targetRadius" }));
+            Assert.That(LoaderRangeCheck.Check(cameras, 0.33 * R * s).Select(p => p.Reason).ToList(), Has.Count.EqualTo(1).And.All.Contains("3DGS's random initial cloud"));
         }
 
         [Test]
@@ -32,7 +32,7 @@ namespace NerfDatasetCreator.Tests
         {
             var problems = LoaderRangeCheck.Check(Ring(2.5), 1.0);
 
-            Assert.That(problems.Select(p => p.Field), Is.EqualTo(new[] { "normalisation.near" }));
+            Assert.That(problems.Select(p => p.Reason).ToList(), Has.Count.EqualTo(1).And.All.Contains("NeRF's fixed near distance 2"));
             Assert.That(problems[0].Reason, Does.StartWith("8 of 8 cameras"));
             Assert.That(problems[0].Fix, Does.Contain("preset"));
         }
@@ -42,7 +42,7 @@ namespace NerfDatasetCreator.Tests
         {
             var problems = LoaderRangeCheck.Check(Ring(5.5), 1.0);
 
-            Assert.That(problems.Select(p => p.Field), Is.EqualTo(new[] { "normalisation.far" }));
+            Assert.That(problems.Select(p => p.Reason).ToList(), Has.Count.EqualTo(1).And.All.Contains("NeRF's fixed far distance 6"));
             Assert.That(problems[0].Value, Is.EqualTo("6.523"), "√(5.5² + 0.5²) + 1");
         }
 
@@ -52,7 +52,7 @@ namespace NerfDatasetCreator.Tests
             // A 10 m building photographed from 30 m, recentred but not scaled.
             var problems = LoaderRangeCheck.Check(Ring(30), 10);
 
-            Assert.That(problems.Select(p => p.Field), Is.EqualTo(new[] { "normalisation.far", "normalisation.targetRadius" }));
+            Assert.That(problems.Select(p => p.Reason.Contains("far distance 6") ? "far" : p.Reason.Contains("initial cloud") ? "cloud" : "?"), Is.EqualTo(new[] { "far", "cloud" }));
         }
     
 
@@ -64,14 +64,14 @@ namespace NerfDatasetCreator.Tests
 
             // Unnormalised: distances are fine (4 ± 1) but the target sits ~10.8 from the origin.
             var raw = LoaderRangeCheck.ForCapture(poses, SceneNormalisation.Identity, target, 1.0);
-            Assert.That(raw.Select(p => p.Field), Is.EqualTo(new[] { "normalisation.targetRadius" }));
+            Assert.That(raw.Select(p => p.Reason).ToList(), Has.Count.EqualTo(1).And.All.Contains("3DGS's random initial cloud"));
 
             var recentred = SceneNormalisation.ForTarget(NormalisationMode.Recentre, target, 1.0, 4.0);
             Assert.That(LoaderRangeCheck.ForCapture(poses, recentred, target, 1.0), Is.Empty);
 
             // The same rig 2.5 m out needs the preset: before it, near warnings; after it, none.
             var close = CameraRig.Place(new RandomFormation(1), 12, target, 2.5);
-            Assert.That(LoaderRangeCheck.ForCapture(close, recentred, target, 0.7).Select(p => p.Field), Is.EqualTo(new[] { "normalisation.near" }));
+            Assert.That(LoaderRangeCheck.ForCapture(close, recentred, target, 0.7).Select(p => p.Reason).ToList(), Has.Count.EqualTo(1).And.All.Contains("NeRF's fixed near distance 2"));
             var preset = SceneNormalisation.ForTarget(NormalisationMode.NerfSyntheticScale, target, 0.7, 2.5);
             Assert.That(LoaderRangeCheck.ForCapture(close, preset, target, 0.7), Is.Empty);
         }

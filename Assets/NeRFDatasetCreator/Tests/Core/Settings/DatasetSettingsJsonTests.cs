@@ -143,13 +143,13 @@ namespace NerfDatasetCreator.Tests
         [Test]
         public void MalformedJsonGivesLineAndColumn()
         {
-            // A comma is missing at the end of line 2. Newtonsoft's position counts the characters on the line
-            // before the unexpected one: the '"' of "height" comes after 2 spaces.
+            // A comma is missing at the end of line 2. Newtonsoft stops at the '"' of "height" on line 3; the
+            // message points at the place to edit instead: the end of 800 on line 2 (column 14).
             var text = "{\n  \"width\": 800\n  \"height\": 600\n}";
             var e = Assert.Throws<SettingsFormatException>(() => DatasetSettingsJson.Read(text, "lego.json"));
-            Assert.That(e.Line, Is.EqualTo(3));
-            Assert.That(e.Column, Is.EqualTo(2));
-            Assert.That(e.Message, Does.StartWith("lego.json(3,2): not valid JSON"));
+            Assert.That(e.Line, Is.EqualTo(2));
+            Assert.That(e.Column, Is.EqualTo(14));
+            Assert.That(e.Message, Does.StartWith("lego.json(2,14): a comma is missing"));
         }
 
         [Test]

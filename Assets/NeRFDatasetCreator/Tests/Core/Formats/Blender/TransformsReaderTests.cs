@@ -59,6 +59,13 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void AnEmptyTransformsFileSaysWhatItShouldHold()
+        {
+            var e = Assert.Throws<SettingsFormatException>(() => TransformsReader.Read("", "transforms_val.json"));
+            Assert.That(e.Message, Does.StartWith("transforms_val.json: the file is empty. A transforms file is a JSON object with camera_angle_x and frames"));
+        }
+
+        [Test]
         public void TextAfterTheObjectIsMalformed()
         {
             // The original plugin appended a second object on every run.

@@ -271,6 +271,37 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void AStaticCaptureIsCalledStaticNotNone()
+        {
+            using (var temp = new TempFolder())
+            {
+                var folder = temp.Combine("d");
+                var settings = MultiView(3, 2, 3);
+                settings.Time.Mode = TimeMode.Static;
+                Dataset(folder, settings);
+                var e = Assert.Throws<InvalidParameterException>(() => DatasetConverter.Convert(folder, ExportTarget.Dynamic3dgs));
+                Assert.That(e.Problems[0].Field, Is.EqualTo("dataset_config.json: time.mode"));
+                Assert.That(e.Problems[0].Value, Does.StartWith("\"static\""), "the mode's own name, as a config writes it; \"none\" is no mode");
+                Assert.That(TimeModes.Name(TimeMode.Static), Is.EqualTo("static"));
+            }
+        }
+
+        [Test]
+        public void AMissingPointCloudNamesTheSettingThatWritesIt()
+        {
+            using (var temp = new TempFolder())
+            {
+                var folder = temp.Combine("d");
+                TestDatasets.FromPlan(folder, CapturePlan.Build(MultiView(3, 2, 3), new PlanTarget(Vector3d.Zero, 0.5)));
+                var e = Assert.Throws<InvalidParameterException>(() => DatasetConverter.Convert(folder, ExportTarget.Dynamic3dgs));
+                Assert.That(e.Problems[0].Field, Is.EqualTo("points3d.ply"));
+                Assert.That(e.Problems[0].Fix, Does.Contain("pointCloudPoints"));
+                // The key the fix names is one the settings reader knows (no "unknown key" warning for it).
+                Assert.That(DatasetSettingsJson.Read("{ \"pointCloudPoints\": 100000 }").Warnings, Is.Empty);
+            }
+        }
+
+        [Test]
         public void MoreThanFiftyTrainCamerasAreRefused()
         {
             using (var temp = new TempFolder())

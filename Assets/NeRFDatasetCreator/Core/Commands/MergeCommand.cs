@@ -2,7 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 
-namespace NerfDatasetCreator.Tool
+namespace NerfDatasetCreator
 {
     /// <summary>
     /// <c>nerf-dataset merge --out d [--files copy|move] shard-dir…</c>: joins the folders of a sharded capture with
@@ -22,12 +22,12 @@ namespace NerfDatasetCreator.Tool
                 // Reading a shard's files failed before merge wrote anything (its writing step undoes itself).
                 stderr.WriteLine("error: " + e.Message);
                 stderr.WriteLine("merge refused: a shard folder could not be read; no file was changed.");
-                return Program.Failure;
+                return ToolExitCodes.Failure;
             }
             // A script capturing stdout gets the summary on success; every reason for a refusal goes to stderr.
             var output = result.Succeeded ? stdout : stderr;
             foreach (var line in result.Lines()) output.WriteLine(line);
-            return result.Succeeded ? Program.Success : Program.Failure;
+            return result.Succeeded ? ToolExitCodes.Success : ToolExitCodes.Failure;
         }
     }
 }

@@ -2,7 +2,7 @@ using System;
 using System.IO;
 using System.Linq;
 
-namespace NerfDatasetCreator.Tool
+namespace NerfDatasetCreator
 {
     /// <summary>
     /// <c>nerf-dataset convert d --to nerfstudio|colmap|ngp|dynamic3dgs [--out o] [--depths]</c>: <see cref="DatasetConverter.Convert"/>, then
@@ -28,7 +28,7 @@ namespace NerfDatasetCreator.Tool
                     if (recovered.Any(n => n.Operation == "convert" && n.Finished))
                     {
                         stdout.WriteLine("converted " + Path.GetFullPath(datasetFolder) + " to " + ExportTargets.Name(target) + " into " + output + " (the interrupted earlier convert, now finished)");
-                        return Program.Success;
+                        return ToolExitCodes.Success;
                     }
                 }
                 result = DatasetConverter.Convert(datasetFolder, target, outputFolder, depths);
@@ -42,18 +42,18 @@ namespace NerfDatasetCreator.Tool
                         "this dataset was planned by nerf-dataset plan and has no images, but convert needs them (their size sets the intrinsics; colmap copies them).",
                         "Render the dataset with the Unity plugin (window or batch mode) and convert that folder."));
                     stderr.WriteLine("convert refused: " + Count(e.Problems.Count, "problem") + ", the first: " + e.Problems[0] + " Nothing was written.");
-                    return Program.Failure;
+                    return ToolExitCodes.Failure;
                 }
                 foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
                 stderr.WriteLine("convert refused: " + Count(e.Problems.Count, "problem") + "; nothing was written.");
-                return Program.Failure;
+                return ToolExitCodes.Failure;
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 stderr.WriteLine("error: " + e.Message);
                 stderr.WriteLine("convert failed; it writes into a working folder and moves the files into place only when all are complete, " +
                                  "so nothing was overwritten and running the same command again finishes or rolls back what was interrupted.");
-                return Program.Failure;
+                return ToolExitCodes.Failure;
             }
 
             foreach (var warning in result.Warnings) stderr.WriteLine("warning: " + warning);
@@ -66,7 +66,7 @@ namespace NerfDatasetCreator.Tool
             }
             if (result.TrainCommands.Count > 0) foreach (var command in result.TrainCommands) stdout.WriteLine("train with: " + command);
             else stdout.WriteLine("train with: " + NextStep(target, result.MainFile, depths));
-            return Program.Success;
+            return ToolExitCodes.Success;
         }
 
         /// <summary>The training command of Documentation~/exports.md for the export just written.</summary>

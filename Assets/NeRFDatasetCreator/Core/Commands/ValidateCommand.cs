@@ -1,6 +1,6 @@
 using System.IO;
 
-namespace NerfDatasetCreator.Tool
+namespace NerfDatasetCreator
 {
     /// <summary><c>nerf-dataset validate d</c>: a summary line, then one line per problem and warning; exit 1 on any problem.</summary>
     public static class ValidateCommand
@@ -14,10 +14,10 @@ namespace NerfDatasetCreator.Tool
             if (report.IsValid)
             {
                 stdout.WriteLine("OK");
-                return Program.Success;
+                return ToolExitCodes.Success;
             }
             stderr.WriteLine("invalid: " + report.Problems.Count + (report.Problems.Count == 1 ? " problem" : " problems"));
-            return Program.Failure;
+            return ToolExitCodes.Failure;
         }
     }
 }

@@ -1,6 +1,6 @@
 using System.IO;
 
-namespace NerfDatasetCreator.Tool
+namespace NerfDatasetCreator
 {
     /// <summary>
     /// <c>nerf-dataset clean &lt;folder&gt; [--dry-run]</c>: finishes or rolls back the interrupted operations on the
@@ -19,14 +19,14 @@ namespace NerfDatasetCreator.Tool
             catch (InvalidParameterException e)
             {
                 foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
-                return Program.UsageError;
+                return ToolExitCodes.UsageError;
             }
             foreach (var note in result.Recovered) stdout.WriteLine(note);
             foreach (var removed in result.Removed) stdout.WriteLine((dryRun ? "would remove " : "removed ") + removed);
             foreach (var kept in result.Kept) stderr.WriteLine("kept " + kept);
             if (result.Recovered.Count + result.Removed.Count + result.Kept.Count == 0)
                 stdout.WriteLine("nothing to clean in " + Path.GetFullPath(folder) + ": no working folder is left over.");
-            return result.Kept.Count > 0 ? Program.Failure : Program.Success;
+            return result.Kept.Count > 0 ? ToolExitCodes.Failure : ToolExitCodes.Success;
         }
     }
 }

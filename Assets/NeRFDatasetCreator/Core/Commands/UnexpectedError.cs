@@ -1,7 +1,7 @@
 using System;
 using System.IO;
 
-namespace NerfDatasetCreator.Tool
+namespace NerfDatasetCreator
 {
     /// <summary>
     /// The last line of defence of every command: whatever a command cannot handle itself becomes one clear line

@@ -2,7 +2,7 @@ using System;
 using System.IO;
 using System.Linq;
 
-namespace NerfDatasetCreator.Tool
+namespace NerfDatasetCreator
 {
     /// <summary>
     /// <c>nerf-dataset plan --config f --out d</c>: plans the views of a settings file (target at the origin,
@@ -19,13 +19,13 @@ namespace NerfDatasetCreator.Tool
             }
             catch (SettingsFormatException e)
             {
-                stderr.WriteLine("error: " + e.Message);
-                return Program.UsageError;
+                foreach (var error in e.All) stderr.WriteLine("error: " + error.Message);
+                return ToolExitCodes.UsageError;
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 stderr.WriteLine("error: cannot read the config " + configPath + ": " + e.Message);
-                return Program.UsageError;
+                return ToolExitCodes.UsageError;
             }
             foreach (var warning in read.Warnings) stderr.WriteLine("warning: " + warning);
 
@@ -33,24 +33,24 @@ namespace NerfDatasetCreator.Tool
             if (!string.IsNullOrWhiteSpace(settings.OutputFolder))
                 stderr.WriteLine("warning: " + new ValidationProblem("outputFolder", settings.OutputFolder,
                     "is ignored by plan: --out names the dataset folder itself.", "Leave outputFolder empty in configs for the tool, or pass the folder as --out."));
-            var problems = CapturePlan.Check(settings, PlanTarget.AtOrigin);
+            var problems = CapturePlan.Check(settings, PlanTarget.Headless);
             if (problems.Count > 0)
             {
                 foreach (var problem in problems) stderr.WriteLine("error: " + problem);
-                return Program.UsageError;
+                return ToolExitCodes.UsageError;
             }
-            var plan = CapturePlan.Build(settings, PlanTarget.AtOrigin);
+            var plan = CapturePlan.Build(settings, PlanTarget.Headless);
             foreach (var warning in plan.Warnings) stderr.WriteLine("warning: " + warning);
 
             DatasetWriteSession session;
             try
             {
-                session = DatasetWriteSession.Begin(outputFolder, settings.Overwrite);
+                session = DatasetWriteSession.Begin(outputFolder, settings.Overwrite, field: "--out");
             }
             catch (InvalidParameterException e)
             {
                 foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
-                return Program.UsageError;
+                return ToolExitCodes.UsageError;
             }
             foreach (var note in session.Recovered) stderr.WriteLine("note: " + note);
             foreach (var leftover in session.Leftovers)
@@ -67,7 +67,7 @@ namespace NerfDatasetCreator.Tool
             {
                 stderr.WriteLine("error: " + e.Message);
                 stderr.WriteLine("note: " + session.DescribeAbandoned());
-                return Program.Failure;
+                return ToolExitCodes.Failure;
             }
 
             stdout.WriteLine("planned " + plan.ViewsOf(DatasetSplit.Train).Count() + " train, " + plan.ViewsOf(DatasetSplit.Val).Count() + " val, " +
@@ -75,7 +75,7 @@ namespace NerfDatasetCreator.Tool
             if (plan.Time != null) stdout.WriteLine(TimeSummary.Describe(plan.Time));
             stdout.WriteLine("wrote transforms_train.json, transforms_val.json, transforms_test.json, " + DatasetLayout.ConfigFileName + ", " +
                              DatasetLayout.RigPreviewFileName + ", " + RigPreviewPicture.FileName + " (no images: render them with the Unity plugin)");
-            return Program.Success;
+            return ToolExitCodes.Success;
         }
     }
 }

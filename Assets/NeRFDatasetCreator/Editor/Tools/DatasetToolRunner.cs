@@ -1,0 +1,77 @@
+using System;
+using System.Threading.Tasks;
+using UnityEditor;
+using UnityEngine;
+
+namespace NerfDatasetCreator.Editor
+{
+    /// <summary>
+    /// Runs one <c>nerf-dataset</c> command line inside the editor — validate, convert, merge or clean, through Core's
+    /// <see cref="ToolTranscript"/>, so no .NET SDK is needed and the messages are the tool's own — on a worker
+    /// thread, with a task in Unity's Background Tasks window and status bar (Progress API:
+    /// https://docs.unity3d.com/2022.3/Documentation/ScriptReference/Progress.html; Progress.Options.Indefinite because
+    /// a command does not know its length in advance). The editor stays usable; one command runs at a time.
+    /// Script reloading waits until the command ends (EditorApplication.LockReloadAssemblies), so a command is never cut
+    /// off by a recompile; its lines go to the Console as one entry headed by the equivalent terminal command.
+    /// There is no Cancel: every command finishes in one step or is finished or rolled back by the next run
+    /// (Documentation~/reliability.md), which a stop in the middle would only postpone.
+    /// </summary>
+    public static class DatasetToolRunner
+    {
+        static Task<ToolTranscript> _task;
+        static int _progressId = -1;
+        static string _title;
+
+        /// <summary>Raised on the main thread when a command starts and when it ends.</summary>
+        public static event Action Changed;
+
+        public static bool IsRunning => _task != null;
+
+        /// <summary>What the running command is ("convert to colmap"), or null.</summary>
+        public static string RunningTitle => IsRunning ? _title : null;
+
+        /// <summary>The last finished command in this editor session, or null.</summary>
+        public static ToolTranscript Last { get; private set; }
+
+        /// <summary>Starts <paramref name="arguments"/>; false (and nothing started) while another command runs.</summary>
+        public static bool Start(string title, string[] arguments)
+        {
+            if (arguments == null) throw new ArgumentNullException(nameof(arguments));
+            if (IsRunning) return false;
+            _title = title;
+            _progressId = Progress.Start("NeRF dataset: " + title, ToolTranscript.DescribeCommandLine(arguments), Progress.Options.Indefinite);
+            EditorApplication.LockReloadAssemblies();
+            // Core only (no Unity API) runs on the worker; ToolCommands turns anything unexpected into an error line.
+            _task = Task.Run(() => ToolTranscript.Run(arguments));
+            EditorApplication.update += Poll;
+            Changed?.Invoke();
+            return true;
+        }
+
+        static void Poll()
+        {
+            if (_task == null || !_task.IsCompleted) return;
+            EditorApplication.update -= Poll;
+            var task = _task;
+            _task = null;
+            EditorApplication.UnlockReloadAssemblies();
+            Last = task.Status == TaskStatus.RanToCompletion
+                ? task.Result
+                : null;
+            if (Progress.Exists(_progressId))
+                Progress.Finish(_progressId, Last != null && Last.Succeeded ? Progress.Status.Succeeded : Progress.Status.Failed);
+            _progressId = -1;
+            if (Last != null) Log(Last);
+            else Debug.LogError("NeRF Dataset Creator: " + _title + " stopped: " + task.Exception?.GetBaseException().Message);
+            Changed?.Invoke();
+        }
+
+        /// <summary>One Console entry: the terminal command, then every line the command printed.</summary>
+        public static void Log(ToolTranscript transcript)
+        {
+            var text = "NeRF Dataset Creator: " + transcript.CommandLine + " (exit " + transcript.ExitCode + ")\n" + string.Join("\n", transcript.Lines);
+            if (transcript.Succeeded) Debug.Log(text);
+            else Debug.LogError(text);
+        }
+    }
+}
