@@ -270,9 +270,13 @@ namespace NerfDatasetCreator
                 }
             }
 
+            // One file under two keys (depth_path for instant-ngp, depth_file_path for nerfstudio) is checked and counted once.
+            var checkedFiles = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
             foreach (var key in TransformsReader.ExtraFileKeys)
             {
                 if (!frame.ExtraFiles.TryGetValue(key, out var value)) continue;
+                var format = ExpectedFormat(key);
+                if (value != null && !checkedFiles.Add(ExportPaths.Normalise(value) + "|" + format.Describe())) continue;
                 var pair = new KeyValuePair<string, string>(key, value);
                 var expected = ExpectedFormat(pair.Key);
                 var path = Resolve(folder, pair.Value);
