@@ -173,6 +173,20 @@ namespace NerfDatasetCreator.Tool.Tests
         }
 
         [Test]
+        public void AThreeGigabyteSplitFileIsAProblemNamingItInValidateAndConvert()
+        {
+            File.Delete(Transforms("val"));
+            using (var file = new FileStream(Transforms("val"), FileMode.CreateNew)) file.SetLength(3L << 30);
+            var validate = ToolRun.Of("validate", _dataset);
+            Assert.That(validate.ExitCode, Is.EqualTo(1), validate.ToString());
+            Assert.That(validate.Out, Does.Contain("problem: transforms_val.json: is 3 GiB, more than the 512 MiB"));
+            var convert = ToolRun.Of("convert", _dataset, "--to", "ngp");
+            Assert.That(convert.ExitCode, Is.EqualTo(1), convert.ToString());
+            Assert.That(convert.Err, Does.Contain("error: transforms_val.json = " + Transforms("val") + ": is 3 GiB"));
+            Assert.That(validate.Out + convert.Err, Does.Not.Contain("memory").And.Not.Contain("permissions"));
+        }
+
+        [Test]
         public void AMonocularCaptureWithImportedTrainCamerasIgnoresTheTrainCount()
         {
             var run = ToolRun.Of("plan", "--config", PlanConfig(Fixtures.LegoTrainPath, 1, "{ \"mode\": \"monocular\", \"start\": 0, \"end\": 2 }"), "--out", _scratch.PathOf("planned"));

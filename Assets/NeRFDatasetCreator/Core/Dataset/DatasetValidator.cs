@@ -55,6 +55,11 @@ namespace NerfDatasetCreator
                     report.Problems.Add(new DatasetProblem(file, -1, null, "line " + e.Line + ", column " + e.Column + ": " + e.Detail));
                     continue;
                 }
+                catch (FileTooLargeException e)
+                {
+                    report.Problems.Add(new DatasetProblem(file, -1, null, e.Reason));
+                    continue;
+                }
                 catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
                 {
                     report.Problems.Add(new DatasetProblem(file, -1, null, "cannot be read: " + e.Message + " (check the file's permissions)."));

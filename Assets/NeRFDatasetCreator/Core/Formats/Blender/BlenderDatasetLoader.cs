@@ -52,6 +52,7 @@ namespace NerfDatasetCreator
                 JObject json;
                 try { json = JObject.Parse(FileOps.ReadText(jsonPath)); }
                 catch (JsonException e) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, "is not valid JSON: " + e.Message, "Fix or regenerate the file.")); return null; }
+                catch (FileTooLargeException e) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, e.Reason, "Pass a dataset whose split files were written by Blender, this plugin or another NeRF tool.")); return null; }
                 catch (Exception e) when (e is IOException || e is UnauthorizedAccessException) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, "cannot be read: " + e.Message, "Check the file's permissions.")); return null; }
 
                 var angle = json["camera_angle_x"];
