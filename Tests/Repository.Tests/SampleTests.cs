@@ -53,7 +53,7 @@ namespace NerfDatasetCreator.Repository.Tests
         /// y from 0.25 to 0.95 (0.8 ± 0.15 at 1 s), z within ±√(0.15² + 0.4²) (the box's xz diagonal, reached at a
         /// 20.6° turn): radius √(0.875² + 0.35² + 0.15² + 0.4²) ≈ 1.035, under the 1.3 the loaders' boxes allow at distance 4.
         /// </summary>
-        static PlanTarget AnimatedTargetAsUnityMeasuresIt()
+        internal static PlanTarget AnimatedTargetAsUnityMeasuresIt()
         {
             var clip = SampleClip.Load();
             double[] min = { double.MaxValue, double.MaxValue, double.MaxValue }, max = { double.MinValue, double.MinValue, double.MinValue };

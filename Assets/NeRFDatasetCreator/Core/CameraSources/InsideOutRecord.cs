@@ -15,8 +15,9 @@ namespace NerfDatasetCreator
         {
             var path = Path.Combine(datasetDirectory, DatasetLayout.ConfigFileName);
             if (!File.Exists(path)) return false;
-            try { return FromConfig(JObject.Parse(File.ReadAllText(path))); }
+            try { return FromConfig(JObject.Parse(FileOps.ReadText(path))); }
             catch (JsonException) { return false; } // DatasetTargetReach already warns about a broken config
+            catch (System.Exception e) when (e is IOException || e is System.UnauthorizedAccessException) { return false; } // … and an unreadable one
         }
 
         public static bool FromConfig(JObject config)

@@ -26,7 +26,8 @@ namespace NerfDatasetCreator
         public static ImportedPoses ReadFile(string path, SceneNormalisation placement = null)
         {
             string text;
-            try { text = File.ReadAllText(path); }
+            try { text = FileOps.ReadText(path); } // refuses a file beyond FileOps.MaxTextBytes by its size, naming it
+            catch (FileTooLargeException e) { throw Fail("path", path, e.Reason, "Give the path of a transforms JSON file."); }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentException || e is NotSupportedException)
             {
                 throw Fail("path", path, "cannot be read: " + e.Message, "Give the path of a transforms JSON file.");

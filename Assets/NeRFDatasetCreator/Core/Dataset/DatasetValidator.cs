@@ -55,6 +55,11 @@ namespace NerfDatasetCreator
                     report.Problems.Add(new DatasetProblem(file, -1, null, "line " + e.Line + ", column " + e.Column + ": " + e.Detail));
                     continue;
                 }
+                catch (FileTooLargeException e)
+                {
+                    report.Problems.Add(new DatasetProblem(file, -1, null, e.Reason));
+                    continue;
+                }
                 catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
                 {
                     report.Problems.Add(new DatasetProblem(file, -1, null, "cannot be read: " + e.Message + " (check the file's permissions)."));
@@ -270,9 +275,13 @@ namespace NerfDatasetCreator
                 }
             }
 
+            // One file under two keys (depth_path for instant-ngp, depth_file_path for nerfstudio) is checked and counted once.
+            var checkedFiles = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
             foreach (var key in TransformsReader.ExtraFileKeys)
             {
                 if (!frame.ExtraFiles.TryGetValue(key, out var value)) continue;
+                var format = ExpectedFormat(key);
+                if (value != null && !checkedFiles.Add(ExportPaths.Normalise(value) + "|" + format.Describe())) continue;
                 var pair = new KeyValuePair<string, string>(key, value);
                 var expected = ExpectedFormat(pair.Key);
                 var path = Resolve(folder, pair.Value);

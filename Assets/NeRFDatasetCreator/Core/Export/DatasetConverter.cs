@@ -126,9 +126,13 @@ namespace NerfDatasetCreator
             if (testTxt != null) all.Add(testTxt);
             if (pointsPly != null) all.Add(pointsPly);
             all.AddRange(copies.Select(c => c.to));
+            GaussianSplattingDepths.DepthScan depthScan = null;
             if (depths)
             {
-                InvalidParameterException.ThrowIfAny(GaussianSplattingDepths.Check(scene.Frames, names).ToArray());
+                // Every unusable depth file is named at once, before anything is written.
+                var depthProblems = GaussianSplattingDepths.Check(scene.Frames, names).ToList();
+                depthScan = GaussianSplattingDepths.Scan(scene, depthProblems);
+                InvalidParameterException.ThrowIfAny(depthProblems.ToArray());
                 all.AddRange(GaussianSplattingDepths.Destinations(outDir, names));
             }
             foreach (var path in all) EnsureAbsent(path);
@@ -149,7 +153,7 @@ namespace NerfDatasetCreator
             staged.WriteNewText(pointsTxt, ColmapTextWriter.Points3DText(points));
             if (testTxt != null) staged.WriteNewText(testTxt, string.Join("\n", testNames) + "\n");
             if (pointsPly != null) staged.Copy(Path.Combine(scene.RootDirectory, scene.PointCloudPath), pointsPly);
-            if (depths) GaussianSplattingDepths.Write(scene, names, outDir, warnings, staged);
+            if (depths) GaussianSplattingDepths.Write(scene, names, outDir, warnings, staged, depthScan);
             if (scene.Frames.Any(f => f.Split != "train"))
                 warnings.Add(new ValidationProblem("images.txt", scene.Frames.Count + " images",
                     "COLMAP has no splits: train, val and test views are all listed; upstream 3DGS's --eval holds out every 8th image by name (sparse/0/test.txt lists the real test views for loaders that read it).",

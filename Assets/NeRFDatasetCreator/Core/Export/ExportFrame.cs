@@ -11,8 +11,10 @@ namespace NerfDatasetCreator
     /// </summary>
     public sealed class ExportFrame
     {
-        public ExportFrame(string split, string imagePath, Matrix4x4d cameraToWorld, string depthPath = null, string maskPath = null, double? time = null)
+        public ExportFrame(string split, string imagePath, Matrix4x4d cameraToWorld, string depthPath = null, string maskPath = null,
+            double? time = null, ValidationProblem unusableDepth = null)
         {
+            UnusableDepth = unusableDepth;
             if (string.IsNullOrEmpty(split)) throw new ArgumentException("A frame needs a split (train, val or test).", nameof(split));
             if (string.IsNullOrEmpty(imagePath)) throw new ArgumentException("A frame needs an image path.", nameof(imagePath));
             // nerfstudio and COLMAP use the path as given, so unlike the Blender files it must name the file exactly.
@@ -42,6 +44,12 @@ namespace NerfDatasetCreator
 
         /// <summary>16-bit single-channel PNG of z-depth in steps of <see cref="ExportScene.DepthUnitScale"/> output units, 0 = no hit; or null.</summary>
         public string DepthPath { get; }
+
+        /// <summary>
+        /// A depth file beside the image that cannot be used (8-bit, another size, truncated, …): its path as the value and
+        /// why as the reason; null when there is none or it is usable. <see cref="DepthPath"/> is then null.
+        /// </summary>
+        public ValidationProblem UnusableDepth { get; }
 
         /// <summary>8-bit single-channel PNG, black = ignore (nerfstudio's meaning); or null.</summary>
         public string MaskPath { get; }

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Threading;
 
 namespace NerfDatasetCreator
@@ -18,6 +19,7 @@ namespace NerfDatasetCreator
         readonly Func<string, bool> _onlyPaths;
         int _count;
         volatile bool _stopped;
+        readonly List<string> _operations = new List<string>();
 
         FileFaultPlan(int at, Func<string, string, Exception> fault, bool stop, Action kill, Func<string, bool> onlyPaths)
         {
@@ -41,6 +43,12 @@ namespace NerfDatasetCreator
         /// <summary>Runs <paramref name="kill"/> (e.g. killing the process) before operation <paramref name="n"/>.</summary>
         public static FileFaultPlan Killing(int n, Action kill) => new FileFaultPlan(n, null, false, kill, null);
 
+        /// <summary>Every operation counted so far as "operation path", in order: lets a test pick the step to stop or kill at by what it does.</summary>
+        public IReadOnlyList<string> Operations
+        {
+            get { lock (_operations) return _operations.ToArray(); }
+        }
+
         /// <summary>Operations counted so far.</summary>
         public int Count => Volatile.Read(ref _count);
 
@@ -52,6 +60,7 @@ namespace NerfDatasetCreator
             if (_stopped) throw new SimulatedStopException(operation, path);
             if (_onlyPaths != null && !_onlyPaths(path ?? "")) return;
             var n = Interlocked.Increment(ref _count);
+            lock (_operations) _operations.Add(operation + " " + path);
             if (n != _at) return;
             if (_kill != null) _kill();
             if (_stop)

@@ -66,6 +66,18 @@ namespace NerfDatasetCreator
         /// <summary>Moves every file into place (none may exist there: never overwritten) and removes the working folder.</summary>
         public void Commit()
         {
+            // A destination that appeared while this run was writing (another convert into the same output finished
+            // first) is found before anything is placed, so this run is abandoned whole: its own working folder goes.
+            foreach (var file in _files)
+            {
+                var to = Path.Combine(Output, file.Replace('/', Path.DirectorySeparatorChar));
+                if (File.Exists(to) || Directory.Exists(to))
+                    throw new InvalidParameterException(new[]
+                    {
+                        new ValidationProblem("outDir", to, "appeared while this convert was writing (another convert into the same output finished first); convert never overwrites, so this run placed nothing and removed its own working folder.",
+                            "Use the files already there, or delete them and run convert again."),
+                    });
+            }
             _journal.Files.AddRange(_files);
             _journal.State = OperationJournal.Committing;
             _journal.Save(Working);
@@ -77,7 +89,13 @@ namespace NerfDatasetCreator
                 FileOps.CreateDirectory(Path.GetDirectoryName(to));
                 FileOps.MoveFile(Path.Combine(Working, file.Replace('/', Path.DirectorySeparatorChar)), to);
             }
+            // Everything is in place. The journal moves out to the output first, so that a run killed while the emptied
+            // working folder is being deleted (the journal possibly unlinked already) still leaves a record saying the
+            // convert was complete: the next run finishes it (Recovery's own-journal case) instead of refusing to
+            // overwrite the files this run placed.
+            FileOps.MoveFile(OperationJournal.PathIn(Working), OperationJournal.PathIn(Output));
             FileOps.DeleteDirectory(Working);
+            OperationJournal.Delete(Output);
         }
 
         /// <summary>Undoes an operation that failed before <see cref="Commit"/>: the working folder goes, and the output if this created it and it is empty.</summary>

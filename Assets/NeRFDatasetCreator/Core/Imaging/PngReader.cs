@@ -51,7 +51,17 @@ namespace NerfDatasetCreator
             }
         }
 
-        public static PngImage Read(string path) => Decode(File.ReadAllBytes(path), path);
+        /// <summary>The largest factor by which deflate data can expand (zlib FAQ: 1032:1).</summary>
+        const long MaxDeflateRatio = 1032;
+
+        /// <summary>Reads and decodes the file; a file that cannot be read is an <see cref="IOException"/> naming it.</summary>
+        public static PngImage Read(string path)
+        {
+            byte[] bytes;
+            try { bytes = File.ReadAllBytes(path); }
+            catch (IOException e) when (e.Message.IndexOf(path, StringComparison.Ordinal) < 0) { throw new IOException(path + ": " + e.Message, e); }
+            return Decode(bytes, path);
+        }
 
         /// <summary>Decodes <paramref name="bytes"/>; <paramref name="name"/> names the file in errors.</summary>
         public static PngImage Decode(byte[] bytes, string name)
@@ -86,8 +96,12 @@ namespace NerfDatasetCreator
             var bytesPerPixel = ChannelsOf(colorType) * depth / 8;
             var stride = (long)width * bytesPerPixel;
             if (stride * height > int.MaxValue) throw Bad(name, "is too large to decode (" + width + "×" + height + ").");
-            var raw = new byte[(stride + 1) * height];
             if (idat.Length < 2) throw Bad(name, "has no image data.");
+            // Deflate expands at most 1032:1 (zlib's FAQ, "maximum compression factor"): a header claiming more pixels
+            // than the file's image data can inflate to is refused before its buffer is allocated.
+            if ((stride + 1) * height > MaxDeflateRatio * (idat.Length + 1))
+                throw Bad(name, "claims " + width + "×" + height + " pixels, more than its " + idat.Length + " bytes of image data can hold (deflate expands at most " + MaxDeflateRatio + ":1); it is truncated or its header is wrong.");
+            var raw = new byte[(stride + 1) * height];
             idat.Position = 2; // zlib header (RFC 1950); DeflateStream reads the raw deflate data after it
             using (var inflater = new DeflateStream(idat, CompressionMode.Decompress))
             {

@@ -20,10 +20,16 @@ namespace NerfDatasetCreator
             var path = Path.Combine(datasetDirectory, DatasetLayout.ConfigFileName);
             if (!File.Exists(path)) return null;
             JObject config;
-            try { config = JObject.Parse(File.ReadAllText(path)); }
+            try { config = JObject.Parse(FileOps.ReadText(path)); }
             catch (JsonException e)
             {
                 warnings?.Add(new ValidationProblem(DatasetLayout.ConfigFileName, path, "is not valid JSON (" + e.Message + "), so the target's size is unknown.",
+                    "Restore the file from the capture, or ignore this if the dataset is not from this plugin."));
+                return null;
+            }
+            catch (System.Exception e) when (e is IOException || e is System.UnauthorizedAccessException)
+            {
+                warnings?.Add(new ValidationProblem(DatasetLayout.ConfigFileName, path, "cannot be read (" + e.Message + "), so the target's size is unknown.",
                     "Restore the file from the capture, or ignore this if the dataset is not from this plugin."));
                 return null;
             }

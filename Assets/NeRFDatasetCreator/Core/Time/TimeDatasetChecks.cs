@@ -58,11 +58,15 @@ namespace NerfDatasetCreator
             JObject config;
             try
             {
-                config = JObject.Parse(File.ReadAllText(path));
+                config = JObject.Parse(FileOps.ReadText(path));
             }
             catch (JsonException)
             {
                 return null;
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                return null; // unreadable or too large: validate's own read of the file reports it, naming it
             }
             if (!(config[TimeRecord.Key] is JObject time)) return null;
             var record = new Record();
@@ -83,12 +87,16 @@ namespace NerfDatasetCreator
             if (!File.Exists(path)) return null;
             try
             {
-                var root = JToken.Parse(File.ReadAllText(path)) as JObject;
+                var root = JToken.Parse(FileOps.ReadText(path)) as JObject;
                 return (root?["frames"] as JArray)?.Select(f => f as JObject ?? new JObject()).ToList();
             }
             catch (JsonException)
             {
                 return null;
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                return null; // unreadable or too large: the transforms reader reports it, naming it
             }
         }
 

@@ -103,6 +103,22 @@ namespace NerfDatasetCreator
             }
             else if (time.Mode == TimeMode.Monocular && time.Steps == 0) steps = settings.Train.Count;
             else steps = time.Steps;
+            var trainSource = settings.Train.Source;
+            if (time.Mode == TimeMode.Monocular && trainSource != null && !trainSource.IsFormation && !trainSource.IsVolume)
+            {
+                // Imported or scene cameras: the split's count is theirs (CameraSourcePlanning.Resolved), which
+                // TimeSettingsValidator could not see, so the monocular rule is checked here.
+                var cameras = settings.Train.Count;
+                if (cameras < 2 || time.Steps > 0 && time.Steps != cameras)
+                {
+                    problems.Add(new ValidationProblem("splits.train.source", cameras + (cameras == 1 ? " camera" : " cameras"),
+                        cameras < 2
+                            ? "is fewer than 2 train views; a monocular capture has one train view per time step."
+                            : "differ from time.steps (" + time.Steps + "); a monocular capture has exactly one train view per time step.",
+                        cameras < 2 ? "Import a file with at least 2 train cameras (D-NeRF's scenes have 50 to 200)." : "Set time.steps to 0 (the cameras decide) or to " + cameras + "."));
+                    return null;
+                }
+            }
             if (steps < 2) return null; // reported by TimeSettingsValidator
 
             if (time.Mode == TimeMode.Monocular && steps != settings.Train.Count)

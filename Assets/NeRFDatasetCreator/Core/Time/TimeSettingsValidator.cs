@@ -47,7 +47,11 @@ namespace NerfDatasetCreator
                     "Use 2 or more steps, or time.mode \"static\"."));
 
             var train = settings.Train?.Count ?? 0;
-            if (time.Mode == TimeMode.Monocular)
+            // Cameras imported from a file or taken from the scene give the split its views; its count is not used
+            // (camera-sources.md), so it is checked once the cameras are known (TimePlanning), not here.
+            var trainSource = settings.Train?.Source;
+            var countUsed = trainSource == null || trainSource.IsFormation || trainSource.IsVolume;
+            if (time.Mode == TimeMode.Monocular && countUsed)
             {
                 if (train < 2)
                     Add(new ValidationProblem("splits.train.count", train.ToString(CultureInfo.InvariantCulture),
@@ -58,7 +62,7 @@ namespace NerfDatasetCreator
                         "differs from splits.train.count (" + train + "); a monocular capture has exactly one train view per time step.",
                         "Set time.steps to 0 (the train count decides) or to " + train + ", or set splits.train.count to " + time.Steps + "."));
             }
-            else if (time.Steps == 0 && !(time.Fps > 0))
+            else if (time.Mode == TimeMode.MultiView && time.Steps == 0 && !(time.Fps > 0))
                 Add(new ValidationProblem("time.steps", "0",
                     "leaves the number of time steps open; a multi-view capture renders every camera at each of them.",
                     "Give time.steps (2 or more) or time.fps."));

@@ -52,6 +52,7 @@ namespace NerfDatasetCreator
                 JObject json;
                 try { json = JObject.Parse(FileOps.ReadText(jsonPath)); }
                 catch (JsonException e) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, "is not valid JSON: " + e.Message, "Fix or regenerate the file.")); return null; }
+                catch (FileTooLargeException e) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, e.Reason, "Pass a dataset whose split files were written by Blender, this plugin or another NeRF tool.")); return null; }
                 catch (Exception e) when (e is IOException || e is UnauthorizedAccessException) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, "cannot be read: " + e.Message, "Check the file's permissions.")); return null; }
 
                 var angle = json["camera_angle_x"];
@@ -70,9 +71,21 @@ namespace NerfDatasetCreator
                 if (normalisation == null && json["scene_normalisation"] != null) normalisation = SceneNormalisation.FromJson(json["scene_normalisation"]);
                 if (split == "train") aabbScale = AabbScale.Declared(json["aabb_scale"], Path.GetFileName(jsonPath), warnings);
 
-                if (!(json["frames"] is JArray list) || list.Count == 0)
+                if (!(json["frames"] is JArray list))
                 {
-                    problems.Add(new ValidationProblem(split + ".frames", "missing or empty", "must list at least one frame.", "Regenerate the split file."));
+                    problems.Add(new ValidationProblem(Path.GetFileName(jsonPath) + ": frames", json["frames"] == null ? "missing" : json["frames"].Type.ToString(),
+                        "must be a list of frames (empty for an unused split).", "Regenerate the split file."));
+                    continue;
+                }
+                if (list.Count == 0)
+                {
+                    // Only train is needed (validate agrees): an unused val or test split converts without frames.
+                    if (split == "train")
+                        problems.Add(new ValidationProblem(Path.GetFileName(jsonPath) + ": frames", "[]",
+                            "is empty; every loader trains on the train split, so there is nothing to convert.", "Capture at least one train view."));
+                    else
+                        warnings.Add(new ValidationProblem(Path.GetFileName(jsonPath) + ": frames", "[]", "is empty; the export has no " + split + " frames.",
+                            "Nothing to do if the split is unused on purpose (bmild/nerf and nerf-pytorch need " + split + " views)."));
                     continue;
                 }
                 for (var i = 0; i < list.Count; i++)
@@ -92,10 +105,13 @@ namespace NerfDatasetCreator
                     if (size == null) { size = header; sizeSource = image; }
                     else if (header.Width != size.Width || header.Height != size.Height)
                         problems.Add(new ValidationProblem(field + ".file_path", image, $"is {header.Width}×{header.Height} but {sizeSource} is {size.Width}×{size.Height}.", "Every loader needs one image size for the whole dataset."));
-                    frames.Add(new ExportFrame(split, image, c2w,
-                        Extra(root, image, DatasetLayout.Suffix(DatasetFileKind.DepthPng), 16, size),
-                        Extra(root, image, DatasetLayout.Suffix(DatasetFileKind.MaskPng), 8, size),
-                        JsonValues.TryNumber(frame["time"], out var time) ? time : (double?)null));
+                    var depth = Extra(root, image, DatasetLayout.Suffix(DatasetFileKind.DepthPng), 16, size, "depth", out var unusableDepth);
+                    var mask = Extra(root, image, DatasetLayout.Suffix(DatasetFileKind.MaskPng), 8, size, "mask", out var unusableMask);
+                    // Every unusable companion is named: left out here, refused by colmap --depths (GaussianSplattingDepths.Check).
+                    if (unusableDepth != null) warnings.Add(LeftOut(unusableDepth));
+                    if (unusableMask != null) warnings.Add(LeftOut(unusableMask));
+                    frames.Add(new ExportFrame(split, image, c2w, depth, mask,
+                        JsonValues.TryNumber(frame["time"], out var time) ? time : (double?)null, unusableDepth));
                 }
             }
             InvalidParameterException.ThrowIfAny(problems.ToArray());
@@ -143,15 +159,42 @@ namespace NerfDatasetCreator
             }
         }
 
-        /// <summary>A companion image (depth, mask) of the plugin's layout if it exists with the expected format.</summary>
-        static string Extra(string root, string image, string suffix, int bitDepth, PngInfo size)
+        /// <summary>
+        /// A companion image (depth, mask) of the plugin's layout if it exists with the expected format; a file that
+        /// exists but cannot be used — another bit depth, another size, a header claiming some other size, truncated,
+        /// unreadable, a link — is null with <paramref name="unusable"/> naming it and saying why (one rule for all of them).
+        /// </summary>
+        static string Extra(string root, string image, string suffix, int bitDepth, PngInfo size, string what, out ValidationProblem unusable)
         {
+            unusable = null;
             var stem = image.Substring(0, image.Length - Path.GetExtension(image).Length);
             var candidate = stem + suffix;
-            if (!File.Exists(Path.Combine(root, candidate)) || PathSafety.IsLink(Path.Combine(root, candidate))) return null;
-            var h = ReadPng(root, candidate);
-            return h.ColorType == 0 && h.BitDepth == bitDepth && h.Width == size.Width && h.Height == size.Height ? candidate : null;
+            var path = Path.Combine(root, candidate);
+            if (!File.Exists(path)) return null;
+            string why = null;
+            if (PathSafety.IsLink(path)) why = "is a symbolic link, which convert never follows";
+            else
+            {
+                try
+                {
+                    var h = PngInfo.Read(path);
+                    if (h.ColorType != PngInfo.ColorTypeGray || h.BitDepth != bitDepth)
+                        why = "is " + h.Describe() + ", not " + bitDepth + "-bit grey";
+                    else if (h.Width != size.Width || h.Height != size.Height)
+                        why = "is " + h.Width + "×" + h.Height + ", not the images' " + size.Width + "×" + size.Height;
+                }
+                catch (InvalidDataException e) { why = e.Message.TrimEnd('.'); }
+                catch (Exception e) when (e is IOException || e is UnauthorizedAccessException) { why = "cannot be read (" + e.Message.TrimEnd('.') + ")"; }
+            }
+            if (why == null) return candidate;
+            unusable = new ValidationProblem(what, candidate, why + ", not this plugin's " + what + " layout (Documentation~/output-format.md)",
+                "Re-capture the " + what + " with this plugin, or delete the file to export " + image + " without " + what + ".");
+            return null;
         }
+
+        static ValidationProblem LeftOut(ValidationProblem unusable) =>
+            new ValidationProblem(unusable.Field, unusable.Value, unusable.Reason + "; it is left out of the export" +
+                (unusable.Field == "depth" ? " (convert --to colmap --depths refuses it)." : "."), unusable.Fix);
 
         static void ReportPartial(List<ExportFrame> frames, Func<ExportFrame, string> path, string what, ICollection<ValidationProblem> warnings)
         {

@@ -27,7 +27,18 @@ namespace NerfDatasetCreator
             if (!File.Exists(cameras) || !File.Exists(images))
                 throw Fail("path", folder ?? "", "has no cameras.txt and images.txt (a COLMAP text model).",
                     "Give the model folder (e.g. sparse/0); convert a binary model with `colmap model_converter --output_type TXT`.");
-            return Read(File.ReadAllText(cameras), File.ReadAllText(images), folder, placement);
+            return Read(ReadText(cameras), ReadText(images), folder, placement);
+        }
+
+        /// <summary>A model file's text; one that cannot be read, or is too large to be a model (FileOps.MaxTextBytes), is a problem naming it.</summary>
+        static string ReadText(string path)
+        {
+            try { return FileOps.ReadText(path); }
+            catch (FileTooLargeException e) { throw Fail("path", path, e.Reason, "Give the folder of a COLMAP text model (cameras.txt, images.txt)."); }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                throw Fail("path", path, "cannot be read: " + e.Message, "Give the folder of a COLMAP text model (cameras.txt, images.txt).");
+            }
         }
 
         public static ImportedPoses Read(string camerasText, string imagesText, string sourceName, SceneNormalisation placement = null)
@@ -61,6 +72,15 @@ namespace NerfDatasetCreator
                     continue;
                 }
                 var c2w = CameraToWorld(q.Normalized(), new Vector3d(v[4], v[5], v[6]));
+                // The same checks as an imported transforms file (TransformsPoseReader): finite numbers can still give a
+                // camera centre −Rᵀt beyond the largest double.
+                var poseProblem = PosePlacement.Problem(c2w);
+                if (poseProblem != null)
+                {
+                    problems.Add(new ValidationProblem(field + " (camera centre −Rᵀt)", c2w.Translation.ToString(), poseProblem,
+                        "Write a model whose camera centres are finite (COLMAP's own reconstructions always are)."));
+                    continue;
+                }
                 cameras.Add(new ImportedCamera(e[9], PosePlacement.SplitFromName(e[9]), c2w, PosePlacement.ToUnityPose(c2w, placement), k));
             }
             InvalidParameterException.ThrowIfAny(problems.ToArray());

@@ -86,25 +86,68 @@ namespace NerfDatasetCreator
             foreach (var dup in names.GroupBy(Stem).Where(g => g.Count() > 1))
                 problems.Add(new ValidationProblem("file_path", string.Join(", ", dup), "share the stem " + dup.Key + ", and 3DGS names depth maps and depth_params keys by stem.",
                     "Give the images distinct names before the extension."));
+            // A depth file that is there but unusable is refused, never exported as an all-zero map: the user asked for depth.
+            foreach (var frame in frames.Where(f => f.UnusableDepth != null))
+                problems.Add(new ValidationProblem("depth", frame.UnusableDepth.Value,
+                    frame.UnusableDepth.Reason + "; --depths exports only this plugin's 16-bit depth maps and refuses any other rather than write a wrong or empty map.",
+                    "Re-capture the depth with this plugin, or delete the file: an image without a depth file gets an all-zero map that 3DGS marks unreliable."));
             return problems;
+        }
+
+        /// <summary>What the first pass over the depth maps found: the nearest surface (in PNG steps) and the clamped pixels.</summary>
+        public sealed class DepthScan
+        {
+            internal int NearestStep = int.MaxValue;
+            internal int Saturated;
+        }
+
+        /// <summary>
+        /// Decodes every frame's depth map once before anything is written: the nearest surface sets the shared scale.
+        /// Each map that cannot be decoded (truncated data, a corrupt stream, unreadable) is added to
+        /// <paramref name="problems"/>, naming the file, so all of them are reported together.
+        /// </summary>
+        public static DepthScan Scan(ExportScene scene, ICollection<ValidationProblem> problems)
+        {
+            var scan = new DepthScan();
+            foreach (var f in scene.Frames.Where(f => f.DepthPath != null))
+            {
+                var path = Path.Combine(scene.RootDirectory, f.DepthPath);
+                try
+                {
+                    foreach (var v in PngGray16Reader.Read(path, out _, out _))
+                    {
+                        if (v > 0 && v < scan.NearestStep) scan.NearestStep = v;
+                        if (v == ushort.MaxValue) scan.Saturated++;
+                    }
+                }
+                catch (InvalidParameterException e)
+                {
+                    foreach (var p in e.Problems) problems.Add(p);
+                }
+                catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+                {
+                    problems.Add(new ValidationProblem("depth", path, "cannot be read: " + e.Message, "Check the file and its permissions."));
+                }
+            }
+            return scan;
         }
 
         /// <summary>
         /// Writes <c>depths/&lt;stem&gt;.png</c> for every frame and <c>sparse/0/depth_params.json</c> under
         /// <paramref name="outDir"/> (staged with the rest of the convert, never overwriting), reading each frame's depth PNG from the scene.
         /// </summary>
-        public static void Write(ExportScene scene, IReadOnlyList<string> names, string outDir, ICollection<ValidationProblem> warnings, StagedOutput staged)
+        public static void Write(ExportScene scene, IReadOnlyList<string> names, string outDir, ICollection<ValidationProblem> warnings, StagedOutput staged, DepthScan scan = null)
         {
             var unit = scene.DepthUnitScale;
-            // Pass 1: the nearest surface of the whole dataset sets the one shared scale.
-            var nearestStep = int.MaxValue;
-            var saturated = 0;
-            foreach (var f in scene.Frames.Where(f => f.DepthPath != null))
-                foreach (var v in PngGray16Reader.Read(Path.Combine(scene.RootDirectory, f.DepthPath), out _, out _))
-                {
-                    if (v > 0 && v < nearestStep) nearestStep = v;
-                    if (v == ushort.MaxValue) saturated++;
-                }
+            // Pass 1 (Scan): the nearest surface of the whole dataset sets the one shared scale.
+            if (scan == null)
+            {
+                var problems = new List<ValidationProblem>();
+                scan = Scan(scene, problems);
+                InvalidParameterException.ThrowIfAny(problems.ToArray());
+            }
+            var nearestStep = scan.NearestStep;
+            var saturated = scan.Saturated;
             var scale = nearestStep == int.MaxValue ? 1 : ScaleFor(nearestStep * unit);
 
             var folder = Path.Combine(outDir, FolderName);

@@ -112,7 +112,7 @@ namespace NerfDatasetCreator
             var frames = scene.Split(name).ToList();
             if (frames.Count == 0) return null;
             var file = DatasetLayout.TransformsFileName(split);
-            var json = (JArray)JObject.Parse(File.ReadAllText(Path.Combine(scene.RootDirectory, file)))["frames"];
+            var json = (JArray)JObject.Parse(FileOps.ReadText(Path.Combine(scene.RootDirectory, file)))["frames"];
             // BlenderDatasetLoader keeps every frame in file order or fails, so frames[i] is json[i].
             if (json.Count != frames.Count || frames.Count % steps != 0)
                 throw Refuse(file, frames.Count + " frames", "is not " + steps + " time steps × the same number of cameras.", "Re-capture the split in multi-view mode.");
@@ -206,7 +206,7 @@ namespace NerfDatasetCreator
             var path = Path.Combine(root, DatasetLayout.ConfigFileName);
             try
             {
-                return File.Exists(path) ? JObject.Parse(File.ReadAllText(path)) : null;
+                return File.Exists(path) ? JObject.Parse(FileOps.ReadText(path)) : null;
             }
             catch (JsonException)
             {

@@ -13,7 +13,23 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class PlyReader
     {
+        /// <summary>Bytes per vertex: six float32 and three uint8.</summary>
+        public const int VertexBytes = 6 * 4 + 3;
+
+        /// <summary>The points; a file that is not this layout, is truncated or cannot be read is a problem naming it.</summary>
         public static IReadOnlyList<CloudPoint> Read(string path)
+        {
+            try
+            {
+                return ReadPoints(path);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                throw Problem(path, "cannot be read: " + e.Message);
+            }
+        }
+
+        static IReadOnlyList<CloudPoint> ReadPoints(string path)
         {
             using (var file = File.OpenRead(path))
             {
@@ -22,6 +38,12 @@ namespace NerfDatasetCreator
                 var expected = WithoutComments(PlyWriter.Header(count));
                 if (WithoutComments(header) != expected)
                     throw Problem(path, "is not a binary little-endian PLY with exactly x y z nx ny nz (float) red green blue (uchar).");
+                // The header's count is checked against the bytes that follow it before anything is allocated: a header
+                // claiming 2 billion points over a few bytes is a truncated (or hostile) file, not an out-of-memory.
+                var available = file.Length - file.Position;
+                if (available < (long)count * VertexBytes)
+                    throw Problem(path, "is truncated: its header declares " + count + " points (" + ((long)count * VertexBytes) + " bytes), but only " +
+                                        available + " bytes follow the header.");
                 var points = new List<CloudPoint>(count);
                 using (var reader = new BinaryReader(file, Encoding.ASCII, leaveOpen: true))
                 {

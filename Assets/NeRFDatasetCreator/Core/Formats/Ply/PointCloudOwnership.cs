@@ -51,8 +51,9 @@ namespace NerfDatasetCreator
         {
             var config = Path.Combine(datasetDirectory, DatasetLayout.ConfigFileName);
             if (!File.Exists(config)) return null;
-            try { return PointCloudRecord.FromConfig(JObject.Parse(File.ReadAllText(config))); }
+            try { return PointCloudRecord.FromConfig(JObject.Parse(FileOps.ReadText(config))); }
             catch (JsonException) { return null; }
+            catch (System.Exception e) when (e is IOException || e is System.UnauthorizedAccessException) { return null; } // no readable record: not ours
         }
 
         static bool HasSignature(string path)

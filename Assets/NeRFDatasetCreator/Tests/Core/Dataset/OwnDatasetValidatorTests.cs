@@ -35,8 +35,8 @@ namespace NerfDatasetCreator.Tests
             Assert.That(report.Problems.Select(p => p.ToString()), Is.Empty);
             Assert.That(report.Warnings, Is.Empty);
             Assert.That(report.ImagesChecked, Is.EqualTo(9));
-            // test: depth_path and depth_file_path (same file), normal_path, mask_path per frame; train: mask_path.
-            Assert.That(report.ExtraFilesChecked, Is.EqualTo(3 * 4 + 4));
+            // test: depth_path and depth_file_path (the same file, counted once), normal_path, mask_path per frame; train: mask_path.
+            Assert.That(report.ExtraFilesChecked, Is.EqualTo(3 * 3 + 4));
         }
 
         [Test]
@@ -68,7 +68,7 @@ namespace NerfDatasetCreator.Tests
             TestDatasets.FromPlan(folder, CapturePlan.Build(s, PlanTarget.AtOrigin));
             TestPng.Write(Path.Combine(folder, "test", "r_0_depth_0000.png"), 32, 32, 8, PngInfo.ColorTypeGray);
             var lines = Lines(folder);
-            Assert.That(lines, Has.Length.EqualTo(2), "depth_path and depth_file_path name the same file");
+            Assert.That(lines, Has.Length.EqualTo(1), "depth_path and depth_file_path name the same file: one problem, not two");
             Assert.That(lines[0], Is.EqualTo("transforms_test.json frame 0 (./test/r_0): depth_path ./test/r_0_depth_0000.png is 8-bit grey, expected 16-bit grey (Documentation~/output-format.md)."));
         }
 

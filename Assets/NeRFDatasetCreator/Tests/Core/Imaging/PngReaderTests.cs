@@ -40,6 +40,19 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void AHeaderClaimingMorePixelsThanTheDataCanHoldIsRefusedBeforeDecoding()
+        {
+            // A real 4×4 grey PNG whose IHDR is rewritten to 20000×20000 (CRC recomputed): 400 MB of rows from a few
+            // dozen bytes of deflate data, beyond deflate's 1032:1, so it is refused without allocating them.
+            var file = PngWriter.Encode(new byte[16], 4, 4, PngPixelFormat.Gray8);
+            foreach (var offset in new[] { 16, 20 }) { file[offset] = 0; file[offset + 1] = 0; file[offset + 2] = 0x4E; file[offset + 3] = 0x20; }
+            var crc = Crc32.Compute(file, 12, 17);
+            file[29] = (byte)(crc >> 24); file[30] = (byte)(crc >> 16); file[31] = (byte)(crc >> 8); file[32] = (byte)crc;
+            var e = Assert.Throws<InvalidDataException>(() => PngReader.Decode(file, "huge.png"));
+            Assert.That(e.Message, Does.StartWith("huge.png claims 20000×20000 pixels, more than its"));
+        }
+
+        [Test]
         public void NotAPngIsRefusedWithItsName()
         {
             var e = Assert.Throws<InvalidDataException>(() => PngReader.Decode(new byte[] { 1, 2, 3, 4, 5, 6, 7, 8, 9 }, "broken.png"));
