@@ -17,8 +17,9 @@ namespace NerfDatasetCreator
     {
         bool _committed;
 
-        DatasetWriteSession(string finalFolder, string workingFolder, OverwritePolicy policy)
+        DatasetWriteSession(string finalFolder, string workingFolder, OverwritePolicy policy, bool rendersImages)
         {
+            RendersImages = rendersImages;
             FinalFolder = finalFolder;
             WorkingFolder = workingFolder;
             Policy = policy;
@@ -30,6 +31,9 @@ namespace NerfDatasetCreator
         public string WorkingFolder { get; }
 
         public OverwritePolicy Policy { get; }
+
+        /// <summary>False for a run that writes no images (a plan): it never replaces a rendered dataset (<see cref="OwnDataset.WhyNotReplaceable"/>).</summary>
+        public bool RendersImages { get; }
 
         public bool IsCommitted => _committed;
 
@@ -50,10 +54,10 @@ namespace NerfDatasetCreator
         /// checks it (<see cref="SafeOutput.CheckOutputFolder"/>; throws <see cref="InvalidParameterException"/> with
         /// every problem) and creates the working folder with its journal.
         /// </summary>
-        public static DatasetWriteSession Begin(string datasetFolder, OverwritePolicy policy, string projectRoot = null, DateTime? now = null)
+        public static DatasetWriteSession Begin(string datasetFolder, OverwritePolicy policy, string projectRoot = null, DateTime? now = null, bool rendersImages = true)
         {
             var recovered = IsUsablePath(datasetFolder) ? Recovery.Run(datasetFolder) : Array.Empty<RecoveryNote>();
-            var problems = SafeOutput.CheckOutputFolder(datasetFolder, projectRoot, policy);
+            var problems = SafeOutput.CheckOutputFolder(datasetFolder, projectRoot, policy, rendersImages);
             if (problems.Count > 0) throw new InvalidParameterException(problems);
             var full = Path.GetFullPath(datasetFolder).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
             var parent = Path.GetDirectoryName(full);
@@ -61,7 +65,7 @@ namespace NerfDatasetCreator
             var working = WorkingFolders.NewPartial(full, now ?? DateTime.UtcNow);
             FileOps.CreateDirectory(working);
             new OperationJournal { Operation = "write", Output = full }.Save(working);
-            return new DatasetWriteSession(full, working, policy) { Recovered = recovered, Leftovers = Leftover.Of(full, working) };
+            return new DatasetWriteSession(full, working, policy, rendersImages) { Recovered = recovered, Leftovers = Leftover.Of(full, working) };
         }
 
         static bool IsUsablePath(string folder)
@@ -114,7 +118,7 @@ namespace NerfDatasetCreator
             if (Directory.Exists(FinalFolder) || File.Exists(FinalFolder))
             {
                 var empty = Directory.Exists(FinalFolder) && Directory.GetFileSystemEntries(FinalFolder).Length == 0;
-                if (!empty && (Policy != OverwritePolicy.Replace || OwnDataset.WhyNotOurs(FinalFolder) != null))
+                if (!empty && (Policy != OverwritePolicy.Replace || OwnDataset.WhyNotReplaceable(FinalFolder, RendersImages) != null))
                     throw new IOException(FinalFolder + " appeared while the dataset was being written and is not replaced; the new dataset is complete in " + WorkingFolder + ".");
                 aside = WorkingFolders.NewReplaced(FinalFolder);
             }

@@ -45,7 +45,7 @@ namespace NerfDatasetCreator.Tool
             DatasetWriteSession session;
             try
             {
-                session = DatasetWriteSession.Begin(outputFolder, settings.Overwrite);
+                session = DatasetWriteSession.Begin(outputFolder, settings.Overwrite, rendersImages: false);
             }
             catch (InvalidParameterException e)
             {
