@@ -105,6 +105,14 @@ namespace NerfDatasetCreator
             FileOps.WriteText(path, write);
         }
 
+        /// <summary>Writes a binary file at a dataset-relative path as <paramref name="write"/> streams it, creating its folder.</summary>
+        public void WriteBytes(string relativePath, Action<Stream> write)
+        {
+            var path = PathOf(relativePath);
+            FileOps.CreateDirectory(Path.GetDirectoryName(path));
+            FileOps.WriteStream(path, write);
+        }
+
         /// <summary>
         /// Moves the complete dataset to its final name. Under <see cref="OverwritePolicy.Replace"/> an existing
         /// dataset there — only one this plugin provably wrote (<see cref="OwnDataset"/>) — is first moved aside and

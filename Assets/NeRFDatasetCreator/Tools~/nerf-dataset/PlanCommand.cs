@@ -59,7 +59,7 @@ namespace NerfDatasetCreator.Tool
             try
             {
                 DatasetMetadataFiles.Write(session, plan, new Provenance(DateTime.UtcNow, null, "nerf-dataset plan", imagesRendered: false));
-                session.WriteText(DatasetLayout.RigPreviewFileName, RigPreviewPly.Write(plan));
+                session.WriteBytes(DatasetLayout.RigPreviewFileName, stream => RigPreviewPly.Write(plan, stream));
                 File.WriteAllBytes(session.PathOf(RigPreviewPicture.FileName), RigPreviewPicture.Encode(plan));
                 session.Commit();
             }
