@@ -64,15 +64,19 @@ namespace NerfDatasetCreator.Tool.Tests
             new OperationJournal { Operation = "write", Output = _scratch.PathOf("other") }.Save(elsewhere);
             // A folder named as a replaced dataset, but holding no dataset the plugin wrote.
             var replaced = UserFolder("lego.replaced-0123abcd~");
+            // A merge's name with a convert's journal: recovery would roll the "convert" back by deleting the folder.
+            var mismatched = UserFolder(".lego.merging-0123abcd");
+            new OperationJournal { Operation = "convert", Output = _scratch.PathOf("lego") }.Save(mismatched);
 
             var run = ToolRun.Of("clean", _scratch.Root);
             Assert.That(run.ExitCode, Is.EqualTo(0), run.ToString());
-            foreach (var folder in new[] { noJournal, convertNoJournal, elsewhere, replaced })
+            foreach (var folder in new[] { noJournal, convertNoJournal, elsewhere, replaced, mismatched })
                 Assert.That(File.Exists(Path.Combine(folder, "mine.txt")), Is.True, folder + "\n" + run);
             Assert.That(run.Out, Does.Contain("not ours, left alone: " + noJournal + " (1 file, 9 B): it holds no journal (.nerf-operation.json) the tool wrote."));
             Assert.That(run.Out, Does.Contain("not ours, left alone: " + convertNoJournal + " (1 file, 9 B): it holds no journal"));
             Assert.That(run.Out, Does.Contain("not ours, left alone: " + elsewhere + " (2 files, ").And.Contain("is not a write into " + _scratch.PathOf("lego")));
             Assert.That(run.Out, Does.Contain("not ours, left alone: " + replaced + " (1 file, 9 B): it has no dataset_config.json"));
+            Assert.That(run.Out, Does.Contain("not ours, left alone: " + mismatched + " (2 files, ").And.Contain("is not a merge into " + _scratch.PathOf("lego")));
         }
 
         [Test]

@@ -45,7 +45,8 @@ namespace NerfDatasetCreator
                     FileOps.DeleteDirectory(working);
                     continue;
                 }
-                if (journal == null || !WorkingFolders.SamePath(journal.Output, output)) continue;
+                // Act only on a journal whose operation is the one the folder's name says and whose output is this one.
+                if (journal == null || journal.Operation != WorkingFolders.KindOf(Path.GetFileName(working)) || !WorkingFolders.SamePath(journal.Output, output)) continue;
                 // A journal is a file anyone can edit: act on none of its paths unless all lie inside what the operation owns.
                 var refused = JournalPaths.WhyRefused(working, journal, output);
                 if (refused != null)

@@ -54,7 +54,7 @@ namespace NerfDatasetCreator.Tool
             }
             foreach (var note in session.Recovered) stderr.WriteLine("note: " + note);
             foreach (var leftover in session.Leftovers)
-                stderr.WriteLine("note: left over: " + leftover + " `nerf-dataset clean " + Path.GetDirectoryName(session.FinalFolder) + "` removes it.");
+                stderr.WriteLine("note: left over: " + leftover + (leftover.Removable ? " `nerf-dataset clean " + Path.GetDirectoryName(session.FinalFolder) + "` removes it." : ""));
 
             try
             {
