@@ -40,9 +40,12 @@ namespace NerfDatasetCreator.Tool.Tests
             var config_ = JObject.Parse(File.ReadAllText(Path.Combine(output, "dataset_config.json")));
             Assert.That((bool)config_["imagesRendered"], Is.False);
             Assert.That((long)config_["settings"]["seed"], Is.EqualTo(5));
-            var ply = File.ReadAllLines(Path.Combine(output, "rig_preview.ply"));
-            Assert.That(ply[0], Is.EqualTo("ply"));
-            Assert.That(ply, Does.Contain("element vertex " + (1 + 5 * 22)));
+            var bytes = File.ReadAllBytes(Path.Combine(output, "rig_preview.ply"));
+            var ply = System.Text.Encoding.ASCII.GetString(bytes, 0, 600);
+            Assert.That(ply, Does.StartWith("ply\nformat binary_little_endian 1.0\n"));
+            Assert.That(ply, Does.Contain("\nelement vertex " + (1 + 5 * 22) + "\n").And.Contain("\nelement edge " + 8 * 22 + "\n"));
+            var header = ply.IndexOf("end_header\n", System.StringComparison.Ordinal) + "end_header\n".Length;
+            Assert.That(bytes.Length, Is.EqualTo(header + (1 + 5 * 22) * 15 + 8 * 22 * 11), "15 bytes per vertex, 11 per edge");
         }
 
         [Test]

@@ -5,9 +5,9 @@ using NUnit.Framework;
 namespace NerfDatasetCreator.Tool.Tests
 {
     /// <summary>
-    /// "overwrite": "replace" deletes only what the plugin provably wrote (OwnDataset), so every file and folder the
-    /// plugin's own commands put into a dataset must count as its own: plan's previews and each convert target's
-    /// default output, camera paths and depth maps included.
+    /// Every file and folder the plugin's own commands put into a dataset must count as its own (OwnDataset.WhyNotOurs):
+    /// plan's previews and each convert target's default output, camera paths and depth maps included — which is what
+    /// clean needs to recognise a dataset a replace moved aside. A replace itself still refuses to delete the exports.
     /// </summary>
     [TestFixture]
     public class ReplaceAfterExportsTests
@@ -40,6 +40,8 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(Directory.Exists(Path.Combine(folder, NgpWriter.FolderName, CameraPathFiles.FolderName)), Is.True, "ngp wrote camera paths");
 
             Assert.That(OwnDataset.WhyNotOurs(folder), Is.Null);
+            // Its own, but a replace still refuses: the exports were made after the capture, and nothing would bring them back (issue 22).
+            Assert.That(OwnDataset.WhyNotReplaceable(folder, rendersImages: true), Does.Contain("is an export made with nerf-dataset convert"));
 
             File.WriteAllText(Path.Combine(folder, "colmap", "notes.txt"), "mine");
             Assert.That(OwnDataset.WhyNotOurs(folder), Does.Contain("notes.txt"), "a user's file anywhere inside makes it theirs");

@@ -45,7 +45,7 @@ namespace NerfDatasetCreator
             DatasetWriteSession session;
             try
             {
-                session = DatasetWriteSession.Begin(outputFolder, settings.Overwrite, field: "--out");
+                session = DatasetWriteSession.Begin(outputFolder, settings.Overwrite, field: "--out", rendersImages: false);
             }
             catch (InvalidParameterException e)
             {
@@ -54,12 +54,12 @@ namespace NerfDatasetCreator
             }
             foreach (var note in session.Recovered) stderr.WriteLine("note: " + note);
             foreach (var leftover in session.Leftovers)
-                stderr.WriteLine("note: left over: " + leftover + " `nerf-dataset clean " + Path.GetDirectoryName(session.FinalFolder) + "` removes it.");
+                stderr.WriteLine("note: left over: " + leftover + (leftover.Removable ? " `nerf-dataset clean " + Path.GetDirectoryName(session.FinalFolder) + "` removes it." : ""));
 
             try
             {
                 DatasetMetadataFiles.Write(session, plan, new Provenance(DateTime.UtcNow, null, "nerf-dataset plan", imagesRendered: false));
-                session.WriteText(DatasetLayout.RigPreviewFileName, RigPreviewPly.Write(plan));
+                session.WriteBytes(DatasetLayout.RigPreviewFileName, stream => RigPreviewPly.Write(plan, stream));
                 File.WriteAllBytes(session.PathOf(RigPreviewPicture.FileName), RigPreviewPicture.Encode(plan));
                 session.Commit();
             }

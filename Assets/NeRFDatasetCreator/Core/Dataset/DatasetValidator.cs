@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
+using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -35,6 +36,8 @@ namespace NerfDatasetCreator
             double? firstAngle = null;
             string firstAngleFile = null;
             var cameraCentres = new List<Vector3d>();
+            var timeRecord = TimeDatasetChecks.HasTimeRecord(folder);
+            var timeFramesBySplit = new Dictionary<DatasetSplit, List<JObject>>();
             foreach (var split in DatasetSplits.All)
             {
                 var file = DatasetLayout.TransformsFileName(split);
@@ -45,13 +48,38 @@ namespace NerfDatasetCreator
                         "is missing; bmild/nerf and nerf-pytorch open all three transforms files (write an empty \"frames\" list for an unused split)."));
                     continue;
                 }
+                // Streamed frame by frame (a 300 000-view plan's files are 87 MB each). What the frames add is undone if
+                // the file turns out to be malformed further on, so a broken file reports its parse error alone, as before.
+                var checkpoint = new Checkpoint(report, state, cameraCentres);
+                var needsDepthScale = false;
+                var timeFrames = new List<JObject>();
+                var keepEveryTimeFrame = timeRecord;
                 TransformsDocument doc;
                 try
                 {
-                    doc = TransformsReader.ReadFile(path);
+                    doc = TransformsReader.ReadFile(path, (frame, json) =>
+                    {
+                        if (frame.FilePath != null)
+                        {
+                            var key = ExportPaths.Normalise(frame.FilePath);
+                            if (state.FilePaths.TryGetValue(key, out var first))
+                                report.Problems.Add(new DatasetProblem(file, frame.Index, frame.FilePath,
+                                    "file_path is also " + first.file + " frame " + first.index + "'s; two frames of one image train on it twice and exports write it twice (give every frame its own image)."));
+                            else
+                            {
+                                state.FilePaths[key] = (file, frame.Index);
+                                checkpoint.AddedPaths.Add(key);
+                            }
+                        }
+                        if (frame.TransformMatrix.HasValue && frame.TransformMatrix.Value.IsFinite) cameraCentres.Add(frame.TransformMatrix.Value.Translation);
+                        CheckFrame(folder, file, frame, state, report);
+                        if (frame.ExtraFiles.ContainsKey("depth_path")) needsDepthScale = true;
+                        timeFrames.Add(TimeDatasetChecks.Keep(json, keepEveryTimeFrame));
+                    });
                 }
                 catch (SettingsFormatException e)
                 {
+                    checkpoint.Restore();
                     report.Problems.Add(new DatasetProblem(file, -1, null, "line " + e.Line + ", column " + e.Column + ": " + e.Detail));
                     continue;
                 }
@@ -62,11 +90,16 @@ namespace NerfDatasetCreator
                 }
                 catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
                 {
+                    checkpoint.Restore();
                     report.Problems.Add(new DatasetProblem(file, -1, null, "cannot be read: " + e.Message + " (check the file's permissions)."));
                     continue;
                 }
-                foreach (var p in doc.Problems) report.Problems.Add(new DatasetProblem(file, -1, null, p));
-                report.FrameCounts[DatasetSplits.Name(split)] = doc.Frames.Count;
+                state.Referenced.UnionWith(checkpoint.Referenced);
+                timeFramesBySplit[split] = timeFrames;
+                var frameCount = doc.FrameCount;
+                // The document's own problems come before its frames', as the file reads.
+                report.Problems.InsertRange(checkpoint.ProblemCount, doc.Problems.Select(p => new DatasetProblem(file, -1, null, p)));
+                report.FrameCounts[DatasetSplits.Name(split)] = frameCount;
 
                 if (doc.CameraAngleX.HasValue)
                 {
@@ -84,25 +117,10 @@ namespace NerfDatasetCreator
                             "camera_angle_x = " + ValidationProblem.Format(angle) + " differs from " + firstAngleFile + "'s " + ValidationProblem.Format(firstAngle.Value) +
                             "; bmild/nerf uses the last file's value for every split."));
                 }
-                if (doc.Frames.Count == 0 && split == DatasetSplit.Train)
+                if (frameCount == 0 && split == DatasetSplit.Train)
                     report.Problems.Add(new DatasetProblem(file, -1, null, "has no frames; every loader trains on the train split, so a dataset needs train views."));
-                else if (doc.Frames.Count == 0)
+                else if (frameCount == 0)
                     report.Warnings.Add(new DatasetProblem(file, -1, null, "has no frames; " + LoadersNeeding(split) + " need frames in this split."));
-                var needsDepthScale = false;
-                foreach (var frame in doc.Frames)
-                {
-                    if (frame.FilePath != null)
-                    {
-                        var key = ExportPaths.Normalise(frame.FilePath);
-                        if (state.FilePaths.TryGetValue(key, out var first))
-                            report.Problems.Add(new DatasetProblem(file, frame.Index, frame.FilePath,
-                                "file_path is also " + first + "'s; two frames of one image train on it twice and exports write it twice (give every frame its own image)."));
-                        else state.FilePaths[key] = file + " frame " + frame.Index;
-                    }
-                    if (frame.TransformMatrix.HasValue && frame.TransformMatrix.Value.IsFinite) cameraCentres.Add(frame.TransformMatrix.Value.Translation);
-                    CheckFrame(folder, file, frame, state, report);
-                    if (frame.ExtraFiles.ContainsKey("depth_path")) needsDepthScale = true;
-                }
                 if (state.First != null && (doc.W.HasValue && doc.W != state.First.Width || doc.H.HasValue && doc.H != state.First.Height))
                     report.Problems.Add(new DatasetProblem(file, -1, null,
                         "w × h = " + Show(doc.W) + "×" + Show(doc.H) + " but the images are " + state.First.Width + "×" + state.First.Height +
@@ -128,7 +146,7 @@ namespace NerfDatasetCreator
             foreach (var range in LoaderRangeCheck.Check(cameraCentres, 0))
                 report.Warnings.Add(new DatasetProblem("transforms_*.json", -1, null,
                     "(object size unknown here: the target is taken as a point at the origin) " + range));
-            TimeDatasetChecks.Check(folder, report);
+            TimeDatasetChecks.Check(folder, report, timeFramesBySplit);
             return report;
         }
 
@@ -218,13 +236,64 @@ namespace NerfDatasetCreator
         sealed class ImageState
         {
             public bool SkipFiles;
-            public readonly Dictionary<string, string> FilePaths = new Dictionary<string, string>(StringComparer.OrdinalIgnoreCase);
+            public readonly Dictionary<string, (string file, int index)> FilePaths = new Dictionary<string, (string file, int index)>(StringComparer.OrdinalIgnoreCase);
             /// <summary>Dataset-relative paths (forward slashes) of every image a frame names.</summary>
             public readonly HashSet<string> Referenced = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
+            /// <summary>What the file being read adds to <see cref="Referenced"/>, joined once it has read completely.</summary>
+            public HashSet<string> NewlyReferenced = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
             public int ColourImages;
             public int SixteenBitColour;
             public PngInfo First;
             public string FirstPath;
+        }
+
+        /// <summary>What the frames of one file change, to undo when the file turns out to be malformed after some frames.</summary>
+        sealed class Checkpoint
+        {
+            readonly DatasetValidationReport _report;
+            readonly ImageState _state;
+            readonly List<Vector3d> _centres;
+            readonly int _centreCount, _images, _extras, _colour, _sixteen;
+            readonly int? _width, _height;
+            readonly PngInfo _first;
+            readonly string _firstPath;
+            public readonly int ProblemCount;
+            public readonly List<string> AddedPaths = new List<string>();
+            public readonly HashSet<string> Referenced;
+
+            public Checkpoint(DatasetValidationReport report, ImageState state, List<Vector3d> centres)
+            {
+                _report = report;
+                _state = state;
+                _centres = centres;
+                ProblemCount = report.Problems.Count;
+                _centreCount = centres.Count;
+                _images = report.ImagesChecked;
+                _extras = report.ExtraFilesChecked;
+                _width = report.ImageWidth;
+                _height = report.ImageHeight;
+                _colour = state.ColourImages;
+                _sixteen = state.SixteenBitColour;
+                _first = state.First;
+                _firstPath = state.FirstPath;
+                Referenced = state.NewlyReferenced = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
+            }
+
+            public void Restore()
+            {
+                _report.Problems.RemoveRange(ProblemCount, _report.Problems.Count - ProblemCount);
+                _centres.RemoveRange(_centreCount, _centres.Count - _centreCount);
+                _report.ImagesChecked = _images;
+                _report.ExtraFilesChecked = _extras;
+                _report.ImageWidth = _width;
+                _report.ImageHeight = _height;
+                _state.ColourImages = _colour;
+                _state.SixteenBitColour = _sixteen;
+                _state.First = _first;
+                _state.FirstPath = _firstPath;
+                foreach (var key in AddedPaths) _state.FilePaths.Remove(key);
+                Referenced.Clear();
+            }
         }
 
         static void CheckFrame(string folder, string file, TransformsFrame frame, ImageState state, DatasetValidationReport report)
@@ -248,7 +317,7 @@ namespace NerfDatasetCreator
                 else if (!File.Exists(image)) Problem("image " + relative + " is missing.");
                 else
                 {
-                    state.Referenced.Add(ExportPaths.Normalise(relative));
+                    state.NewlyReferenced.Add(ExportPaths.Normalise(relative));
                     var info = ReadPng(image, relative, Problem);
                     if (info != null)
                     {
@@ -300,7 +369,7 @@ namespace NerfDatasetCreator
                     Problem(pair.Key + " " + pair.Value + " is not a .png; this plugin's " + pair.Key + " files are " + expected.Describe() + " PNGs.");
                     continue;
                 }
-                state.Referenced.Add(ExportPaths.Normalise(pair.Value));
+                state.NewlyReferenced.Add(ExportPaths.Normalise(pair.Value));
                 var info = ReadPng(path, pair.Value, Problem);
                 if (info == null) continue;
                 report.ExtraFilesChecked++;

@@ -17,8 +17,9 @@ namespace NerfDatasetCreator
     {
         bool _committed;
 
-        DatasetWriteSession(string finalFolder, string workingFolder, OverwritePolicy policy)
+        DatasetWriteSession(string finalFolder, string workingFolder, OverwritePolicy policy, bool rendersImages)
         {
+            RendersImages = rendersImages;
             FinalFolder = finalFolder;
             WorkingFolder = workingFolder;
             Policy = policy;
@@ -30,6 +31,9 @@ namespace NerfDatasetCreator
         public string WorkingFolder { get; }
 
         public OverwritePolicy Policy { get; }
+
+        /// <summary>False for a run that writes no images (a plan): it never replaces a rendered dataset (<see cref="OwnDataset.WhyNotReplaceable"/>).</summary>
+        public bool RendersImages { get; }
 
         public bool IsCommitted => _committed;
 
@@ -50,10 +54,11 @@ namespace NerfDatasetCreator
         /// checks it (<see cref="SafeOutput.CheckOutputFolder"/>; throws <see cref="InvalidParameterException"/> with
         /// every problem, naming the folder <paramref name="field"/>, as the user gave it) and creates the working folder with its journal.
         /// </summary>
-        public static DatasetWriteSession Begin(string datasetFolder, OverwritePolicy policy, string projectRoot = null, DateTime? now = null, string field = "outputFolder")
+        public static DatasetWriteSession Begin(string datasetFolder, OverwritePolicy policy, string projectRoot = null, DateTime? now = null,
+            string field = "outputFolder", bool rendersImages = true)
         {
             var recovered = IsUsablePath(datasetFolder) ? Recovery.Run(datasetFolder) : Array.Empty<RecoveryNote>();
-            var problems = SafeOutput.CheckOutputFolder(datasetFolder, projectRoot, policy, field);
+            var problems = SafeOutput.CheckOutputFolder(datasetFolder, projectRoot, policy, field, rendersImages);
             if (problems.Count > 0) throw new InvalidParameterException(problems);
             var full = Path.GetFullPath(datasetFolder).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
             var parent = Path.GetDirectoryName(full);
@@ -61,7 +66,7 @@ namespace NerfDatasetCreator
             var working = WorkingFolders.NewPartial(full, now ?? DateTime.UtcNow);
             FileOps.CreateDirectory(working);
             new OperationJournal { Operation = "write", Output = full }.Save(working);
-            return new DatasetWriteSession(full, working, policy) { Recovered = recovered, Leftovers = Leftover.Of(full, working) };
+            return new DatasetWriteSession(full, working, policy, rendersImages) { Recovered = recovered, Leftovers = Leftover.Of(full, working) };
         }
 
         static bool IsUsablePath(string folder)
@@ -101,6 +106,14 @@ namespace NerfDatasetCreator
             FileOps.WriteText(path, write);
         }
 
+        /// <summary>Writes a binary file at a dataset-relative path as <paramref name="write"/> streams it, creating its folder.</summary>
+        public void WriteBytes(string relativePath, Action<Stream> write)
+        {
+            var path = PathOf(relativePath);
+            FileOps.CreateDirectory(Path.GetDirectoryName(path));
+            FileOps.WriteStream(path, write);
+        }
+
         /// <summary>
         /// Moves the complete dataset to its final name. Under <see cref="OverwritePolicy.Replace"/> an existing
         /// dataset there — only one this plugin provably wrote (<see cref="OwnDataset"/>) — is first moved aside and
@@ -114,7 +127,7 @@ namespace NerfDatasetCreator
             if (Directory.Exists(FinalFolder) || File.Exists(FinalFolder))
             {
                 var empty = Directory.Exists(FinalFolder) && Directory.GetFileSystemEntries(FinalFolder).Length == 0;
-                if (!empty && (Policy != OverwritePolicy.Replace || OwnDataset.WhyNotOurs(FinalFolder) != null))
+                if (!empty && (Policy != OverwritePolicy.Replace || OwnDataset.WhyNotReplaceable(FinalFolder, RendersImages) != null))
                     throw new IOException(FinalFolder + " appeared while the dataset was being written and is not replaced; the new dataset is complete in " + WorkingFolder + ".");
                 aside = WorkingFolders.NewReplaced(FinalFolder);
             }

@@ -11,7 +11,8 @@ namespace NerfDatasetCreator
     /// files). A folder inside <c>Assets/</c> is refused unless a path component below <c>Assets</c> ends in
     /// <c>~</c>, which Unity ignores. A folder inside another dataset, or one that holds other files, is refused;
     /// an existing dataset is refused unless the overwrite policy is <see cref="OverwritePolicy.Replace"/> and it is
-    /// provably this plugin's (<see cref="OwnDataset"/>). A path too long once the working folder's suffix is added
+    /// provably this plugin's, holds no export and — for a plan, which renders nothing — no rendered images
+    /// (<see cref="OwnDataset.WhyNotReplaceable"/>). A path too long once the working folder's suffix is added
     /// (<see cref="PathLimits"/>) and a mount point (<see cref="MountPoints"/>) are refused up front.
     /// </summary>
     public static class SafeOutput
@@ -42,7 +43,9 @@ namespace NerfDatasetCreator
         /// <c>ProjectSettings</c>. <paramref name="field"/> is what the user gave the folder as: the config's
         /// <c>outputFolder</c>, or a command line's <c>--out</c>.
         /// </summary>
-        public static IReadOnlyList<ValidationProblem> CheckOutputFolder(string datasetFolder, string projectRoot, OverwritePolicy policy, string field = "outputFolder")
+        /// <param name="rendersImages">False for a run that writes no images (<c>nerf-dataset plan</c>): it may never replace a rendered dataset.</param>
+        public static IReadOnlyList<ValidationProblem> CheckOutputFolder(string datasetFolder, string projectRoot, OverwritePolicy policy,
+            string field = "outputFolder", bool rendersImages = true)
         {
             var problems = new List<ValidationProblem>();
             string full;
@@ -90,10 +93,10 @@ namespace NerfDatasetCreator
                     problems.Add(new ValidationProblem("overwrite", "never",
                         "forbids replacing the existing dataset " + full + ".",
                         "Choose another dataset name, or set overwrite to \"replace\" to replace it once the new one is complete."));
-                else if (OwnDataset.WhyNotOurs(full) is string why)
+                else if (OwnDataset.WhyNotReplaceable(full, rendersImages) is string why)
                     problems.Add(new ValidationProblem("overwrite", "replace",
-                        "would delete " + full + ", but " + why + "; replace deletes only a dataset this plugin wrote, and never a file it did not write.",
-                        "Move your own files out of it, or choose another dataset name."));
+                        "would delete " + full + ", but " + why + "; replace deletes only a dataset this plugin wrote, never a file it did not write or an export, and a plan never deletes rendered images.",
+                        "Choose another dataset name, or move what you want to keep out of it first."));
             }
 
             var writable = CheckWritable(full);

@@ -56,6 +56,20 @@ namespace NerfDatasetCreator
             using (var file = JsonNumbers.CreateFile(path)) write(file);
         });
 
+        /// <summary>Writes a binary file as <paramref name="write"/> streams it (creating or truncating it): for files too large to hold in memory.</summary>
+        public static void WriteStream(string path, Action<Stream> write)
+        {
+            Step("write", path);
+            using (var file = new FileStream(path, FileMode.Create, FileAccess.Write, FileShare.None, 1 << 16)) write(file);
+        }
+
+        /// <summary>Opens a text file to read as a stream (UTF-8, or as its byte-order mark says): for files too large to read as one string.</summary>
+        public static TextReader OpenText(string path)
+        {
+            Step("read", path);
+            return new StreamReader(path, new UTF8Encoding(false), true, 1 << 16);
+        }
+
         /// <summary>Writes UTF-8 text into a file that must not exist yet (never overwrites).</summary>
         public static void WriteNewText(string path, string text) => WriteNewBytes(path, new UTF8Encoding(false).GetBytes(text));
 

@@ -11,7 +11,7 @@ namespace NerfDatasetCreator
     /// the next run on the same output can finish it or roll it back (<see cref="Recovery"/>):
     /// <code>
     /// { "format": "nerf-dataset-creator/operation", "version": 1, "operation": "write", "output": "/abs/lego",
-    ///   "state": "writing", "aside": null, "moves": [], "files": [] }
+    ///   "state": "writing", "aside": null, "shards": [], "moves": [], "files": [] }
     /// </code>
     /// <see cref="State"/> is <see cref="Writing"/> while files are being produced (the output is untouched: roll
     /// back) and <see cref="Committing"/> once everything is complete in the working folder (finish). Rewritten through
@@ -40,6 +40,12 @@ namespace NerfDatasetCreator
         /// <summary>merge --files move: each shard file (absolute) and its path relative to the working folder.</summary>
         public List<KeyValuePair<string, string>> Moves = new List<KeyValuePair<string, string>>();
 
+        /// <summary>
+        /// merge: the shard folders (absolute) the merge read. Every <see cref="Moves"/> source must lie inside one of
+        /// them, or recovery refuses the journal (<see cref="JournalPaths"/>): a journal is a file anyone can edit.
+        /// </summary>
+        public List<string> Shards = new List<string>();
+
         /// <summary>convert: the files, relative to the working folder and to the output alike, to move into place.</summary>
         public List<string> Files = new List<string>();
 
@@ -59,6 +65,7 @@ namespace NerfDatasetCreator
                 ["state"] = State,
                 ["aside"] = Aside,
                 ["createdOutput"] = CreatedOutput,
+                ["shards"] = new JArray(Shards.Cast<object>().ToArray()),
                 ["moves"] = new JArray(Moves.Select(m => new JObject { ["from"] = m.Key, ["to"] = m.Value })),
                 ["files"] = new JArray(Files.Cast<object>().ToArray()),
             };
@@ -114,6 +121,8 @@ namespace NerfDatasetCreator
                 foreach (var m in moves.OfType<JObject>())
                     if ((string)m["from"] != null && (string)m["to"] != null)
                         journal.Moves.Add(new KeyValuePair<string, string>((string)m["from"], (string)m["to"]));
+            if (o["shards"] is JArray shards)
+                journal.Shards.AddRange(shards.Where(f => f.Type == JTokenType.String).Select(f => (string)f));
             if (o["files"] is JArray files)
                 journal.Files.AddRange(files.Where(f => f.Type == JTokenType.String).Select(f => (string)f));
             return journal;

@@ -11,7 +11,8 @@ namespace NerfDatasetCreator
     /// Whether a folder is provably a dataset this plugin wrote, and holds nothing else — the only kind of folder
     /// <c>"overwrite": "replace"</c> may delete. Proof: a <c>dataset_config.json</c> whose <c>generator</c> is this
     /// plugin, and every entry one of the names the plugin (capture, plan, merge, convert) writes. A stray file, a
-    /// foreign config or a symbolic link makes it someone else's data.
+    /// foreign config or a symbolic link makes it someone else's data. A replace is stricter still
+    /// (<see cref="WhyNotReplaceable"/>): it never deletes convert's exports, and a plan never deletes rendered images.
     /// </summary>
     public static class OwnDataset
     {
@@ -37,7 +38,68 @@ namespace NerfDatasetCreator
             .With(Dynamic3DGaussians.SegmentationFolder, new Tree(f => false, Png));
 
         /// <summary>Null when <paramref name="folder"/> is provably this plugin's dataset and nothing else; otherwise why not.</summary>
-        public static string WhyNotOurs(string folder)
+        public static string WhyNotOurs(string folder) => Check(folder, exportsAllowed: true);
+
+        /// <summary>
+        /// Null when <c>"overwrite": "replace"</c> may delete <paramref name="folder"/> for a new dataset; otherwise the
+        /// reason. Beyond <see cref="WhyNotOurs"/>: no replace deletes an export (what <c>nerf-dataset convert</c> wrote:
+        /// <c>transforms.json</c>, <c>ngp/</c>, <c>colmap/</c>, <c>dynamic3dgs/</c>, <c>camera_paths/</c>) — the user made it
+        /// after the capture and nothing would bring it back — and a replace that renders no images (a plan,
+        /// <paramref name="rendersImages"/> false) never deletes a dataset whose images were rendered.
+        /// </summary>
+        public static string WhyNotReplaceable(string folder, bool rendersImages)
+        {
+            var why = Check(folder, exportsAllowed: false);
+            if (why != null || rendersImages) return why;
+            return WhyRendered(folder) is string rendered
+                ? rendered + ", and a plan renders none: replacing it would throw the rendering away"
+                : null;
+        }
+
+        /// <summary>
+        /// Whether the dataset in <paramref name="folder"/> (a write session's working folder) holds rendered images:
+        /// false only when its <c>dataset_config.json</c> says <c>"imagesRendered": false</c>, as a plan's does.
+        /// </summary>
+        public static bool RendersImages(string folder)
+        {
+            try
+            {
+                var path = Path.Combine(folder, DatasetLayout.ConfigFileName);
+                if (!File.Exists(path)) return true;
+                var rendered = (JToken.Parse(FileOps.ReadText(path)) as JObject)?["imagesRendered"];
+                return !(rendered?.Type == JTokenType.Boolean && !(bool)rendered);
+            }
+            catch (Exception e) when (e is JsonException || e is IOException || e is UnauthorizedAccessException)
+            {
+                return true; // unreadable: assume the strictest case for the replace it decides
+            }
+        }
+
+        /// <summary>Why <paramref name="folder"/> counts as rendered (its config says so, or a split folder holds an image); null when it does not.</summary>
+        static string WhyRendered(string folder)
+        {
+            try
+            {
+                var config = JToken.Parse(FileOps.ReadText(Path.Combine(folder, DatasetLayout.ConfigFileName))) as JObject;
+                var rendered = config?["imagesRendered"];
+                if (rendered?.Type == JTokenType.Boolean && (bool)rendered)
+                    return "its " + DatasetLayout.ConfigFileName + " says its images were rendered (\"imagesRendered\": true)";
+            }
+            catch (Exception e) when (e is JsonException || e is IOException || e is UnauthorizedAccessException)
+            {
+                return "its " + DatasetLayout.ConfigFileName + " cannot be read (" + e.Message + ")";
+            }
+            foreach (var split in DatasetSplits.Names)
+            {
+                var dir = Path.Combine(folder, split);
+                if (!Directory.Exists(dir)) continue;
+                var image = Directory.EnumerateFiles(dir).OrderBy(f => f, StringComparer.Ordinal).FirstOrDefault();
+                if (image != null) return "it holds rendered images (" + image + ")";
+            }
+            return null;
+        }
+
+        static string Check(string folder, bool exportsAllowed)
         {
             var config = Path.Combine(folder, DatasetLayout.ConfigFileName);
             if (!File.Exists(config)) return "it has no " + DatasetLayout.ConfigFileName + ", so nothing proves this plugin wrote it";
@@ -53,7 +115,7 @@ namespace NerfDatasetCreator
             }
             try
             {
-                return Foreign(folder);
+                return Foreign(folder, exportsAllowed);
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
@@ -61,8 +123,8 @@ namespace NerfDatasetCreator
             }
         }
 
-        /// <summary>The first entry this plugin does not write, described; null when there is none.</summary>
-        static string Foreign(string folder)
+        /// <summary>The first entry this plugin does not write (or, unless <paramref name="exportsAllowed"/>, an export), described; null when there is none.</summary>
+        static string Foreign(string folder, bool exportsAllowed)
         {
             foreach (var entry in new DirectoryInfo(folder).EnumerateFileSystemInfos().OrderBy(e => e.Name, StringComparer.Ordinal))
             {
@@ -70,10 +132,14 @@ namespace NerfDatasetCreator
                 var name = entry.Name;
                 if (entry is FileInfo)
                 {
+                    if (name == NerfstudioWriter.FileName && !exportsAllowed) return Export(entry);
                     if (RootFiles.Contains(name) || DatasetSplits.All.Any(s => DatasetLayout.TransformsFileName(s) == name)) continue;
                     return Stray(entry) + " was not written by this plugin";
                 }
                 string inside;
+                var export = name == NgpWriter.FolderName || name == DatasetConverter.ColmapFolderName || name == Dynamic3DGaussians.FolderName ||
+                             name == CameraPathFiles.FolderName || WorkingFolders.KindOf(name) == "convert";
+                if (export && !exportsAllowed) return Export(entry);
                 if (DatasetSplits.Names.Contains(name)) inside = SplitFolder.Foreign(entry.FullName);
                 else if (name == NgpWriter.FolderName) inside = Ngp.Foreign(entry.FullName);
                 else if (name == DatasetConverter.ColmapFolderName) inside = Colmap.Foreign(entry.FullName);
@@ -85,6 +151,9 @@ namespace NerfDatasetCreator
             }
             return null;
         }
+
+        static string Export(FileSystemInfo entry) =>
+            Stray(entry) + " is an export made with nerf-dataset convert, which a replace would delete and nothing would bring back";
 
         static string Stray(FileSystemInfo entry) => entry.FullName;
 

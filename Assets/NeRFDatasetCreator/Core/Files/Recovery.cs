@@ -21,27 +21,39 @@ namespace NerfDatasetCreator
             var own = Directory.Exists(output) ? OperationJournal.Load(output) : null;
             if (own != null && own.State == OperationJournal.Committing && WorkingFolders.SamePath(own.Output, output))
             {
-                if (own.Aside != null && !IsAsideOf(own.Aside, output)) own.Aside = null;
-                // The operation had moved its complete folder into place; only its clean-up was left.
-                var removed = own.Aside != null && Directory.Exists(own.Aside);
-                if (removed) FileOps.DeleteDirectory(own.Aside);
-                OperationJournal.Delete(output);
-                notes.Add(new RecoveryNote(own.Operation, true, "finished the interrupted " + own.Operation + " of " + output + ": it was complete and in place" +
-                          (removed ? "; removed the dataset it replaced (" + own.Aside + ")." : ".")));
+                var refused = JournalPaths.WhyRefused(output, own, output, asideOnly: true);
+                if (refused != null) notes.Add(Refusal(own.Operation, output, refused));
+                else
+                {
+                    // The operation had moved its complete folder into place; only its clean-up was left.
+                    var foreign = own.Aside != null && Directory.Exists(own.Aside) ? OwnDataset.WhyNotOurs(own.Aside) : null;
+                    var removed = own.Aside != null && Directory.Exists(own.Aside) && foreign == null;
+                    if (removed) FileOps.DeleteDirectory(own.Aside);
+                    OperationJournal.Delete(output);
+                    notes.Add(new RecoveryNote(own.Operation, true, "finished the interrupted " + own.Operation + " of " + output + ": it was complete and in place" +
+                              (removed ? "; removed the dataset it replaced (" + own.Aside + ")." :
+                               foreign != null ? "; left " + own.Aside + " alone: " + foreign + "." : ".")));
+                }
             }
 
             foreach (var working in WorkingFolders.Of(output))
             {
                 var journal = OperationJournal.Load(working);
-                if (journal == null && HoldsNothing(working))
+                if (journal == null && WorkingFolders.KindOf(Path.GetFileName(working)) != "replaced" && WorkingFolders.HoldsNoFile(working))
                 {
                     // Killed between creating the folder and writing its journal: nothing to finish, nothing to keep.
                     FileOps.DeleteDirectory(working);
                     continue;
                 }
-                if (journal == null || !WorkingFolders.SamePath(journal.Output, output)) continue;
-                // A journal only ever names this output's own replaced folder: never act on a path it did not create.
-                if (journal.Aside != null && !IsAsideOf(journal.Aside, output)) journal.Aside = null;
+                // Act only on a journal whose operation is the one the folder's name says and whose output is this one.
+                if (journal == null || journal.Operation != WorkingFolders.KindOf(Path.GetFileName(working)) || !WorkingFolders.SamePath(journal.Output, output)) continue;
+                // A journal is a file anyone can edit: act on none of its paths unless all lie inside what the operation owns.
+                var refused = JournalPaths.WhyRefused(working, journal, output);
+                if (refused != null)
+                {
+                    notes.Add(Refusal(journal.Operation, output, refused));
+                    continue;
+                }
                 switch (journal.Operation)
                 {
                     case "write": Write(working, journal, output, notes); break;
@@ -53,7 +65,8 @@ namespace NerfDatasetCreator
             // A dataset moved aside by a replace whose journal is gone, with nothing under its name: put it back.
             if (!Directory.Exists(output) && !File.Exists(output))
             {
-                var aside = WorkingFolders.Of(output).FirstOrDefault(d => WorkingFolders.KindOf(Path.GetFileName(d)) == "replaced");
+                // Only a folder that is provably this plugin's dataset: a user's folder that happens to have the name stays where it is.
+                var aside = WorkingFolders.Of(output).FirstOrDefault(d => WorkingFolders.KindOf(Path.GetFileName(d)) == "replaced" && OwnDataset.WhyNotOurs(d) == null);
                 if (aside != null)
                 {
                     FileOps.MoveDirectory(aside, output);
@@ -63,14 +76,9 @@ namespace NerfDatasetCreator
             return notes;
         }
 
-        /// <summary>True when <paramref name="folder"/> has no file but a half-written journal (a working folder killed at birth).</summary>
-        static bool HoldsNothing(string folder) =>
-            WorkingFolders.KindOf(Path.GetFileName(folder)) != "replaced" &&
-            Directory.EnumerateFiles(folder, "*", SearchOption.AllDirectories)
-                .All(f => Path.GetFileName(f).StartsWith(OperationJournal.FileName, System.StringComparison.Ordinal));
-
-        static bool IsAsideOf(string aside, string output) =>
-            WorkingFolders.KindOf(Path.GetFileName(aside)) == "replaced" && WorkingFolders.SamePath(WorkingFolders.OutputOf(aside), output);
+        static RecoveryNote Refusal(string operation, string output, string why) =>
+            new RecoveryNote(operation, false, "refused to recover the interrupted " + (operation ?? "operation") + " of " + output + ": " + why +
+                             "; nothing was changed (a journal the tool wrote never does this: inspect that folder, and remove it yourself if it is not yours to keep).", refused: true);
 
         static void Write(string working, OperationJournal journal, string output, List<RecoveryNote> notes)
         {
@@ -79,7 +87,7 @@ namespace NerfDatasetCreator
             if (Directory.Exists(output) || File.Exists(output))
             {
                 // Killed before the old dataset was moved aside: finish only if it is still provably ours.
-                if (asideExists || journal.Aside == null || OwnDataset.WhyNotOurs(output) != null)
+                if (asideExists || journal.Aside == null || OwnDataset.WhyNotReplaceable(output, OwnDataset.RendersImages(working)) != null)
                 {
                     notes.Add(new RecoveryNote("write", false, "could not finish the interrupted write of " + output + ": something else is under that name now; the complete new dataset stays in " + working + "."));
                     return;
@@ -87,11 +95,13 @@ namespace NerfDatasetCreator
                 FileOps.MoveDirectory(output, journal.Aside);
                 asideExists = true;
             }
+            // The old dataset the replace moved aside goes only while it is still provably this plugin's.
+            var foreign = asideExists ? OwnDataset.WhyNotOurs(journal.Aside) : null;
             FileOps.MoveDirectory(working, output);
-            if (asideExists) FileOps.DeleteDirectory(journal.Aside);
+            if (asideExists && foreign == null) FileOps.DeleteDirectory(journal.Aside);
             OperationJournal.Delete(output);
             notes.Add(new RecoveryNote("write", true, "finished the interrupted write of " + output + ": moved the complete dataset from " + working + " into place" +
-                      (asideExists ? " and removed the dataset it replaced." : ".")));
+                      (!asideExists ? "." : foreign == null ? " and removed the dataset it replaced." : "; left " + journal.Aside + " alone: " + foreign + ".")));
         }
 
         static void Merge(string working, OperationJournal journal, string output, List<RecoveryNote> notes)
@@ -107,11 +117,13 @@ namespace NerfDatasetCreator
             var returned = 0;
             foreach (var move in journal.Moves)
             {
-                var staged = Path.GetFullPath(Path.Combine(working, move.Value.Replace('/', Path.DirectorySeparatorChar)));
-                if (!staged.StartsWith(working + Path.DirectorySeparatorChar, System.StringComparison.Ordinal)) continue;
-                if (!File.Exists(staged) || File.Exists(move.Key)) continue; // not moved yet, or the original is intact
-                FileOps.CreateDirectory(Path.GetDirectoryName(move.Key));
-                FileOps.MoveFile(staged, move.Key);
+                // Both ends were proved inside the working folder and a shard folder (JournalPaths) before anything was done.
+                var staged = PathSafety.Inside(working, move.Value, out _);
+                var from = JournalPaths.OwningShard(journal, move.Key);
+                if (staged == null || from == null) continue;
+                if (!File.Exists(staged) || File.Exists(from)) continue; // not moved yet, or the original is intact
+                FileOps.CreateDirectory(Path.GetDirectoryName(from));
+                FileOps.MoveFile(staged, from);
                 returned++;
             }
             FileOps.DeleteDirectory(working);
@@ -126,10 +138,9 @@ namespace NerfDatasetCreator
                 var conflicts = new List<string>();
                 foreach (var file in journal.Files)
                 {
-                    var from = Path.GetFullPath(Path.Combine(working, file.Replace('/', Path.DirectorySeparatorChar)));
-                    var to = Path.GetFullPath(Path.Combine(output, file.Replace('/', Path.DirectorySeparatorChar)));
-                    if (!from.StartsWith(working + Path.DirectorySeparatorChar, System.StringComparison.Ordinal) ||
-                        !to.StartsWith(output + Path.DirectorySeparatorChar, System.StringComparison.Ordinal)) continue;
+                    var from = PathSafety.Inside(working, file, out _);
+                    var to = PathSafety.Inside(output, file, out _);
+                    if (from == null || to == null) continue; // refused up front (JournalPaths)
                     if (!File.Exists(from)) continue; // already in place
                     if (File.Exists(to) || Directory.Exists(to))
                     {

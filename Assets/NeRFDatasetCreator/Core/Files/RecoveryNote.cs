@@ -3,8 +3,9 @@ namespace NerfDatasetCreator
     /// <summary>What <see cref="Recovery"/> did about one interrupted operation: finished it, or rolled it back (or could not), in a sentence.</summary>
     public sealed class RecoveryNote
     {
-        public RecoveryNote(string operation, bool finished, string text)
+        public RecoveryNote(string operation, bool finished, string text, bool refused = false)
         {
+            Refused = refused;
             Operation = operation;
             Finished = finished;
             Text = text;
@@ -17,6 +18,9 @@ namespace NerfDatasetCreator
         public bool Finished { get; }
 
         public string Text { get; }
+
+        /// <summary>True when recovery refused to act on the operation's journal (a path outside what it owns): nothing was changed.</summary>
+        public bool Refused { get; }
 
         public override string ToString() => Text;
     }

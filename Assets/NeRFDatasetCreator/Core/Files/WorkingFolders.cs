@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using System.Linq;
+using System.Text.RegularExpressions;
 
 namespace NerfDatasetCreator
 {
@@ -36,15 +37,36 @@ namespace NerfDatasetCreator
 
         static string Id() => Guid.NewGuid().ToString("N").Substring(0, 8); // hex digits: culture-independent
 
-        /// <summary>What kind of working folder <paramref name="name"/> is, or null for any other name.</summary>
+        // The exact names the tool writes (Stamp: yyyyMMdd-HHmmss-<8 hex>; Id: 8 hex). A user's folder that merely
+        // contains a marker ("photos.partial-2024~", "holiday.replaced-old~") is not a working folder.
+        const string StampPattern = @"\d{8}-\d{6}-[0-9a-f]{8}";
+        static readonly Regex ConvertName = new Regex(@"^\.convert\.partial-" + StampPattern + @"~\z", RegexOptions.CultureInvariant);
+        static readonly Regex PartialName = new Regex(@"^(.+)\.partial-" + StampPattern + @"~\z", RegexOptions.CultureInvariant);
+        static readonly Regex ReplacedName = new Regex(@"^(.+)\.replaced-[0-9a-f]{8}~\z", RegexOptions.CultureInvariant);
+        static readonly Regex MergingName = new Regex(@"^\.(.+)\.merging-[0-9a-f]{8}\z", RegexOptions.CultureInvariant);
+
+        /// <summary>What kind of working folder <paramref name="name"/> is — only for the exact names the tool writes — or null for any other name.</summary>
         public static string KindOf(string name)
         {
-            if (name.StartsWith(ConvertPrefix, StringComparison.Ordinal) && name.EndsWith("~", StringComparison.Ordinal)) return "convert";
-            if (name.IndexOf(PartialMarker, StringComparison.Ordinal) > 0 && name.EndsWith("~", StringComparison.Ordinal)) return "write";
-            if (name.IndexOf(ReplacedMarker, StringComparison.Ordinal) > 0 && name.EndsWith("~", StringComparison.Ordinal)) return "replaced";
-            if (name.StartsWith(".", StringComparison.Ordinal) && name.IndexOf(MergingMarker, StringComparison.Ordinal) > 1) return "merge";
+            if (name == null) return null;
+            if (ConvertName.IsMatch(name)) return "convert";
+            if (PartialName.IsMatch(name)) return "write";
+            if (ReplacedName.IsMatch(name)) return "replaced";
+            if (MergingName.IsMatch(name)) return "merge";
             return null;
         }
+
+        /// <summary>The names the tool gives its working folders, for messages.</summary>
+        public const string NameFormats = "<name>.partial-<yyyyMMdd-HHmmss>-<8 hex digits>~, <name>.replaced-<8 hex digits>~, .<name>.merging-<8 hex digits>, .convert.partial-<yyyyMMdd-HHmmss>-<8 hex digits>~";
+
+        /// <summary>
+        /// True for a name that contains one of the working folders' markers but is not exactly one the tool writes:
+        /// <c>nerf-dataset clean</c> lists such a folder as "not ours" and leaves it alone.
+        /// </summary>
+        public static bool LooksLikeOne(string name) =>
+            name != null && KindOf(name) == null &&
+            (name.IndexOf(PartialMarker, StringComparison.Ordinal) >= 0 || name.IndexOf(ReplacedMarker, StringComparison.Ordinal) >= 0 ||
+             name.IndexOf(MergingMarker, StringComparison.Ordinal) >= 0);
 
         /// <summary>The output a working folder's name belongs to (its journal, when readable, says the same).</summary>
         public static string OutputOf(string workingFolder)
@@ -54,9 +76,9 @@ namespace NerfDatasetCreator
             switch (KindOf(name))
             {
                 case "convert": return parent;
-                case "write": return Path.Combine(parent, name.Substring(0, name.LastIndexOf(PartialMarker, StringComparison.Ordinal)));
-                case "replaced": return Path.Combine(parent, name.Substring(0, name.LastIndexOf(ReplacedMarker, StringComparison.Ordinal)));
-                case "merge": return Path.Combine(parent, name.Substring(1, name.LastIndexOf(MergingMarker, StringComparison.Ordinal) - 1));
+                case "write": return Path.Combine(parent, PartialName.Match(name).Groups[1].Value);
+                case "replaced": return Path.Combine(parent, ReplacedName.Match(name).Groups[1].Value);
+                case "merge": return Path.Combine(parent, MergingName.Match(name).Groups[1].Value);
                 default: return null;
             }
         }
@@ -76,6 +98,11 @@ namespace NerfDatasetCreator
             found.Sort(StringComparer.Ordinal);
             return found;
         }
+
+        /// <summary>True when <paramref name="folder"/> holds no file but perhaps a half-written journal (a working folder killed at birth).</summary>
+        public static bool HoldsNoFile(string folder) =>
+            Directory.EnumerateFiles(folder, "*", SearchOption.AllDirectories)
+                .All(f => Path.GetFileName(f).StartsWith(OperationJournal.FileName, StringComparison.Ordinal));
 
         /// <summary>Files and bytes under <paramref name="folder"/> (0, 0 when it cannot be read).</summary>
         public static (int files, long bytes) SizeOf(string folder)

@@ -67,7 +67,7 @@ namespace NerfDatasetCreator
             // An environment's "target" is its root object: its sphere would cover the picture, the box says more.
             var targetRadius = plan.Target.HasBounds && boxes.Count == 0 ? plan.Target.BoundingRadius * scale : 0;
             var sphereRadius = CameraSourcePlanning.AnyFormation(plan.Settings) ? plan.Distance * scale : 0;
-            return Draw(plan.Views.Select(v => new PictureCamera(v.Split, v.TransformMatrix)).ToList(),
+            return Draw(new PlanCameras(plan.Views),
                 plan.Normalisation.ApplyToUnityPoint(plan.Target.Centre), targetRadius, sphereRadius, boxes);
         }
 
@@ -164,11 +164,9 @@ namespace NerfDatasetCreator
             canvas.Line(cx, cy - 6, cx, cy + 6, TextColour);
 
             // Painter's order: the viewer of the top view is above (+Z), of the side view in front (−Y).
-            var ordered = panel == Panel.Top
-                ? cameras.OrderBy(c => c.CameraToWorld.Translation.Z)
-                : cameras.OrderByDescending(c => c.CameraToWorld.Translation.Y);
-            foreach (var c in ordered)
+            foreach (var index in PaintersOrder(cameras, panel))
             {
+                var c = cameras[index];
                 var colour = Byte3(SplitColors.Of(ToPreview(c.Split)));
                 var at = ToPixel(panel, c.CameraToWorld.Translation, target, pixelsPerUnit);
                 // An OpenGL camera looks along its −Z column; the tick shows that direction's share in the panel's plane.
@@ -179,6 +177,60 @@ namespace NerfDatasetCreator
                 canvas.FillDisc(at[0], at[1], DiscRadius, colour);
             }
             canvas.ResetClip();
+        }
+
+        /// <summary>
+        /// The cameras' indices from farthest to nearest for the panel's viewer, equal depths in list order — the order a
+        /// stable OrderBy gives — by sorting (depth, index) pairs: 16 bytes a camera instead of a copy of every camera.
+        /// </summary>
+        static int[] PaintersOrder(IReadOnlyList<PictureCamera> cameras, Panel panel)
+        {
+            var keys = new DepthKey[cameras.Count];
+            for (var i = 0; i < keys.Length; i++)
+            {
+                var t = cameras[i].CameraToWorld.Translation;
+                keys[i] = new DepthKey(panel == Panel.Top ? t.Z : t.Y, i);
+            }
+            var descending = panel == Panel.Side;
+            Array.Sort(keys, (a, b) =>
+            {
+                var byDepth = descending ? b.Depth.CompareTo(a.Depth) : a.Depth.CompareTo(b.Depth);
+                return byDepth != 0 ? byDepth : a.Index.CompareTo(b.Index);
+            });
+            var order = new int[keys.Length];
+            for (var i = 0; i < keys.Length; i++) order[i] = keys[i].Index;
+            return order;
+        }
+
+        readonly struct DepthKey
+        {
+            public DepthKey(double depth, int index)
+            {
+                Depth = depth;
+                Index = index;
+            }
+
+            public double Depth { get; }
+            public int Index { get; }
+        }
+
+        /// <summary>A plan's views as pictured cameras, made as they are read (a copy of 300 000 would be 41 MB).</summary>
+        sealed class PlanCameras : IReadOnlyList<PictureCamera>
+        {
+            readonly IReadOnlyList<PlannedView> _views;
+
+            public PlanCameras(IReadOnlyList<PlannedView> views) => _views = views;
+
+            public int Count => _views.Count;
+
+            public PictureCamera this[int index] => new PictureCamera(_views[index].Split, _views[index].TransformMatrix);
+
+            public IEnumerator<PictureCamera> GetEnumerator()
+            {
+                for (var i = 0; i < _views.Count; i++) yield return this[i];
+            }
+
+            System.Collections.IEnumerator System.Collections.IEnumerable.GetEnumerator() => GetEnumerator();
         }
 
         static void DrawLegend(RgbCanvas canvas, IReadOnlyList<PictureCamera> cameras, double grid, bool boxes)

@@ -1,12 +1,12 @@
 using System;
-using System.Collections.Generic;
 using System.Globalization;
+using System.IO;
 using System.Text;
 
 namespace NerfDatasetCreator
 {
     /// <summary>
-    /// An ASCII PLY of the planned rig in the output frame (the frame of the transforms files): per camera its
+    /// A binary little-endian PLY of the planned rig in the output frame (the frame of the transforms files): per camera its
     /// centre and a small frustum pyramid (4 edges to the image corners and the image rectangle), plus a marker
     /// at the target; vertices and edges coloured by split in the Scene-view preview's palette (<see cref="SplitColors"/>:
     /// train sky blue, val orange, test reddish purple; target white), so both previews read the same way.
@@ -25,52 +25,86 @@ namespace NerfDatasetCreator
         public static byte[] ColourOf(DatasetSplit split) =>
             split == DatasetSplit.Train ? TrainColour : split == DatasetSplit.Val ? ValColour : TestColour;
 
-        public static string Write(CapturePlan plan)
+        /// <summary>Bytes per vertex record: float x y z, uchar red green blue.</summary>
+        public const int BytesPerVertex = 3 * 4 + 3;
+
+        /// <summary>Bytes per edge record: int vertex1 vertex2, uchar red green blue.</summary>
+        public const int BytesPerEdge = 2 * 4 + 3;
+
+        public static string Header(int vertexCount, int edgeCount) =>
+            "ply\nformat binary_little_endian 1.0\ncomment " + PluginInfo.Name +
+            " rig preview: train sky blue, val orange, test reddish purple, target white; output (Blender) frame\n" +
+            "element vertex " + vertexCount.ToString(CultureInfo.InvariantCulture) + "\n" +
+            "property float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n" +
+            "element edge " + edgeCount.ToString(CultureInfo.InvariantCulture) + "\n" +
+            "property int vertex1\nproperty int vertex2\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n" +
+            "end_header\n";
+
+        /// <summary>
+        /// Streams the PLY to <paramref name="stream"/>: binary little-endian (a quarter of the ASCII size, and no text
+        /// to build: 300 000 views are 49 MB written straight from the plan, in constant memory). Vertex 0 is the
+        /// target; camera <c>i</c>'s centre is vertex 1 + 5i, its image corners the next four; its 8 edges follow the
+        /// same order as the vertices.
+        /// </summary>
+        public static void Write(CapturePlan plan, Stream stream)
         {
-            var vertices = new List<string>();
-            var edges = new List<string>();
+            var views = plan.Views;
+            var header = Encoding.ASCII.GetBytes(Header(1 + 5 * views.Count, 8 * views.Count));
+            stream.Write(header, 0, header.Length);
             // Output units: the camera distance times the normalisation's scale.
             var depth = FrustumDepthFraction * plan.Distance * plan.Normalisation.Scale;
             var halfW = depth * Math.Tan(plan.Intrinsics.CameraAngleX / 2);
             var halfH = depth * Math.Tan(plan.Intrinsics.CameraAngleY / 2);
-            vertices.Add(Vertex(plan.Normalisation.ApplyToUnityPoint(plan.Target.Centre), TargetColour));
-            foreach (var view in plan.Views)
+            // Image corners in OpenGL camera space: +X right, +Y up, looking along −Z.
+            var corners = new[] { new Vector3d(-halfW, halfH, -depth), new Vector3d(halfW, halfH, -depth), new Vector3d(halfW, -halfH, -depth), new Vector3d(-halfW, -halfH, -depth) };
+            // BinaryWriter is little-endian on every platform, as the header says.
+            using (var writer = new BinaryWriter(stream, Encoding.ASCII, leaveOpen: true))
             {
-                var colour = ColourOf(view.Split);
-                var m = view.TransformMatrix;
-                var centre = vertices.Count;
-                vertices.Add(Vertex(m.Translation, colour));
-                // Image corners in OpenGL camera space: +X right, +Y up, looking along −Z.
-                foreach (var corner in new[] { new Vector3d(-halfW, halfH, -depth), new Vector3d(halfW, halfH, -depth), new Vector3d(halfW, -halfH, -depth), new Vector3d(-halfW, -halfH, -depth) })
-                    vertices.Add(Vertex(m.MultiplyPoint(corner), colour));
-                for (var k = 0; k < 4; k++)
+                Vertex(writer, plan.Normalisation.ApplyToUnityPoint(plan.Target.Centre), TargetColour);
+                foreach (var view in views)
                 {
-                    edges.Add(Edge(centre, centre + 1 + k, colour));
-                    edges.Add(Edge(centre + 1 + k, centre + 1 + (k + 1) % 4, colour));
+                    var colour = ColourOf(view.Split);
+                    var m = view.TransformMatrix;
+                    Vertex(writer, m.Translation, colour);
+                    foreach (var corner in corners) Vertex(writer, m.MultiplyPoint(corner), colour);
+                }
+                for (var i = 0; i < views.Count; i++)
+                {
+                    var colour = ColourOf(views[i].Split);
+                    var centre = 1 + 5 * i;
+                    for (var k = 0; k < 4; k++)
+                    {
+                        Edge(writer, centre, centre + 1 + k, colour);
+                        Edge(writer, centre + 1 + k, centre + 1 + (k + 1) % 4, colour);
+                    }
                 }
             }
-            var sb = new StringBuilder();
-            sb.Append("ply\nformat ascii 1.0\ncomment ").Append(PluginInfo.Name).Append(" rig preview: train sky blue, val orange, test reddish purple, target white; output (Blender) frame\n");
-            sb.Append("element vertex ").Append(vertices.Count.ToString(CultureInfo.InvariantCulture)).Append('\n');
-            sb.Append("property float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n");
-            sb.Append("element edge ").Append(edges.Count.ToString(CultureInfo.InvariantCulture)).Append('\n');
-            sb.Append("property int vertex1\nproperty int vertex2\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n");
-            sb.Append("end_header\n");
-            foreach (var v in vertices) sb.Append(v).Append('\n');
-            foreach (var e in edges) sb.Append(e).Append('\n');
-            return sb.ToString(); // numbers went through Number(), Byte() and invariant counts
         }
 
-        static string Vertex(Vector3d p, byte[] c) =>
-            string.Join(" ", Number(p.X), Number(p.Y), Number(p.Z), Byte(c[0]), Byte(c[1]), Byte(c[2]));
+        /// <summary>The whole file in memory (tests, small plans); <see cref="Write(CapturePlan, Stream)"/> streams it.</summary>
+        public static byte[] Encode(CapturePlan plan)
+        {
+            using (var memory = new MemoryStream())
+            {
+                Write(plan, memory);
+                return memory.ToArray();
+            }
+        }
 
-        static string Edge(int a, int b, byte[] c) =>
-            string.Join(" ", a.ToString(CultureInfo.InvariantCulture), b.ToString(CultureInfo.InvariantCulture), Byte(c[0]), Byte(c[1]), Byte(c[2]));
+        static void Vertex(BinaryWriter w, Vector3d p, byte[] c)
+        {
+            w.Write((float)p.X);
+            w.Write((float)p.Y);
+            w.Write((float)p.Z);
+            w.Write(c, 0, 3);
+        }
 
-        // PLY "float" is 32-bit; 9 significant digits round-trip a float.
-        static string Number(double v) => ((float)v).ToString("G9", CultureInfo.InvariantCulture);
-
-        static string Byte(byte b) => b.ToString(CultureInfo.InvariantCulture);
+        static void Edge(BinaryWriter w, int a, int b, byte[] c)
+        {
+            w.Write(a);
+            w.Write(b);
+            w.Write(c, 0, 3);
+        }
 
         static byte[] Bytes(RgbaColor c) => new[] { ToByte(c.R), ToByte(c.G), ToByte(c.B) };
 

@@ -22,6 +22,7 @@ namespace NerfDatasetCreator
         {
             var staging = WorkingFolders.NewMerging(output);
             var journal = new OperationJournal { Operation = "merge", Output = output };
+            journal.Shards.AddRange(shards.Select(s => s.Folder));
             if (move) journal.Moves.AddRange(transfers.Select(t => new KeyValuePair<string, string>(t.Source, t.Relative)));
             var moved = new List<MergeTransfer>();
             var inPlace = false;

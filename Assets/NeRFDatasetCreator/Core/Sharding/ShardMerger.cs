@@ -49,7 +49,7 @@ namespace NerfDatasetCreator
             if (Directory.Exists(output) || File.Exists(output))
                 return Fail(new ValidationProblem("output", output, "already exists; merge never writes into or over an existing folder.",
                     "Choose a new folder name, or move the existing one away first."), warnings, notes);
-            notes.AddRange(Leftover.Of(output).Select(l => "left over: " + l + " `nerf-dataset clean " + Path.GetDirectoryName(output) + "` removes it."));
+            notes.AddRange(Leftover.Of(output).Select(l => "left over: " + l + (l.Removable ? " `nerf-dataset clean " + Path.GetDirectoryName(output) + "` removes it." : "")));
 
             var shards = ShardFolder.ReadAll(shardFolders, problems);
             if (problems.Count > 0) return new MergeResult(output, problems, warnings, empty, 0, notes);

@@ -253,7 +253,10 @@ namespace NerfDatasetCreator.Editor
         /// <summary>What Begin found of earlier runs on this output (Core's Recovery): interrupted ones it finished or rolled back, leftovers.</summary>
         static void LogEarlierRuns(DatasetWriteSession session)
         {
-            foreach (var note in session.Recovered) Debug.Log("NeRF Dataset Creator: " + note);
+            // A refused journal (a path outside what its operation owns) changed nothing and needs the user's eye.
+            foreach (var note in session.Recovered)
+                if (note.Refused) Debug.LogWarning("NeRF Dataset Creator: " + note);
+                else Debug.Log("NeRF Dataset Creator: " + note);
             foreach (var leftover in session.Leftovers)
                 Debug.LogWarning("NeRF Dataset Creator: left over: " + leftover + " Delete it, or run `nerf-dataset clean " + Path.GetDirectoryName(session.FinalFolder) + "`.");
         }

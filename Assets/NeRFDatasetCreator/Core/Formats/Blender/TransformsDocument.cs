@@ -13,6 +13,9 @@ namespace NerfDatasetCreator
         public double? DepthUnitScaleFactor { get; internal set; }
         public List<TransformsFrame> Frames { get; } = new List<TransformsFrame>();
 
+        /// <summary>How many entries <c>frames</c> has (also when they were streamed rather than kept in <see cref="Frames"/>).</summary>
+        public int FrameCount { get; internal set; }
+
         /// <summary>Problems with the document's structure, e.g. "camera_angle_x is missing".</summary>
         public List<string> Problems { get; } = new List<string>();
     }

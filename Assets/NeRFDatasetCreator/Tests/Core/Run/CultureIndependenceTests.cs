@@ -59,7 +59,7 @@ namespace NerfDatasetCreator.Tests
                 var writer = new ViewFileWriter(run.Plan, session, SyntheticViews.FakeExr);
                 foreach (var view in run.Plan.Views) writer.Write(view, SyntheticViews.Colour(), SyntheticViews.Data());
                 session.WriteText("settings.json", DatasetSettingsJson.Write(settings));
-                session.WriteText(DatasetLayout.RigPreviewFileName, RigPreviewPly.Write(run.Plan));
+                session.WriteBytes(DatasetLayout.RigPreviewFileName, stream => RigPreviewPly.Write(run.Plan, stream));
                 run.Finish(session, new Provenance(new DateTime(2026, 1, 2, 3, 4, 5, DateTimeKind.Utc), "2022.3.62f1", "unit-test"));
                 foreach (var target in new[] { ExportTarget.Nerfstudio, ExportTarget.Colmap, ExportTarget.Ngp })
                     DatasetConverter.Convert(run.DatasetFolder, target);

@@ -1,4 +1,7 @@
 using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
 using NUnit.Framework;
 
 namespace NerfDatasetCreator.Tests
@@ -70,6 +73,64 @@ namespace NerfDatasetCreator.Tests
         {
             // The original plugin appended a second object on every run.
             Assert.Throws<SettingsFormatException>(() => TransformsReader.Read("{ \"camera_angle_x\": 0.5, \"frames\": [] }{ \"camera_angle_x\": 0.5, \"frames\": [] }"));
+        }
+
+        static IEnumerable<TestCaseData> Texts()
+        {
+            var lego = Fixtures.Text("nerf_synthetic_lego", "transforms_train.json");
+            yield return new TestCaseData(lego).SetName("Streamed_Lego");
+            yield return new TestCaseData(lego.Substring(0, lego.Length / 2)).SetName("Streamed_TruncatedLego");
+            yield return new TestCaseData("{ \"frames\": [ { \"file_path\": 3, \"transform_matrix\": [[1,0,0,0],[0,1,0,0],[0,0,1],[0,0,0,1]] }, 7 ], \"w\": 1.5 }").SetName("Streamed_StructuralMistakes");
+            yield return new TestCaseData("{ \"camera_angle_x\": 0.5, \"frames\": [ { \"file_path\": \"./train/r_0\", \"depth_path\": 4, \"transform_matrix\": [[NaN,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]] } ] }").SetName("Streamed_NaN");
+            yield return new TestCaseData("{\n  \"camera_angle_x\": 0.5,\n  \"frames\": [\n}").SetName("Streamed_Malformed");
+            yield return new TestCaseData("{ \"camera_angle_x\": 0.5, \"frames\": [] }{ \"frames\": [] }").SetName("Streamed_TextAfter");
+            yield return new TestCaseData("{ \"frames\": [[ {} ] }").SetName("Streamed_NestedListUnclosed");
+            yield return new TestCaseData("{ \"frames\": 3, \"camera_angle_x\": \"wide\" }").SetName("Streamed_FramesNotAList");
+            yield return new TestCaseData("{ }").SetName("Streamed_Empty");
+            yield return new TestCaseData("[1, 2]").SetName("Streamed_NotAnObject");
+            yield return new TestCaseData("").SetName("Streamed_NoText");
+        }
+
+        /// <summary>The streaming reader (validate's, for 87 MB files) sees exactly what the whole-text reader sees, and fails alike.</summary>
+        [TestCaseSource(nameof(Texts))]
+        public void StreamingReadsWhatTheWholeTextReaderReads(string text)
+        {
+            using (var temp = new TempFolder())
+            {
+                var path = temp.Combine("transforms_train.json");
+                File.WriteAllText(path, text);
+                TransformsDocument whole = null, streamed = null;
+                SettingsFormatException wholeError = null, streamedError = null;
+                var frames = new List<TransformsFrame>();
+                try { whole = TransformsReader.ReadFile(path); } catch (SettingsFormatException e) { wholeError = e; }
+                try { streamed = TransformsReader.ReadFile(path, (f, json) => frames.Add(f)); } catch (SettingsFormatException e) { streamedError = e; }
+                if (wholeError != null)
+                {
+                    Assert.That(streamedError, Is.Not.Null, "both refuse it");
+                    Assert.That(streamedError.Line, Is.EqualTo(wholeError.Line));
+                    return;
+                }
+                Assert.That(streamedError, Is.Null);
+                Assert.That(streamed.Problems, Is.EqualTo(whole.Problems));
+                Assert.That(streamed.CameraAngleX, Is.EqualTo(whole.CameraAngleX));
+                Assert.That(streamed.W, Is.EqualTo(whole.W));
+                Assert.That(streamed.FrameCount, Is.EqualTo(whole.Frames.Count));
+                if (streamed.Frames.Count == 0) // the streaming reader keeps none, unless it fell back to the whole text
+                    Assert.That(frames.Count, Is.EqualTo(whole.Frames.Count));
+                for (var i = 0; i < frames.Count; i++)
+                {
+                    Assert.That(frames[i].Index, Is.EqualTo(i));
+                    Assert.That(frames[i].FilePath, Is.EqualTo(whole.Frames[i].FilePath));
+                    Assert.That(frames[i].Rotation, Is.EqualTo(whole.Frames[i].Rotation));
+                    Assert.That(frames[i].Problems, Is.EqualTo(whole.Frames[i].Problems));
+                    Assert.That(frames[i].ExtraFiles, Is.EqualTo(whole.Frames[i].ExtraFiles));
+                    Assert.That(frames[i].TransformMatrix.HasValue, Is.EqualTo(whole.Frames[i].TransformMatrix.HasValue));
+                    if (frames[i].TransformMatrix.HasValue)
+                        for (var r = 0; r < 4; r++)
+                            for (var c = 0; c < 4; c++)
+                                Assert.That(frames[i].TransformMatrix.Value[r, c], Is.EqualTo(whole.Frames[i].TransformMatrix.Value[r, c]));
+                }
+            }
         }
     }
 }
