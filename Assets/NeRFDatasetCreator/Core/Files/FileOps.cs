@@ -51,6 +51,14 @@ namespace NerfDatasetCreator
                 file.Write(bytes, 0, bytes.Length);
         }
 
+        /// <summary>Writes a file that must not exist yet (never overwrites) as <paramref name="write"/> streams it: for files too large to build in memory.</summary>
+        public static void WriteNew(string path, Action<Stream> write)
+        {
+            Step("write", path);
+            using (var file = new FileStream(path, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1 << 16))
+                write(file);
+        }
+
         public static string ReadText(string path)
         {
             Step("read", path);
