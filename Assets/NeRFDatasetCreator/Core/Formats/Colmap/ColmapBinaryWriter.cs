@@ -55,10 +55,11 @@ namespace NerfDatasetCreator
                     w.Write(Encoding.UTF8.GetBytes(name));
                     w.Write((byte)0);
                     var observed = model.Observations[i];
+                    var pose = model.Poses[i];
                     w.Write((ulong)observed.Length);
                     for (var k = 0; k < observed.Length; k++)
                     {
-                        model.Point2D(i, k, out var x, out var y);
+                        pose.Project(model.Points[observed[k]].Position, model.Camera, out var x, out var y); // = model.Point2D(i, k)
                         w.Write(x); w.Write(y);
                         w.Write((ulong)(observed[k] + 1));
                     }

@@ -80,8 +80,9 @@ namespace NerfDatasetCreator
             w.Write("# Number of images: " + I(names.Count) + ", mean observations per image: " + R(model?.MeanObservationsPerImage ?? 0) + "\n");
             for (var i = 0; i < names.Count; i++)
             {
-                var q = poses[i].Rotation;
-                var t = poses[i].Translation;
+                var pose = poses[i];
+                var q = pose.Rotation;
+                var t = pose.Translation;
                 w.Write(I(i + 1)); w.Write(' ');
                 w.Write(R(q.W)); w.Write(' '); w.Write(R(q.X)); w.Write(' '); w.Write(R(q.Y)); w.Write(' '); w.Write(R(q.Z)); w.Write(' ');
                 w.Write(R(t.X)); w.Write(' '); w.Write(R(t.Y)); w.Write(' '); w.Write(R(t.Z)); w.Write(" 1 ");
@@ -90,7 +91,7 @@ namespace NerfDatasetCreator
                 if (observed != null)
                     for (var k = 0; k < observed.Length; k++)
                     {
-                        model.Point2D(i, k, out var x, out var y);
+                        pose.Project(model.Points[observed[k]].Position, model.Camera, out var x, out var y); // = model.Point2D(i, k)
                         if (k > 0) w.Write(' ');
                         w.Write(R(x)); w.Write(' '); w.Write(R(y)); w.Write(' '); w.Write(I(observed[k] + 1));
                     }
