@@ -10,7 +10,7 @@ namespace NerfDatasetCreator
     public static class ToolCommandLine
     {
         /// <summary>Options that take no value (<c>--depths</c>).</summary>
-        static readonly HashSet<string> Flags = new HashSet<string>(StringComparer.Ordinal) { "depths" };
+        static readonly HashSet<string> Flags = new HashSet<string>(StringComparer.Ordinal) { "depths", "binary" };
 
         public static ToolInvocation Parse(IReadOnlyList<string> args)
         {
@@ -124,7 +124,8 @@ namespace NerfDatasetCreator
 
         static void Convert(ToolInvocation result, Dictionary<string, string> options, List<string> positionals)
         {
-            RefuseUnknownOptions(result, options, "to", "out", "depths");
+            RefuseUnknownOptions(result, options, "to", "out", "depths", "binary", "points", "min-track");
+            ColmapModelOptions(result, options);
             if (options.TryGetValue("depths", out var depths))
             {
                 if (depths != "true") result.Errors.Add("--depths takes no value ('" + depths + "').");
@@ -145,6 +146,32 @@ namespace NerfDatasetCreator
                 if (string.IsNullOrWhiteSpace(output)) result.Errors.Add("--out is empty; leave it out to write into the dataset folder.");
                 else result.OutputFolder = output;
             }
+        }
+
+        /// <summary><c>--binary</c>, <c>--points N</c>, <c>--min-track N</c>: the COLMAP model's shape (<see cref="ColmapOptions"/>).</summary>
+        static void ColmapModelOptions(ToolInvocation result, Dictionary<string, string> options)
+        {
+            var given = false;
+            if (options.TryGetValue("binary", out var binary))
+            {
+                if (binary != "true") result.Errors.Add("--binary takes no value ('" + binary + "').");
+                result.Binary = true;
+                given = true;
+            }
+            if (options.TryGetValue("points", out var points))
+            {
+                given = true;
+                if (int.TryParse(points, System.Globalization.NumberStyles.None, System.Globalization.CultureInfo.InvariantCulture, out var n) && n >= 1) result.ColmapPoints = n;
+                else result.Errors.Add("--points " + points + ": give how many points of points3d.ply the COLMAP model uses, a whole number of at least 1.");
+            }
+            if (options.TryGetValue("min-track", out var minTrack))
+            {
+                given = true;
+                if (int.TryParse(minTrack, System.Globalization.NumberStyles.None, System.Globalization.CultureInfo.InvariantCulture, out var n)) result.MinTrackLength = n;
+                else result.Errors.Add("--min-track " + minTrack + ": give the fewest images a COLMAP point must be seen in, a whole number (0 keeps every point; default " + ColmapOptions.DefaultMinTrackLength + ").");
+            }
+            if (given && options.TryGetValue("to", out var to) && ExportTargets.Parse(to, out var problem) != ExportTarget.Colmap && problem == null)
+                result.Errors.Add("--binary, --points and --min-track shape the COLMAP model: use them with --to colmap.");
         }
 
         /// <summary>The one option without a value.</summary>

@@ -42,6 +42,20 @@ namespace NerfDatasetCreator
         /// <summary><c>convert --to colmap --depths</c>: also write 3DGS's inverse-depth maps and depth_params.json.</summary>
         public bool Depths { get; internal set; }
 
+        /// <summary><c>convert --to colmap --binary</c>: cameras.bin, images.bin, points3D.bin instead of the text model.</summary>
+        public bool Binary { get; internal set; }
+
+        /// <summary><c>convert --to colmap --points N</c>: the first N points of points3d.ply; null = all.</summary>
+        public int? ColmapPoints { get; internal set; }
+
+        /// <summary><c>convert --to colmap --min-track N</c>: null = <see cref="ColmapOptions.DefaultMinTrackLength"/>.</summary>
+        public int? MinTrackLength { get; internal set; }
+
+        /// <summary>The COLMAP model options given, or null when none was.</summary>
+        public ColmapOptions ColmapModelOptions => Binary || ColmapPoints.HasValue || MinTrackLength.HasValue
+            ? new ColmapOptions(Binary, ColmapPoints, MinTrackLength ?? ColmapOptions.DefaultMinTrackLength)
+            : null;
+
         /// <summary>Usage mistakes; the command runs only when this is empty.</summary>
         public List<string> Errors { get; } = new List<string>();
 
@@ -51,7 +65,7 @@ namespace NerfDatasetCreator
             "  plan --config <settings.json> --out <dir>               the JSON files and a rig preview, no images\n" +
             "  validate <dir>                                          check a Blender-format dataset\n" +
             "  merge --out <dir> [--files copy|move] <shard-dir>...    join the folders of a sharded capture\n" +
-            "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs [--out <dir>] [--depths]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; dynamic3dgs: multi-view dynamic captures)\n" +
+            "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs [--out <dir>] [--depths] [--binary] [--points N] [--min-track N]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures)\n" +
             "  clean <dir> [--dry-run]                                 finish or roll back interrupted runs, remove their leftover folders\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
     }

@@ -14,7 +14,7 @@ namespace NerfDatasetCreator
         /// <summary>A folder with more written files than this is summarised as a count (COLMAP's image copies).</summary>
         const int FilesListedPerFolder = 5;
 
-        public static int Run(string datasetFolder, ExportTarget target, string outputFolder, TextWriter stdout, TextWriter stderr, bool depths = false)
+        public static int Run(string datasetFolder, ExportTarget target, string outputFolder, TextWriter stdout, TextWriter stderr, bool depths = false, ColmapOptions colmap = null)
         {
             ConversionResult result;
             try
@@ -31,7 +31,7 @@ namespace NerfDatasetCreator
                         return ToolExitCodes.Success;
                     }
                 }
-                result = DatasetConverter.Convert(datasetFolder, target, outputFolder, depths);
+                result = DatasetConverter.Convert(datasetFolder, target, outputFolder, depths, colmap);
             }
             catch (InvalidParameterException e)
             {

@@ -40,7 +40,7 @@ namespace NerfDatasetCreator
                 case ToolInvocation.PlanCommand: return PlanCommand.Run(invocation.ConfigPath, invocation.OutputFolder, stdout, stderr);
                 case ToolInvocation.ValidateCommand: return ValidateCommand.Run(invocation.DatasetFolder, stdout, stderr);
                 case ToolInvocation.MergeCommand: return MergeCommand.Run(invocation.ShardFolders, invocation.OutputFolder, invocation.MoveFiles, stdout, stderr);
-                case ToolInvocation.ConvertCommand: return ConvertCommand.Run(invocation.DatasetFolder, invocation.Target.Value, invocation.OutputFolder, stdout, stderr, invocation.Depths);
+                case ToolInvocation.ConvertCommand: return ConvertCommand.Run(invocation.DatasetFolder, invocation.Target.Value, invocation.OutputFolder, stdout, stderr, invocation.Depths, invocation.ColmapModelOptions);
                 case ToolInvocation.CleanCommand: return CleanCommand.Run(invocation.DatasetFolder, invocation.DryRun, stdout, stderr);
                 default:
                     stdout.WriteLine(ToolInvocation.Usage);

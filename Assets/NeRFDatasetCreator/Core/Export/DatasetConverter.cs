@@ -20,14 +20,15 @@ namespace NerfDatasetCreator
 
         /// <summary>Loads the Blender-format dataset in <paramref name="datasetDir"/> and exports it (see <see cref="Export"/>).</summary>
         /// <param name="depths">COLMAP only: also write 3DGS's inverse-depth maps and depth_params.json (<see cref="GaussianSplattingDepths"/>).</param>
-        public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null, bool depths = false)
+        /// <param name="colmap">COLMAP only: binary or text, how many points, the minimum track length (null: the defaults).</param>
+        public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null, bool depths = false, ColmapOptions colmap = null)
         {
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
             var time = target == ExportTarget.Dynamic3dgs ? null : TimeDatasetChecks.ConversionWarning(datasetDir);
             if (time != null) warnings.Add(time);
-            return Export(scene, target, outDir, null, null, warnings, depths);
+            return Export(scene, target, outDir, null, null, warnings, depths, colmap);
         }
 
         /// <summary>
@@ -37,11 +38,13 @@ namespace NerfDatasetCreator
         /// </summary>
         public static ConversionResult Export(ExportScene scene, ExportTarget target, string outDir = null,
             IReadOnlyList<CloudPoint> points = null, double? sceneRadius = null,
-            List<ValidationProblem> warnings = null, bool depths = false)
+            List<ValidationProblem> warnings = null, bool depths = false, ColmapOptions colmap = null)
         {
             warnings = warnings ?? new List<ValidationProblem>();
             if (depths && target != ExportTarget.Colmap)
                 throw new InvalidParameterException(new[] { new ValidationProblem("--depths", ExportTargets.Name(target), "is for --to colmap (3DGS reads depth maps for COLMAP sources).", "Drop --depths, or convert to colmap.") });
+            if (colmap != null && target != ExportTarget.Colmap)
+                throw new InvalidParameterException(new[] { new ValidationProblem("--binary, --points, --min-track", ExportTargets.Name(target), "shape the COLMAP model only.", "Drop them, or convert to colmap.") });
             var output = OutputFolder(scene.RootDirectory, target, outDir);
             // Everything is written into a working folder inside the output and moved into place when complete (StagedOutput).
             var staged = StagedOutput.Begin(output, "convert");
@@ -52,7 +55,7 @@ namespace NerfDatasetCreator
                 {
                     case ExportTarget.Nerfstudio: result = ToNerfstudio(scene, output, warnings, staged); break;
                     case ExportTarget.Ngp: result = ToNgp(scene, output, sceneRadius, warnings, staged); break;
-                    case ExportTarget.Colmap: result = ToColmap(scene, output, points, warnings, depths, staged); break;
+                    case ExportTarget.Colmap: result = ToColmap(scene, output, points, warnings, depths, colmap ?? ColmapOptions.Default, staged); break;
                     case ExportTarget.Dynamic3dgs: result = Dynamic3DGaussiansExport.Write(scene, output, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
@@ -107,22 +110,23 @@ namespace NerfDatasetCreator
             return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Ngp, warnings, staged)).ToList(), warnings);
         }
 
-        static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths, StagedOutput staged)
+        static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths, ColmapOptions options, StagedOutput staged)
         {
             outDir = Path.GetFullPath(outDir);
             var sparse = Path.Combine(outDir, "sparse", "0");
             var images = Path.Combine(outDir, ColmapTextWriter.ImagesFolder);
             var names = ColmapTextWriter.ImageNames(scene.Frames);
             var copies = scene.Frames.Select((f, i) => (from: Path.Combine(scene.RootDirectory, f.ImagePath), to: Path.Combine(images, names[i]))).ToList();
-            var cameras = Path.Combine(sparse, "cameras.txt");
-            var imagesTxt = Path.Combine(sparse, "images.txt");
-            var pointsTxt = Path.Combine(sparse, "points3D.txt");
+            var extension = options.Binary ? ".bin" : ".txt";
+            var cameras = Path.Combine(sparse, "cameras" + extension);
+            var imagesFile = Path.Combine(sparse, "images" + extension);
+            var pointsFile = Path.Combine(sparse, "points3D" + extension);
             // 3DGS reads sparse/0/points3D.ply before points3D.txt; a copy of the real cloud keeps normals too.
             var pointsPly = scene.PointCloudPath == null ? null : Path.Combine(sparse, "points3D.ply");
             // 3DGS (upstream with llffhold 0, and forks that prefer it) takes its --eval test views from sparse/0/test.txt.
             var testNames = scene.Frames.Select((f, i) => f.Split == "test" ? names[i] : null).Where(n => n != null).ToList();
             var testTxt = testNames.Count > 0 ? Path.Combine(sparse, "test.txt") : null;
-            var all = new List<string> { cameras, imagesTxt, pointsTxt };
+            var all = new List<string> { cameras, imagesFile, pointsFile };
             if (testTxt != null) all.Add(testTxt);
             if (pointsPly != null) all.Add(pointsPly);
             all.AddRange(copies.Select(c => c.to));
@@ -137,28 +141,47 @@ namespace NerfDatasetCreator
             }
             foreach (var path in all) EnsureAbsent(path);
 
+            // Tracks only for the target's own surface sample: the fresh capture's points, or a points3d.ply that
+            // PointCloudOwnership recognised (scene.PointCloudPath is set only then).
+            var surface = points != null || scene.PointCloudPath != null;
             if (points == null && scene.PointCloudPath != null)
                 points = PlyReader.Read(Path.Combine(scene.RootDirectory, scene.PointCloudPath));
             if (points == null)
             {
                 points = RandomInitCloud.Cube(RandomInitCloud.DefaultCount, SceneNormalisation.GaussianSplattingInitHalfSize, 0);
-                warnings.Add(new ValidationProblem("points3D.txt", points.Count + " random points",
-                    "there is no point cloud, and 3DGS's COLMAP loader fails on an empty points3D.txt, so it holds the same uniform [−1.3, 1.3]³ cloud 3DGS would generate for the Blender layout.",
+                warnings.Add(new ValidationProblem(Path.GetFileName(pointsFile), points.Count + " random points",
+                    "there is no point cloud, and 3DGS's COLMAP loader fails on an empty points3D file, so it holds the same uniform [−1.3, 1.3]³ cloud 3DGS would generate for the Blender layout (with empty tracks: random points are on no surface).",
                     "Export the target's surface point cloud from Unity for a better start."));
             }
+            var model = ColmapModelBuilder.Build(scene, names, points, surface, options, warnings);
 
             foreach (var (from, to) in copies) staged.Copy(from, to);
-            staged.WriteNewText(cameras, ColmapTextWriter.CamerasText(scene.Intrinsics));
-            staged.WriteNewText(imagesTxt, ColmapTextWriter.ImagesText(scene.Frames, names));
-            staged.WriteNewText(pointsTxt, ColmapTextWriter.Points3DText(points));
+            if (options.Binary)
+            {
+                staged.WriteNew(cameras, s => ColmapBinaryWriter.WriteCameras(s, scene.Intrinsics));
+                staged.WriteNew(imagesFile, s => ColmapBinaryWriter.WriteImages(s, model));
+                staged.WriteNew(pointsFile, s => ColmapBinaryWriter.WritePoints3D(s, model));
+            }
+            else
+            {
+                staged.WriteNewText(cameras, ColmapTextWriter.CamerasText(scene.Intrinsics));
+                staged.WriteNew(imagesFile, s => WriteText(s, w => ColmapTextWriter.WriteImages(w, model)));
+                staged.WriteNew(pointsFile, s => WriteText(s, w => ColmapTextWriter.WritePoints3D(w, model)));
+            }
             if (testTxt != null) staged.WriteNewText(testTxt, string.Join("\n", testNames) + "\n");
             if (pointsPly != null) staged.Copy(Path.Combine(scene.RootDirectory, scene.PointCloudPath), pointsPly);
             if (depths) GaussianSplattingDepths.Write(scene, names, outDir, warnings, staged, depthScan);
             if (scene.Frames.Any(f => f.Split != "train"))
-                warnings.Add(new ValidationProblem("images.txt", scene.Frames.Count + " images",
+                warnings.Add(new ValidationProblem(Path.GetFileName(imagesFile), scene.Frames.Count + " images",
                     "COLMAP has no splits: train, val and test views are all listed; upstream 3DGS's --eval holds out every 8th image by name (sparse/0/test.txt lists the real test views for loaders that read it).",
                     "For the nerf_synthetic protocol, train 3DGS on the Blender layout itself (train.py -s <dir> --eval)."));
-            return new ConversionResult(outDir, outDir, all, warnings);
+            return new ConversionResult(outDir, outDir, all, warnings, ColmapTraining.Commands(outDir, depths, model));
+        }
+
+        static void WriteText(Stream stream, Action<TextWriter> write)
+        {
+            using (var writer = new StreamWriter(stream, new System.Text.UTF8Encoding(false), 1 << 16))
+                write(writer);
         }
 
         /// <summary>The field a refused destination is named by: what the user chooses with <c>--out</c> (or the export's default place).</summary>

@@ -80,6 +80,13 @@ namespace NerfDatasetCreator
                 file.Write(bytes, 0, bytes.Length);
         });
 
+        /// <summary>Writes a file that must not exist yet (never overwrites) as <paramref name="write"/> streams it: for files too large to build in memory.</summary>
+        public static void WriteNew(string path, Action<Stream> write) => Run("write", path, () =>
+        {
+            using (var file = new FileStream(path, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1 << 16))
+                write(file);
+        });
+
         /// <summary>Reads a whole text file; one larger than <see cref="MaxTextBytes"/> is refused (<see cref="FileTooLargeException"/>) before it is read.</summary>
         public static string ReadText(string path)
         {

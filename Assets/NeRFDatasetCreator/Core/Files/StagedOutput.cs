@@ -49,6 +49,9 @@ namespace NerfDatasetCreator
         /// <summary>Writes a new binary file that will be at <paramref name="finalPath"/> (inside the output).</summary>
         public void WriteNewBytes(string finalPath, byte[] bytes) => FileOps.WriteNewBytes(Stage(finalPath), bytes);
 
+        /// <summary>Writes a new file that will be at <paramref name="finalPath"/>, streamed by <paramref name="write"/>.</summary>
+        public void WriteNew(string finalPath, Action<Stream> write) => FileOps.WriteNew(Stage(finalPath), write);
+
         /// <summary>Copies <paramref name="from"/> to what will be <paramref name="finalPath"/>.</summary>
         public void Copy(string from, string finalPath) => FileOps.CopyFile(from, Stage(finalPath));
 

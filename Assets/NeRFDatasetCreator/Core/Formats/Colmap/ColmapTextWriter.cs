@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
+using System.IO;
 using System.Linq;
 using System.Text;
 
@@ -12,7 +13,7 @@ namespace NerfDatasetCreator
     /// with the top-left image corner at 0 — the same convention as <see cref="CameraIntrinsics"/>). Each image line
     /// holds the world-to-camera rotation as a Hamilton quaternion (QW QX QY QZ) and translation in COLMAP's camera
     /// axes (x right, y down, looking along +z): the OpenGL c2w with its y and z axes negated, inverted. The second
-    /// line of each image (2D observations) is empty. Image names are single tokens: 3DGS splits lines on
+    /// line of each image holds its 2D observations when the model has tracks (<see cref="ColmapModel"/>), else it is empty. Image names are single tokens: 3DGS splits lines on
     /// whitespace and opens <c>&lt;source&gt;/images/&lt;basename of NAME&gt;</c>, so split folders are flattened into
     /// unique names (<see cref="ImageName"/>).
     /// </summary>
@@ -51,39 +52,72 @@ namespace NerfDatasetCreator
         public static string ImagesText(IReadOnlyList<ExportFrame> frames, IReadOnlyList<string> names)
         {
             if (names.Count != frames.Count) throw new ArgumentException("One name per frame is needed.", nameof(names));
-            var sb = new StringBuilder();
-            sb.Append("# Image list with two lines of data per image:\n");
-            sb.Append("#   IMAGE_ID, QW, QX, QY, QZ, TX, TY, TZ, CAMERA_ID, NAME\n");
-            sb.Append("#   POINTS2D[] as (X, Y, POINT3D_ID)\n");
-            sb.Append("# Number of images: ").Append(I(frames.Count)).Append(", mean observations per image: 0\n");
-            for (var i = 0; i < frames.Count; i++)
-            {
-                WorldToCamera(frames[i].CameraToWorld, out var q, out var t);
-                sb.Append(I(i + 1)).Append(' ')
-                    .Append(R(q.W)).Append(' ').Append(R(q.X)).Append(' ').Append(R(q.Y)).Append(' ').Append(R(q.Z)).Append(' ')
-                    .Append(R(t.X)).Append(' ').Append(R(t.Y)).Append(' ').Append(R(t.Z)).Append(" 1 ")
-                    .Append(names[i]).Append('\n');
-                sb.Append('\n'); // no 2D observations
-            }
-            return sb.ToString(); // numbers went through R() and I(), both invariant
+            var poses = frames.Select(f => ColmapPose.FromCameraToWorld(f.CameraToWorld)).ToList();
+            var writer = new StringWriter(CultureInfo.InvariantCulture);
+            WriteImages(writer, names, poses, null);
+            return writer.ToString();
         }
 
         /// <summary>Points with empty tracks; with no points, only the header (valid COLMAP, but see the converter's warning).</summary>
         public static string Points3DText(IReadOnlyList<CloudPoint> points)
         {
-            var count = points?.Count ?? 0;
-            var sb = new StringBuilder();
-            sb.Append("# 3D point list with one line of data per point:\n");
-            sb.Append("#   POINT3D_ID, X, Y, Z, R, G, B, ERROR, TRACK[] as (IMAGE_ID, POINT2D_IDX)\n");
-            sb.Append("# Number of points: ").Append(I(count)).Append(", mean track length: 0\n");
-            for (var i = 0; i < count; i++)
+            var writer = new StringWriter(CultureInfo.InvariantCulture);
+            WritePoints3D(writer, points ?? Array.Empty<CloudPoint>(), null);
+            return writer.ToString();
+        }
+
+        /// <summary><c>images.txt</c> of <paramref name="model"/>: each image line, then its POINTS2D as X Y POINT3D_ID triples (empty without tracks).</summary>
+        public static void WriteImages(TextWriter writer, ColmapModel model) => WriteImages(writer, model.Names, model.Poses, model);
+
+        /// <summary><c>points3D.txt</c> of <paramref name="model"/>: each point, its ERROR and its TRACK as IMAGE_ID POINT2D_IDX pairs.</summary>
+        public static void WritePoints3D(TextWriter writer, ColmapModel model) => WritePoints3D(writer, model.Points, model);
+
+        static void WriteImages(TextWriter w, IReadOnlyList<string> names, IReadOnlyList<ColmapPose> poses, ColmapModel model)
+        {
+            w.Write("# Image list with two lines of data per image:\n");
+            w.Write("#   IMAGE_ID, QW, QX, QY, QZ, TX, TY, TZ, CAMERA_ID, NAME\n");
+            w.Write("#   POINTS2D[] as (X, Y, POINT3D_ID)\n");
+            w.Write("# Number of images: " + I(names.Count) + ", mean observations per image: " + R(model?.MeanObservationsPerImage ?? 0) + "\n");
+            for (var i = 0; i < names.Count; i++)
+            {
+                var pose = poses[i];
+                var q = pose.Rotation;
+                var t = pose.Translation;
+                w.Write(I(i + 1)); w.Write(' ');
+                w.Write(R(q.W)); w.Write(' '); w.Write(R(q.X)); w.Write(' '); w.Write(R(q.Y)); w.Write(' '); w.Write(R(q.Z)); w.Write(' ');
+                w.Write(R(t.X)); w.Write(' '); w.Write(R(t.Y)); w.Write(' '); w.Write(R(t.Z)); w.Write(" 1 ");
+                w.Write(names[i]); w.Write('\n');
+                var observed = model?.Observations[i];
+                if (observed != null)
+                    for (var k = 0; k < observed.Length; k++)
+                    {
+                        pose.Project(model.Points[observed[k]].Position, model.Camera, out var x, out var y); // = model.Point2D(i, k)
+                        if (k > 0) w.Write(' ');
+                        w.Write(R(x)); w.Write(' '); w.Write(R(y)); w.Write(' '); w.Write(I(observed[k] + 1));
+                    }
+                w.Write('\n'); // the POINTS2D line, empty without observations
+            }
+        }
+
+        static void WritePoints3D(TextWriter w, IReadOnlyList<CloudPoint> points, ColmapModel model)
+        {
+            w.Write("# 3D point list with one line of data per point:\n");
+            w.Write("#   POINT3D_ID, X, Y, Z, R, G, B, ERROR, TRACK[] as (IMAGE_ID, POINT2D_IDX)\n");
+            w.Write("# Number of points: " + I(points.Count) + ", mean track length: " + R(model?.MeanTrackLength ?? 0) + "\n");
+            for (var i = 0; i < points.Count; i++)
             {
                 var p = points[i];
-                sb.Append(I(i + 1)).Append(' ')
-                    .Append(R(p.Position.X)).Append(' ').Append(R(p.Position.Y)).Append(' ').Append(R(p.Position.Z)).Append(' ')
-                    .Append(I(p.Red)).Append(' ').Append(I(p.Green)).Append(' ').Append(I(p.Blue)).Append(" 0\n");
+                w.Write(I(i + 1)); w.Write(' ');
+                w.Write(R(p.Position.X)); w.Write(' '); w.Write(R(p.Position.Y)); w.Write(' '); w.Write(R(p.Position.Z)); w.Write(' ');
+                w.Write(I(p.Red)); w.Write(' '); w.Write(I(p.Green)); w.Write(' '); w.Write(I(p.Blue)); w.Write(' ');
+                w.Write(R(model?.Error(i) ?? 0));
+                if (model != null)
+                    for (var e = model.TrackStart[i]; e < model.TrackStart[i + 1]; e++)
+                    {
+                        w.Write(' '); w.Write(I(model.TrackImage[e] + 1)); w.Write(' '); w.Write(I(model.TrackPoint2D[e]));
+                    }
+                w.Write('\n');
             }
-            return sb.ToString(); // numbers went through R() and I(), both invariant
         }
 
         /// <summary>
