@@ -54,6 +54,20 @@ namespace NerfDatasetCreator
 
         public int Count { get; }
 
+        /// <summary>
+        /// The point stored at <paramref name="position"/> (0 … Count − 1) in tree order, which is spatially coherent:
+        /// querying another tree with the points in this order keeps its nodes in cache.
+        /// </summary>
+        public void PointAt(int position, out double x, out double y, out double z)
+        {
+            x = xs[position];
+            y = ys[position];
+            z = zs[position];
+        }
+
+        /// <summary>The input index of the point stored at <paramref name="position"/>.</summary>
+        public int OriginalIndex(int position) => order[position];
+
         void Build(float[] xyz, int n)
         {
             var work = new int[64];

@@ -41,28 +41,31 @@ namespace NerfDatasetCreator
             if (!(threshold > 0)) throw new ArgumentException("The threshold must be positive.", nameof(threshold));
             var result = new SurfaceDistances { Threshold = threshold, ReconstructionPoints = reconstruction.Length / 3, TruthPoints = truth.Length / 3 };
 
+            // Both trees first: each side is then queried in the other tree's spatially coherent order (same sums, far fewer cache misses).
             var truthTree = new PointKdTree(truth);
+            var reconstructionTree = new PointKdTree(reconstruction);
             double sum = 0;
             long close = 0;
             var t2 = threshold * threshold;
-            for (var i = 0; i < reconstruction.Length; i += 3)
+            for (var i = 0; i < reconstructionTree.Count; i++)
             {
-                var d2 = truthTree.NearestDistanceSquared(reconstruction[i], reconstruction[i + 1], reconstruction[i + 2]);
+                reconstructionTree.PointAt(i, out var x, out var y, out var z);
+                var d2 = truthTree.NearestDistanceSquared(x, y, z);
                 sum += Math.Sqrt(d2);
                 if (d2 < t2) close++;
             }
             result.Accuracy = sum / result.ReconstructionPoints;
             result.Precision = (double)close / result.ReconstructionPoints;
 
-            var reconstructionTree = new PointKdTree(reconstruction);
             sum = 0;
             close = 0;
             var counted = 0;
-            for (var p = 0; p < result.TruthPoints; p++)
+            for (var i = 0; i < truthTree.Count; i++)
             {
-                if (observed != null && !observed[p]) continue;
+                if (observed != null && !observed[truthTree.OriginalIndex(i)]) continue;
                 counted++;
-                var d2 = reconstructionTree.NearestDistanceSquared(truth[3 * p], truth[3 * p + 1], truth[3 * p + 2]);
+                truthTree.PointAt(i, out var x, out var y, out var z);
+                var d2 = reconstructionTree.NearestDistanceSquared(x, y, z);
                 sum += Math.Sqrt(d2);
                 if (d2 < t2) close++;
             }
