@@ -78,7 +78,7 @@ namespace NerfDatasetCreator
             {
                 tau = DefaultThresholdFraction * result.TruthDiagonal;
                 result.ThresholdRule = DefaultThresholdFraction.ToString("0.###", System.Globalization.CultureInfo.InvariantCulture) + " × the ground-truth mesh's bounding-box diagonal (" +
-                                       ValidationProblem.Format(result.TruthDiagonal) + " output units)";
+                                       result.TruthDiagonal.ToString("0.####", System.Globalization.CultureInfo.InvariantCulture) + " output units)";
             }
 
             var observed = new bool[truth.Length / 3];

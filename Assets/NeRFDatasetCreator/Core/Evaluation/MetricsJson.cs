@@ -18,7 +18,7 @@ namespace NerfDatasetCreator
 
         public static readonly IReadOnlyDictionary<string, string> Definitions = new Dictionary<string, string>
         {
-            ["psnr"] = "dB, 20·log10(1/√MSE) with MSE over every pixel and channel of the RGB images in [0, 1] (3DGS utils/image_utils.py psnr); the mean is over views, as 3DGS metrics.py averages per-image PSNR",
+            ["psnr"] = "dB, 20·log10(1/√MSE) with MSE over every pixel and channel of the RGB images in [0, 1] (3DGS utils/image_utils.py psnr); the mean is over views, as 3DGS metrics.py averages per-image PSNR, leaving out views identical to the ground truth (PSNR +∞, null per view, counted in mean.identical_views)",
             ["ssim"] = "3DGS utils/loss_utils.py ssim: 11×11 Gaussian window σ 1.5 (normalised), 'same' conv2d with zero padding 5, C1 = 0.01², C2 = 0.03², per channel, mean over all pixels and channels. Not scikit-image's default (7×7 uniform window, sample covariance, 3-pixel border cropped): see Documentation~/evaluate.md",
             ["psnr_masked"] = "PSNR over the pixels whose mask PNG value is ≥ 128 (the target's geometry), all three channels",
             ["depth"] = "against the dataset's z-depth (output units) on pixels with ground-truth surface and mask ≥ 128 where the render has a finite depth > 0: abs_rel = mean |d − d*|/d*, rmse = √mean (d − d*)², delta_1_25 = fraction with max(d/d*, d*/d) < 1.25; 'missing' counts the other surface pixels",
@@ -56,10 +56,11 @@ namespace NerfDatasetCreator
             var mean = new JObject
             {
                 ["views"] = r.Views.Count,
-                ["psnr"] = Num(Mean(r.Views.Select(v => v.Psnr))),
+                ["psnr"] = Num(FiniteMean(r.Views.Select(v => v.Psnr))),
+                ["identical_views"] = r.Views.Count(v => double.IsPositiveInfinity(v.Psnr)),
                 ["ssim"] = Num(Mean(r.Views.Select(v => v.Ssim))),
             };
-            if (r.HasMasks) mean["psnr_masked"] = Num(Mean(r.Views.Select(v => v.MaskedPsnr).Where(x => !double.IsNaN(x))));
+            if (r.HasMasks) mean["psnr_masked"] = Num(FiniteMean(r.Views.Select(v => v.MaskedPsnr)));
             if (r.Views.Count > 0 && r.Views.All(v => v.Depth != null))
                 mean["depth"] = Depth(MeanValid(r.Views.Select(v => v.Depth.AbsRel)), MeanValid(r.Views.Select(v => v.Depth.Rmse)), MeanValid(r.Views.Select(v => v.Depth.Delta125)),
                     r.Views.Sum(v => v.Depth.Pixels), r.Views.Sum(v => v.Depth.Missing));
@@ -142,6 +143,12 @@ namespace NerfDatasetCreator
             }
             return n == 0 ? double.NaN : sum / n;
         }
+
+        /// <summary>
+        /// The mean PSNR over views whose PSNR is finite: a view identical to the ground truth (PSNR +∞, counted as
+        /// <c>identical_views</c>) would make any mean +∞.
+        /// </summary>
+        public static double FiniteMean(IEnumerable<double> values) => Mean(values.Where(v => !double.IsNaN(v) && !double.IsInfinity(v)));
 
         static double MeanValid(IEnumerable<double> values) => Mean(values.Where(v => !double.IsNaN(v)));
 

@@ -31,9 +31,10 @@ namespace NerfDatasetCreator
 
             // Summary.
             h.Append("<h2>Mean over views</h2>\n<table><tr><th class=\"l\">metric</th><th>value</th><th class=\"l\">definition</th></tr>\n");
-            Row(h, "PSNR (dB)", F(MetricsJson.Mean(r.Views.Select(v => v.Psnr)), "0.00"), MetricsJson.Definitions["psnr"]);
+            var identical = r.Views.Count(v => double.IsPositiveInfinity(v.Psnr));
+            Row(h, "PSNR (dB)", F(MetricsJson.FiniteMean(r.Views.Select(v => v.Psnr)), "0.00") + (identical > 0 ? " (+ " + identical + " identical)" : ""), MetricsJson.Definitions["psnr"]);
             Row(h, "SSIM", F(MetricsJson.Mean(r.Views.Select(v => v.Ssim)), "0.0000"), MetricsJson.Definitions["ssim"]);
-            if (r.HasMasks) Row(h, "PSNR in the mask (dB)", F(MetricsJson.Mean(r.Views.Select(v => v.MaskedPsnr).Where(x => !double.IsNaN(x))), "0.00"), MetricsJson.Definitions["psnr_masked"]);
+            if (r.HasMasks) Row(h, "PSNR in the mask (dB)", F(MetricsJson.FiniteMean(r.Views.Select(v => v.MaskedPsnr)), "0.00"), MetricsJson.Definitions["psnr_masked"]);
             if (r.Views.Count > 0 && r.Views.All(v => v.Depth != null))
             {
                 Row(h, "depth abs-rel", F(MetricsJson.Mean(r.Views.Select(v => v.Depth.AbsRel).Where(x => !double.IsNaN(x))), "0.0000"), MetricsJson.Definitions["depth"]);

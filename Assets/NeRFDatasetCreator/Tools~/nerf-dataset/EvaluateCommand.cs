@@ -33,7 +33,8 @@ namespace NerfDatasetCreator.Tool
             var json = MetricsJson.Build(result);
             var mean = json["mean"];
             stdout.WriteLine("evaluated " + result.Views.Count + " " + result.Split + " views (" + RenderLayouts.Name(result.Renders.Layout) + " layout, background " + result.Background.Name + "):");
-            stdout.WriteLine("  PSNR " + Show(mean["psnr"], "0.00") + " dB, SSIM " + Show(mean["ssim"], "0.0000") +
+            var identical = (int)mean["identical_views"];
+            stdout.WriteLine("  PSNR " + Show(mean["psnr"], "0.00") + " dB" + (identical > 0 ? " (" + identical + " identical views, PSNR ∞, left out)" : "") + ", SSIM " + Show(mean["ssim"], "0.0000") +
                              (mean["psnr_masked"] != null ? ", PSNR in mask " + Show(mean["psnr_masked"], "0.00") + " dB" : ""));
             if (mean["depth"] != null) stdout.WriteLine("  depth abs-rel " + Show(mean["depth"]["abs_rel"], "0.0000") + ", RMSE " + Show(mean["depth"]["rmse"], "0.0000") + ", δ<1.25 " + Show(mean["depth"]["delta_1_25"], "0.0000"));
             if (mean["normals"] != null) stdout.WriteLine("  normals " + Show(mean["normals"]["mean_degrees"], "0.00") + "° mean angular error");

@@ -91,7 +91,9 @@ namespace NerfDatasetCreator.Tests
                     Assert.That(view.Normals.MeanDegrees, Is.EqualTo(0).Within(1e-5), "acos of a float dot product of 1");
                 }
                 var metrics = JObject.Parse(File.ReadAllText(Path.Combine(renders, "evaluation-test", "metrics.json")));
-                Assert.That(metrics["mean"]["psnr"].Type, Is.EqualTo(JTokenType.Null), "∞ is written as null");
+                Assert.That(metrics["mean"]["psnr"].Type, Is.EqualTo(JTokenType.Null), "no finite PSNR to average");
+                Assert.That(metrics["views"][0]["psnr"].Type, Is.EqualTo(JTokenType.Null), "∞ is written as null");
+                Assert.That((int)metrics["mean"]["identical_views"], Is.EqualTo(3));
                 Assert.That((double)metrics["mean"]["depth"]["abs_rel"], Is.EqualTo(0.1).Within(2e-4));
             }
         }
