@@ -59,6 +59,22 @@ namespace NerfDatasetCreator
             if (File.Exists(metrics)) FileOps.DeleteFile(metrics);
         }
 
+        /// <summary>
+        /// After a failed run: deletes the error maps and report it wrote (Prepare had cleared the folder of earlier
+        /// evaluations, so every such file is this run's) and, when the run created the folder, the empty folders.
+        /// </summary>
+        public static void RemoveWritten(string outFolder, bool createdByThisRun)
+        {
+            var errors = Path.Combine(outFolder, ErrorFolder);
+            if (Directory.Exists(errors))
+                foreach (var file in Directory.GetFiles(errors, "*" + ErrorSuffix)) FileOps.DeleteFile(file);
+            var report = Path.Combine(outFolder, ReportHtml.FileName);
+            if (File.Exists(report) && !File.Exists(Path.Combine(outFolder, MetricsJson.FileName))) FileOps.DeleteFile(report);
+            if (!createdByThisRun) return;
+            if (Directory.Exists(errors) && Directory.GetFileSystemEntries(errors).Length == 0) FileOps.DeleteDirectory(errors);
+            if (Directory.Exists(outFolder) && Directory.GetFileSystemEntries(outFolder).Length == 0) FileOps.DeleteDirectory(outFolder);
+        }
+
         static bool IsOurs(string metricsPath)
         {
             if (!File.Exists(metricsPath)) return false;

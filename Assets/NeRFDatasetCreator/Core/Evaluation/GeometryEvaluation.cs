@@ -43,21 +43,7 @@ namespace NerfDatasetCreator
         public static GeometryResult Run(EvaluationDataset dataset, string reconstructionPath, string truthMeshPath, double? threshold, int truthPoints, Action<string> progress)
         {
             var result = new GeometryResult { ReconstructionPath = Path.GetFullPath(reconstructionPath) };
-            string truthPath, source;
-            if (truthMeshPath != null) { truthPath = Path.GetFullPath(truthMeshPath); source = "--gt-mesh"; }
-            else
-            {
-                var recorded = GeometryPackRecord.RecordedFile(dataset.Config);
-                var relative = recorded ?? TargetMeshPly.RelativePath;
-                truthPath = PathSafety.Inside(dataset.Root, relative, out _);
-                source = recorded != null ? "the geometry pack recorded in dataset_config.json" : "the geometry pack " + TargetMeshPly.RelativePath;
-                if (truthPath == null || !File.Exists(truthPath))
-                    throw new InvalidParameterException(new[]
-                    {
-                        new ValidationProblem("--geometry", reconstructionPath, "needs the ground-truth mesh, and " + Path.Combine(dataset.Root, TargetMeshPly.RelativePath) + " does not exist (the dataset has no geometry pack).",
-                            "Pass the target's mesh in the dataset's output frame and units with --gt-mesh <file.ply|.obj>."),
-                    });
-            }
+            var truthPath = TruthPath(dataset, reconstructionPath, truthMeshPath, out var source);
             result.TruthPath = truthPath;
             result.TruthSource = source;
             var truthMesh = GeometryFile.Read(truthPath);
@@ -126,6 +112,26 @@ namespace NerfDatasetCreator
             progress?.Invoke("geometry: nearest neighbours both ways");
             result.Distances = SurfaceDistances.Compute(reconstruction, truth, observed, tau);
             return result;
+        }
+
+        /// <summary>The ground-truth mesh's path and where it came from; refuses (naming --gt-mesh) when there is none.</summary>
+        public static string TruthPath(EvaluationDataset dataset, string reconstructionPath, string truthMeshPath, out string source)
+        {
+            if (truthMeshPath != null)
+            {
+                source = "--gt-mesh";
+                return Path.GetFullPath(truthMeshPath);
+            }
+            var recorded = GeometryPackRecord.RecordedFile(dataset.Config);
+            var path = PathSafety.Inside(dataset.Root, recorded ?? TargetMeshPly.RelativePath, out _);
+            source = recorded != null ? "the geometry pack recorded in dataset_config.json" : "the geometry pack " + TargetMeshPly.RelativePath;
+            if (path == null || !File.Exists(path))
+                throw new InvalidParameterException(new[]
+                {
+                    new ValidationProblem("--geometry", reconstructionPath, "needs the ground-truth mesh, and " + Path.Combine(dataset.Root, TargetMeshPly.RelativePath) + " does not exist (the dataset has no geometry pack).",
+                        "Pass the target's mesh in the dataset's output frame and units with --gt-mesh <file.ply|.obj>."),
+                });
+            return path;
         }
 
         public static double Area(SurfaceMesh mesh)

@@ -28,6 +28,7 @@ namespace NerfDatasetCreator
                 throw new InvalidParameterException(new[] { new ValidationProblem("--gt-mesh", options.TruthMeshPath, "is only used with --geometry.", "Add --geometry <reconstruction>, or leave --gt-mesh out.") });
             if (options.Threshold.HasValue && !(options.Threshold > 0))
                 throw new InvalidParameterException(new[] { new ValidationProblem("--threshold", ValidationProblem.Format(options.Threshold.Value), "must be a distance > 0 in output units.", "Write e.g. --threshold 0.01.") });
+            if (options.GeometryPath != null) GeometryEvaluation.TruthPath(dataset, options.GeometryPath, options.TruthMeshPath, out _);
             CheckSizes(dataset, renders);
 
             var result = new EvaluationResult
@@ -51,9 +52,26 @@ namespace NerfDatasetCreator
                     : "nerfstudio depth read as z-depth (splatfacto's); nerfacto's depth is the distance along the ray: pass --render-depth ray for it.");
 
             var outFolder = Path.GetFullPath(options.ResolvedOutFolder(Path.GetFullPath(options.RendersFolder)));
+            var created = !Directory.Exists(outFolder);
             EvaluationOutput.Prepare(outFolder, dataset.Root);
             result.OutFolder = outFolder;
+            try
+            {
+                ScoreAll(dataset, renders, background, wantDepth, wantNormals, options, outFolder, result, progress);
+            }
+            catch
+            {
+                // A file that could only be found bad while scoring (a short depth array, a damaged PNG) stops the run:
+                // the error maps it wrote go again, so the folder is as before (or gone, when this run made it).
+                EvaluationOutput.RemoveWritten(outFolder, created);
+                throw;
+            }
+            return result;
+        }
 
+        static void ScoreAll(EvaluationDataset dataset, RenderSet renders, EvaluationBackground background, bool wantDepth, bool wantNormals,
+            EvaluationOptions options, string outFolder, EvaluationResult result, Action<string> progress)
+        {
             var views = new ViewResult[renders.Views.Count];
             var done = 0;
             var parallel = new ParallelOptions { MaxDegreeOfParallelism = Math.Max(1, options.Threads) };
@@ -76,9 +94,9 @@ namespace NerfDatasetCreator
             if (options.GeometryPath != null)
                 result.Geometry = GeometryEvaluation.Run(dataset, options.GeometryPath, options.TruthMeshPath, options.Threshold, options.TruthPoints, progress);
 
-            FileOps.WriteNewText(Path.Combine(outFolder, MetricsJson.FileName), MetricsJson.Text(MetricsJson.Build(result)));
+            // The report first, metrics.json last: a metrics.json marks a complete evaluation.
             FileOps.WriteNewText(Path.Combine(outFolder, ReportHtml.FileName), ReportHtml.Build(result));
-            return result;
+            FileOps.WriteNewText(Path.Combine(outFolder, MetricsJson.FileName), MetricsJson.Text(MetricsJson.Build(result)));
         }
 
         /// <summary>Every render must have the ground truth's size (read from the PNG headers before any pixel is decoded).</summary>
