@@ -8,7 +8,7 @@ folder = sys.argv[1]
 
 def load(runtime):
     figures = {}
-    for path in glob.glob(os.path.join(folder, f"{runtime}-*.tsv")) + ([os.path.join(folder, runtime + ".tsv")] if runtime == "pillow" else []):
+    for path in glob.glob(os.path.join(folder, f"{runtime}-*.tsv")) + ([os.path.join(folder, runtime + ".tsv")] if runtime in ("pillow", "anchor") else []):
         if os.path.exists(path):
             for line in open(path):
                 key, value = line.rstrip("\n").split("\t")
@@ -16,7 +16,7 @@ def load(runtime):
     return figures
 
 
-net, mono, pillow = load("dotnet"), load("mono"), load("pillow")
+net, mono, pillow, anchor = load("dotnet"), load("mono"), load("pillow"), load("anchor")
 
 
 def cell(figures, key, fmt):
@@ -76,3 +76,17 @@ row("COLMAP tracks: sparsest view with --points 10000", "tracks.view.min.10000",
 row("COLMAP tracks: sparsest view with --points 1000", "tracks.view.min.1000", "{:.0f}")
 row("COLMAP tracks: writing images + points3D, binary (ms)", "tracks.write.bin.ms", "{:.0f}")
 row("COLMAP tracks: writing images + points3D, text (ms)", "tracks.write.text.ms", "{:.0f}")
+row("evaluate: 3DGS SSIM of an 800×800 RGB pair (ms CPU)", "eval.ssim.ms", "{:.0f}")
+row("evaluate: PSNR of the same pair (ms CPU)", "eval.psnr.ms", "{:.1f}")
+if "eval.anchor.skimage.default.ms" in anchor:
+    print(f"| scikit-image structural_similarity, default 7×7 uniform window (ms CPU; value {anchor['eval.anchor.skimage.default.value']:.6f}) | {anchor['eval.anchor.skimage.default.ms']:.0f} (NumPy) | |")
+    print(f"| scikit-image, gaussian_weights σ 1.5, population covariance (ms CPU; value {anchor['eval.anchor.skimage.gaussian.value']:.6f}) | {anchor['eval.anchor.skimage.gaussian.ms']:.0f} (NumPy) | |")
+if "eval.ssim.value" in net:
+    print(f"| our SSIM value (3DGS formula) | {net['eval.ssim.value']:.6f} | {cell(mono, 'eval.ssim.value', '{:.6f}')} |")
+row("evaluate: Chamfer + F-score, 1 M vs 1 M points (ms CPU)", "eval.chamfer.ms", "{:.0f}")
+if "eval.anchor.ckdtree.ms" in anchor:
+    print(f"| SciPy cKDTree, build both trees + query both ways (ms CPU; Chamfer {anchor['eval.anchor.ckdtree.value']:.7f}) | {anchor['eval.anchor.ckdtree.ms']:.0f} (C++) | |")
+if "eval.chamfer.value" in net:
+    print(f"| our Chamfer value | {net['eval.chamfer.value']:.7f} | {cell(mono, 'eval.chamfer.value', '{:.7f}')} |")
+row("evaluate: 200 views of 800×800, all cores (s wall)", "eval.views.wall.s", "{:.1f}")
+row("evaluate: 200 views of 800×800 (ms CPU per view)", "eval.views.cpu.ms", "{:.0f}")

@@ -76,8 +76,9 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(lines[3], Does.StartWith("  merge --out <dir> [--files copy|move] <shard-dir>..."));
             Assert.That(lines[4], Does.StartWith("  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs [--out <dir>]"));
             Assert.That(lines[5], Does.StartWith("  clean <dir> [--dry-run]"));
-            Assert.That(lines[6], Does.StartWith("exit codes:"));
-            Assert.That(lines, Has.Length.EqualTo(7));
+            Assert.That(lines[6], Does.StartWith("  evaluate <dir> --renders <dir> [--split test]"));
+            Assert.That(lines.Last(), Does.StartWith("exit codes:"));
+            Assert.That(lines, Has.Length.EqualTo(8));
             Assert.That(ToolRun.Of("merge", "--help").Out, Is.EqualTo(run.Out), "--help after a command");
         }
     }

@@ -81,6 +81,7 @@ namespace NerfDatasetCreator
                 case ToolInvocation.MergeCommand: Merge(result, options, positionals); break;
                 case ToolInvocation.ConvertCommand: Convert(result, options, positionals); break;
                 case ToolInvocation.CleanCommand: Clean(result, options, positionals); break;
+                case ToolInvocation.EvaluateCommand: EvaluateArguments.Parse(result, options, positionals); break;
                 default:
                     result.Errors.Add("unknown command '" + command + "'.");
                     break;
@@ -185,7 +186,7 @@ namespace NerfDatasetCreator
             result.DryRun = options.ContainsKey(DryRunFlag);
         }
 
-        static void RefuseUnknownOptions(ToolInvocation result, Dictionary<string, string> options, params string[] known)
+        internal static void RefuseUnknownOptions(ToolInvocation result, Dictionary<string, string> options, params string[] known)
         {
             foreach (var name in options.Keys)
                 if (Array.IndexOf(known, name) < 0)

@@ -10,6 +10,7 @@ namespace NerfDatasetCreator
         public const string MergeCommand = "merge";
         public const string ConvertCommand = "convert";
         public const string CleanCommand = "clean";
+        public const string EvaluateCommand = "evaluate";
         public const string HelpCommand = "help";
 
         /// <summary>"plan", "validate", "merge", "convert", "clean" or "help".</summary>
@@ -56,6 +57,9 @@ namespace NerfDatasetCreator
             ? new ColmapOptions(Binary, ColmapPoints, MinTrackLength ?? ColmapOptions.DefaultMinTrackLength)
             : null;
 
+        /// <summary><c>evaluate &lt;dir&gt; --renders &lt;dir&gt; …</c>: what to score and how.</summary>
+        public EvaluationOptions Evaluation { get; internal set; }
+
         /// <summary>Usage mistakes; the command runs only when this is empty.</summary>
         public List<string> Errors { get; } = new List<string>();
 
@@ -67,6 +71,7 @@ namespace NerfDatasetCreator
             "  merge --out <dir> [--files copy|move] <shard-dir>...    join the folders of a sharded capture\n" +
             "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs [--out <dir>] [--depths] [--binary] [--points N] [--min-track N]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures)\n" +
             "  clean <dir> [--dry-run]                                 finish or roll back interrupted runs, remove their leftover folders\n" +
+            "  evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj> [--gt-mesh <mesh>] [--threshold <units>]]  score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
     }
 }

@@ -42,6 +42,7 @@ namespace NerfDatasetCreator
                 case ToolInvocation.MergeCommand: return MergeCommand.Run(invocation.ShardFolders, invocation.OutputFolder, invocation.MoveFiles, stdout, stderr);
                 case ToolInvocation.ConvertCommand: return ConvertCommand.Run(invocation.DatasetFolder, invocation.Target.Value, invocation.OutputFolder, stdout, stderr, invocation.Depths, invocation.ColmapModelOptions);
                 case ToolInvocation.CleanCommand: return CleanCommand.Run(invocation.DatasetFolder, invocation.DryRun, stdout, stderr);
+                case ToolInvocation.EvaluateCommand: return EvaluateCommand.Run(invocation.Evaluation, stdout, stderr);
                 default:
                     stdout.WriteLine(ToolInvocation.Usage);
                     return ToolExitCodes.Success;

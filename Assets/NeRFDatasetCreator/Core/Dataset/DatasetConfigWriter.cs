@@ -12,7 +12,8 @@ namespace NerfDatasetCreator
     public static class DatasetConfigWriter
     {
         /// <param name="pointCloud">The record of the <c>points3d.ply</c> this run wrote, or null when it wrote none.</param>
-        public static string Write(CapturePlan plan, Provenance provenance, PointCloudRecord pointCloud = null)
+        /// <param name="geometry">The geometry pack's record (<see cref="GeometryPackRecord"/>), or null when the run wrote none.</param>
+        public static string Write(CapturePlan plan, Provenance provenance, PointCloudRecord pointCloud = null, Newtonsoft.Json.Linq.JObject geometry = null)
         {
             using (var text = JsonNumbers.CreateText())
             {
@@ -63,6 +64,11 @@ namespace NerfDatasetCreator
                     {
                         w.WritePropertyName(PointCloudRecord.Key);
                         JsonNumbers.WriteToken(w, pointCloud.ToJson());
+                    }
+                    if (geometry != null)
+                    {
+                        w.WritePropertyName(GeometryPackRecord.Key);
+                        JsonNumbers.WriteToken(w, geometry);
                     }
                     if (provenance.Statistics.Count > 0)
                     {

@@ -6,7 +6,8 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class DatasetMetadataFiles
     {
-        public static void Write(DatasetWriteSession session, CapturePlan plan, Provenance provenance, PointCloudRecord pointCloud = null)
+        public static void Write(DatasetWriteSession session, CapturePlan plan, Provenance provenance, PointCloudRecord pointCloud = null,
+            Newtonsoft.Json.Linq.JObject geometry = null)
         {
             foreach (var split in DatasetSplits.All)
             {
@@ -14,7 +15,7 @@ namespace NerfDatasetCreator
                 var s = split;
                 session.WriteText(DatasetLayout.TransformsFileName(split), text => BlenderTransformsWriter.Write(plan, s, text));
             }
-            session.WriteText(DatasetLayout.ConfigFileName, DatasetConfigWriter.Write(plan, provenance, pointCloud));
+            session.WriteText(DatasetLayout.ConfigFileName, DatasetConfigWriter.Write(plan, provenance, pointCloud, geometry));
         }
     }
 }

@@ -79,14 +79,33 @@ namespace NerfDatasetCreator
         public bool WritesPointCloud => IsValid && FullPlan.Settings.PointCloudPoints > 0 && Shard.Index == 0;
 
         /// <summary>
+        /// Whether this run writes the geometry pack (<c>geometry/target_mesh.ply</c>, <see cref="TargetMeshPly"/>): a
+        /// whole dataset only, as merge carries no per-shard extras.
+        /// </summary>
+        public bool WritesGeometryPack => IsValid && Shard.Count == 1;
+
+        /// <summary>
         /// Writes <c>points3d.ply</c> when <paramref name="pointCloud"/> has points (output world, e.g. from
         /// <see cref="TargetPointCloud.Sample"/>; its SHA-256 goes into dataset_config.json's <c>pointCloud</c> record), the
         /// transforms files, dataset_config.json, <c>rig_preview.png</c> (<see cref="RigPreviewPicture"/>: the only picture
         /// of an inside-out volume's box, since <c>nerf-dataset plan</c> cannot read a scene; a whole dataset only, as
-        /// merge carries no per-shard extras) and, for a shard, shard.json; then commits.
+        /// merge carries no per-shard extras) and, for a shard, shard.json; then commits. With
+        /// <paramref name="targetMeshes"/> (the target's meshes in the Unity world, as collected for the point cloud) and
+        /// <see cref="WritesGeometryPack"/>, also the geometry pack <c>geometry/target_mesh.ply</c> in the output frame,
+        /// recorded under <c>geometry</c> in dataset_config.json (<see cref="GeometryPackRecord"/>).
         /// </summary>
-        public void Finish(DatasetWriteSession session, Provenance provenance, IReadOnlyList<CloudPoint> pointCloud = null)
+        public void Finish(DatasetWriteSession session, Provenance provenance, IReadOnlyList<CloudPoint> pointCloud = null,
+            IReadOnlyList<SurfaceMesh> targetMeshes = null)
         {
+            Newtonsoft.Json.Linq.JObject geometry = null;
+            if (WritesGeometryPack && targetMeshes != null && targetMeshes.Any(m => m.TriangleCount > 0))
+            {
+                var outputMeshes = TargetMeshPly.FromUnityWorld(targetMeshes.Where(m => m.TriangleCount > 0).ToList(), Plan.Normalisation);
+                var path = session.PathOf(TargetMeshPly.RelativePath);
+                FileOps.CreateDirectory(System.IO.Path.GetDirectoryName(path));
+                TargetMeshPly.Write(path, outputMeshes);
+                geometry = GeometryPackRecord.ToJson(outputMeshes, PointCloudRecord.HashOf(path));
+            }
             PointCloudRecord record = null;
             if (pointCloud != null && pointCloud.Count > 0)
             {
@@ -94,7 +113,7 @@ namespace NerfDatasetCreator
                 PlyWriter.Write(path, pointCloud);
                 record = PointCloudRecord.Of(path, TargetPointCloud.FileName, pointCloud.Count);
             }
-            DatasetMetadataFiles.Write(session, Plan, provenance, record);
+            DatasetMetadataFiles.Write(session, Plan, provenance, record, geometry);
             if (Shard.Count == 1) File.WriteAllBytes(session.PathOf(RigPreviewPicture.FileName), RigPreviewPicture.Encode(FullPlan));
             if (Shard.Count > 1)
                 ShardManifest.ForShard(Shard, CountsOf(FullPlan)).Write(session.WorkingFolder);

@@ -199,12 +199,13 @@ namespace NerfDatasetCreator.Editor
             IReadOnlyList<CloudPoint> cloud = null;
             try
             {
-                if (prepared.Surface != null)
+                if (prepared.Surface != null && prepared.Run.WritesPointCloud)
                 {
                     cloud = TargetPointCloud.Sample(prepared.Run.Plan, prepared.Surface);
                     provenance.Statistics["points3d"] = cloud.Count;
                 }
-                prepared.Run.Finish(session, provenance, cloud);
+                // The geometry pack is the target's surface, so an environment capture's whole scene is left out of it.
+                prepared.Run.Finish(session, provenance, cloud, WritesGeometryPack(prepared) ? prepared.Surface : null);
             }
             catch (Exception e)
             {
@@ -270,7 +271,7 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         static DatasetCaptureResult ReadSurface(PreparedCapture prepared)
         {
-            if (!prepared.Run.WritesPointCloud) return null;
+            if (!prepared.Run.WritesPointCloud && !WritesGeometryPack(prepared)) return null;
             var warnings = new List<ValidationProblem>();
             // A dynamic capture's cloud is the surface at its first time step (the user's target is only read); a
             // whole-scene capture (an inside-out volume) samples every mesh it renders, not only the target's.
@@ -279,9 +280,18 @@ namespace NerfDatasetCreator.Editor
                 ? TargetSurface.CollectScene(warnings)
                 : TimeMeasurement.SurfaceAtStart(prepared.Target, plan.Time, plan.Settings.Seed, warnings) ?? TargetSurface.Collect(prepared.Target, warnings);
             foreach (var warning in warnings) Debug.LogWarning("NeRF Dataset Creator: " + warning);
+            if (!prepared.Run.WritesPointCloud) return null; // a target without meshes simply has no geometry pack
             var problems = TargetPointCloud.Check(prepared.Run.Plan, prepared.Surface);
             return problems.Count == 0 ? null : Refused(problems);
         }
+
+        /// <summary>
+        /// Whether the capture writes <c>geometry/target_mesh.ply</c>: a whole dataset (Core's
+        /// <see cref="DatasetRun.WritesGeometryPack"/>) of a target, not an environment's whole scene. The meshes are the
+        /// ones ReadSurface collects for points3d.ply — the same renderers, LOD, skinning pose and (dynamic) start time.
+        /// </summary>
+        static bool WritesGeometryPack(PreparedCapture prepared) =>
+            prepared.Run.WritesGeometryPack && prepared.Options.Isolation != CaptureIsolation.WholeScene;
 
         static string Describe(Exception e)
         {

@@ -1,0 +1,47 @@
+using System.Collections.Generic;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>The figures of one view.</summary>
+    public sealed class ViewResult
+    {
+        public int FrameIndex { get; internal set; }
+        public string FilePath { get; internal set; }
+        public string RenderPath { get; internal set; }
+        public int Width { get; internal set; }
+        public int Height { get; internal set; }
+        public double Psnr { get; internal set; }
+        public double Ssim { get; internal set; }
+
+        /// <summary>NaN without masks.</summary>
+        public double MaskedPsnr { get; internal set; } = double.NaN;
+
+        public long MaskPixels { get; internal set; }
+        public DepthErrors Depth { get; internal set; }
+        public NormalErrors Normals { get; internal set; }
+
+        /// <summary>Relative to the out folder.</summary>
+        public string ErrorMapFile { get; internal set; }
+
+        /// <summary>PNG bytes of the report's pictures: ground truth (composited), render, error.</summary>
+        public byte[] TruthThumbnail { get; internal set; }
+        public byte[] RenderThumbnail { get; internal set; }
+        public byte[] ErrorThumbnail { get; internal set; }
+    }
+
+    /// <summary>Everything an evaluation measured, with the choices it made; <see cref="MetricsJson"/> and <see cref="ReportHtml"/> write it.</summary>
+    public sealed class EvaluationResult
+    {
+        public string DatasetFolder { get; internal set; }
+        public string Split { get; internal set; }
+        public RenderSet Renders { get; internal set; }
+        public EvaluationBackground Background { get; internal set; }
+        public bool DepthAlongRay { get; internal set; }
+        public bool HasMasks { get; internal set; }
+        public List<ViewResult> Views { get; } = new List<ViewResult>();
+        public GeometryResult Geometry { get; internal set; }
+        public List<string> Notes { get; } = new List<string>();
+        public string OutFolder { get; internal set; }
+        public string CreatedUtc { get; internal set; }
+    }
+}

@@ -1,0 +1,163 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>What <see cref="GeometryEvaluation.Run"/> measured and how.</summary>
+    public sealed class GeometryResult
+    {
+        public string ReconstructionPath { get; internal set; }
+
+        /// <summary>"mesh (n triangles, sampled to m points)" or "point cloud (n points)".</summary>
+        public string ReconstructionKind { get; internal set; }
+
+        public string TruthPath { get; internal set; }
+        public string TruthSource { get; internal set; }
+        public int TruthTriangles { get; internal set; }
+        public double TruthDiagonal { get; internal set; }
+        public string ThresholdRule { get; internal set; }
+        public string ObservedRule { get; internal set; }
+        public int TrainViewsUsed { get; internal set; }
+        public SurfaceDistances Distances { get; internal set; }
+    }
+
+    /// <summary>
+    /// <c>--geometry</c>: the reconstruction against the ground-truth mesh. The mesh comes from <c>--gt-mesh</c>, else the
+    /// geometry pack (<c>dataset_config.json</c>'s <c>geometry.file</c>, else <c>geometry/target_mesh.ply</c>); it is
+    /// sampled area-uniformly (<see cref="SurfaceSampler"/>, fixed seed) into <see cref="DefaultTruthPoints"/> points; the
+    /// points the train split's depth maps saw are kept for completeness and recall (<see cref="ObservedPoints"/>, tolerance
+    /// = the threshold); a reconstruction mesh is sampled at the same density, a point cloud used as it is.
+    /// </summary>
+    public static class GeometryEvaluation
+    {
+        public const int DefaultTruthPoints = 1_000_000;
+
+        /// <summary>The default threshold: this fraction of the ground-truth mesh's bounding-box diagonal.</summary>
+        public const double DefaultThresholdFraction = 0.005;
+
+        public const long TruthSeed = 0x6e657266; // fixed: the same dataset and mesh give the same points every run
+        public const long ReconstructionSeed = 0x72656366;
+
+        public static GeometryResult Run(EvaluationDataset dataset, string reconstructionPath, string truthMeshPath, double? threshold, int truthPoints, Action<string> progress)
+        {
+            var result = new GeometryResult { ReconstructionPath = Path.GetFullPath(reconstructionPath) };
+            var truthPath = TruthPath(dataset, reconstructionPath, truthMeshPath, out var source);
+            result.TruthPath = truthPath;
+            result.TruthSource = source;
+            var truthMesh = GeometryFile.Read(truthPath);
+            if (truthMesh.TriangleCount == 0)
+                throw new InvalidParameterException(new[] { new ValidationProblem("--gt-mesh", truthPath, "has no faces; the ground truth must be a surface to sample.", "Pass the target's triangle mesh.") });
+            result.TruthTriangles = truthMesh.TriangleCount;
+            var truthArea = Area(truthMesh);
+            progress?.Invoke("geometry: sampling " + truthPoints + " points on the ground-truth mesh (" + truthMesh.TriangleCount + " triangles)");
+            var truth = ToFloats(SurfaceSampler.Sample(new[] { truthMesh }, truthPoints, TruthSeed));
+            result.TruthDiagonal = Diagonal(truthMesh.Vertices);
+            double tau;
+            if (threshold.HasValue)
+            {
+                tau = threshold.Value;
+                result.ThresholdRule = "given with --threshold, output units";
+            }
+            else
+            {
+                tau = DefaultThresholdFraction * result.TruthDiagonal;
+                result.ThresholdRule = DefaultThresholdFraction.ToString("0.###", System.Globalization.CultureInfo.InvariantCulture) + " × the ground-truth mesh's bounding-box diagonal (" +
+                                       result.TruthDiagonal.ToString("0.####", System.Globalization.CultureInfo.InvariantCulture) + " output units)";
+            }
+
+            var observed = new bool[truth.Length / 3];
+            var train = EvaluationDataset.Read(dataset.Root, "train");
+            if (train.HasDepth)
+            {
+                progress?.Invoke("geometry: keeping the ground truth the " + train.Frames.Count + " train views' depth maps saw");
+                foreach (var frame in train.Frames)
+                {
+                    var png = PngReader.Read(frame.DepthPath);
+                    var depth = EvaluationImages.DepthPng(png, train.DepthScale, frame.DepthPath);
+                    var focal = train.Focal(png.Width);
+                    ObservedPoints.Mark(truth, observed, frame.CameraToWorld, depth, png.Width, png.Height, focal, train.Cx ?? png.Width / 2.0, train.Cy ?? png.Height / 2.0, tau);
+                }
+                result.TrainViewsUsed = train.Frames.Count;
+                result.ObservedRule = "a ground-truth point counts for completeness and recall when at least one of the " + train.Frames.Count +
+                                      " train views sees it: it projects inside the image in front of the camera and that pixel's ground-truth depth is within the threshold + " + ObservedPoints.DefaultPixelSlack.ToString(System.Globalization.CultureInfo.InvariantCulture) + " pixel footprints of the point's depth";
+            }
+            else
+            {
+                for (var i = 0; i < observed.Length; i++) observed[i] = true;
+                result.ObservedRule = "the train split has no depth maps, so every ground-truth point counts (none could be ruled unobserved)";
+            }
+
+            var reconstructionMesh = GeometryFile.Read(reconstructionPath);
+            float[] reconstruction;
+            if (reconstructionMesh.TriangleCount > 0)
+            {
+                var count = (int)Math.Max(1000, Math.Min(SurfaceSampler.MaxCount, Math.Round(truthPoints * Area(reconstructionMesh) / truthArea)));
+                progress?.Invoke("geometry: sampling " + count + " points on the reconstruction mesh (" + reconstructionMesh.TriangleCount + " triangles)");
+                reconstruction = ToFloats(SurfaceSampler.Sample(new[] { reconstructionMesh }, count, ReconstructionSeed));
+                result.ReconstructionKind = "mesh (" + reconstructionMesh.TriangleCount + " triangles), sampled to " + count + " points at the ground truth's density";
+            }
+            else
+            {
+                reconstruction = new float[reconstructionMesh.Vertices.Count * 3];
+                for (var i = 0; i < reconstructionMesh.Vertices.Count; i++)
+                {
+                    reconstruction[3 * i] = (float)reconstructionMesh.Vertices[i].X;
+                    reconstruction[3 * i + 1] = (float)reconstructionMesh.Vertices[i].Y;
+                    reconstruction[3 * i + 2] = (float)reconstructionMesh.Vertices[i].Z;
+                }
+                result.ReconstructionKind = "point cloud (" + reconstructionMesh.Vertices.Count + " points)";
+            }
+            progress?.Invoke("geometry: nearest neighbours both ways");
+            result.Distances = SurfaceDistances.Compute(reconstruction, truth, observed, tau);
+            return result;
+        }
+
+        /// <summary>The ground-truth mesh's path and where it came from; refuses (naming --gt-mesh) when there is none.</summary>
+        public static string TruthPath(EvaluationDataset dataset, string reconstructionPath, string truthMeshPath, out string source)
+        {
+            if (truthMeshPath != null)
+            {
+                source = "--gt-mesh";
+                return Path.GetFullPath(truthMeshPath);
+            }
+            var recorded = GeometryPackRecord.RecordedFile(dataset.Config);
+            var path = PathSafety.Inside(dataset.Root, recorded ?? TargetMeshPly.RelativePath, out _);
+            source = recorded != null ? "the geometry pack recorded in dataset_config.json" : "the geometry pack " + TargetMeshPly.RelativePath;
+            if (path == null || !File.Exists(path))
+                throw new InvalidParameterException(new[]
+                {
+                    new ValidationProblem("--geometry", reconstructionPath, "needs the ground-truth mesh, and " + Path.Combine(dataset.Root, TargetMeshPly.RelativePath) + " does not exist (the dataset has no geometry pack).",
+                        "Pass the target's mesh in the dataset's output frame and units with --gt-mesh <file.ply|.obj>."),
+                });
+            return path;
+        }
+
+        public static double Area(SurfaceMesh mesh)
+        {
+            double sum = 0;
+            for (var t = 0; t < mesh.TriangleCount; t++) sum += mesh.TriangleArea(t);
+            return sum;
+        }
+
+        static double Diagonal(IReadOnlyList<Vector3d> vertices)
+        {
+            var min = new Vector3d(vertices.Min(v => v.X), vertices.Min(v => v.Y), vertices.Min(v => v.Z));
+            var max = new Vector3d(vertices.Max(v => v.X), vertices.Max(v => v.Y), vertices.Max(v => v.Z));
+            return (max - min).Length;
+        }
+
+        public static float[] ToFloats(IReadOnlyList<CloudPoint> points)
+        {
+            var result = new float[points.Count * 3];
+            for (var i = 0; i < points.Count; i++)
+            {
+                result[3 * i] = (float)points[i].Position.X;
+                result[3 * i + 1] = (float)points[i].Position.Y;
+                result[3 * i + 2] = (float)points[i].Position.Z;
+            }
+            return result;
+        }
+    }
+}

@@ -1,0 +1,193 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Threading.Tasks;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// <c>nerf-dataset evaluate</c>: scores a trainer's renders of one split against the dataset's ground truth and
+    /// writes <c>metrics.json</c>, one error map per view and <c>report.html</c> (<see cref="EvaluationOutput"/> says
+    /// where it may write). Everything is checked — dataset, renders, sizes, geometry inputs — before the out folder is
+    /// touched; views are scored in parallel (each view independently, so the figures do not depend on the thread count).
+    /// </summary>
+    public static class RenderEvaluator
+    {
+        public static EvaluationResult Run(EvaluationOptions options, Action<string> progress = null)
+        {
+            var dataset = EvaluationDataset.Read(options.DatasetFolder, options.Split);
+            var renders = RenderFolder.Read(options.RendersFolder, options.Layout, options.Split, dataset.Frames.Select(f => f.FilePath).ToList());
+            var background = EvaluationBackground.Parse(options.Background, dataset.Config);
+            if (options.GeometryPath != null && !File.Exists(options.GeometryPath))
+                throw new InvalidParameterException(new[] { new ValidationProblem("--geometry", options.GeometryPath, "does not exist.", "Pass the reconstruction as .ply (points or mesh) or .obj.") });
+            if (options.TruthMeshPath != null && !File.Exists(options.TruthMeshPath))
+                throw new InvalidParameterException(new[] { new ValidationProblem("--gt-mesh", options.TruthMeshPath, "does not exist.", "Pass the target's mesh in the output frame (.ply or .obj).") });
+            if (options.TruthMeshPath != null && options.GeometryPath == null)
+                throw new InvalidParameterException(new[] { new ValidationProblem("--gt-mesh", options.TruthMeshPath, "is only used with --geometry.", "Add --geometry <reconstruction>, or leave --gt-mesh out.") });
+            if (options.Threshold.HasValue && !(options.Threshold > 0))
+                throw new InvalidParameterException(new[] { new ValidationProblem("--threshold", ValidationProblem.Format(options.Threshold.Value), "must be a distance > 0 in output units.", "Write e.g. --threshold 0.01.") });
+            if (options.GeometryPath != null) GeometryEvaluation.TruthPath(dataset, options.GeometryPath, options.TruthMeshPath, out _);
+            CheckSizes(dataset, renders);
+
+            var result = new EvaluationResult
+            {
+                DatasetFolder = dataset.Root,
+                Split = options.Split,
+                Renders = renders,
+                Background = background,
+                DepthAlongRay = options.DepthAlongRay,
+                HasMasks = dataset.HasMasks,
+                CreatedUtc = DateTime.UtcNow.ToString("yyyy-MM-dd'T'HH:mm:ss'Z'", CultureInfo.InvariantCulture),
+            };
+            var wantDepth = renders.Views.All(v => v.DepthPath != null);
+            var wantNormals = renders.Views.All(v => v.NormalPath != null);
+            if (wantDepth && !dataset.HasDepth) { wantDepth = false; result.Notes.Add("The renders include depth, but the dataset's " + options.Split + " split has no depth PNGs: depth not scored."); }
+            if (wantNormals && !dataset.HasNormals) { wantNormals = false; result.Notes.Add("The renders include normals, but the dataset's " + options.Split + " split has no normal PNGs: normals not scored."); }
+            if (!dataset.HasMasks) result.Notes.Add("The dataset's " + options.Split + " split has no masks: PSNR in the mask not computed.");
+            if (renders.Layout == RenderLayout.Nerfstudio && wantDepth)
+                result.Notes.Add(options.DepthAlongRay
+                    ? "nerfstudio depth read as distance along each ray (nerfacto's) and converted to z-depth."
+                    : "nerfstudio depth read as z-depth (splatfacto's); nerfacto's depth is the distance along the ray: pass --render-depth ray for it.");
+
+            var outFolder = Path.GetFullPath(options.ResolvedOutFolder(Path.GetFullPath(options.RendersFolder)));
+            var created = !Directory.Exists(outFolder);
+            EvaluationOutput.Prepare(outFolder, dataset.Root);
+            result.OutFolder = outFolder;
+            try
+            {
+                ScoreAll(dataset, renders, background, wantDepth, wantNormals, options, outFolder, result, progress);
+            }
+            catch
+            {
+                // A file that could only be found bad while scoring (a short depth array, a damaged PNG) stops the run:
+                // the error maps it wrote go again, so the folder is as before (or gone, when this run made it).
+                EvaluationOutput.RemoveWritten(outFolder, created);
+                throw;
+            }
+            return result;
+        }
+
+        static void ScoreAll(EvaluationDataset dataset, RenderSet renders, EvaluationBackground background, bool wantDepth, bool wantNormals,
+            EvaluationOptions options, string outFolder, EvaluationResult result, Action<string> progress)
+        {
+            var views = new ViewResult[renders.Views.Count];
+            var done = 0;
+            var parallel = new ParallelOptions { MaxDegreeOfParallelism = Math.Max(1, options.Threads) };
+            try
+            {
+                Parallel.For(0, views.Length, parallel, i =>
+                {
+                    views[i] = Score(dataset, renders.Views[i], background, wantDepth, wantNormals, options, outFolder);
+                    var n = System.Threading.Interlocked.Increment(ref done);
+                    if (n % 10 == 0 || n == views.Length) progress?.Invoke("scored " + n + " of " + views.Length + " views");
+                });
+            }
+            catch (AggregateException e)
+            {
+                // One view's own error (a refused image, a short file), not the parallel loop's wrapper.
+                System.Runtime.ExceptionServices.ExceptionDispatchInfo.Capture(e.Flatten().InnerExceptions[0]).Throw();
+            }
+            result.Views.AddRange(views);
+
+            if (options.GeometryPath != null)
+                result.Geometry = GeometryEvaluation.Run(dataset, options.GeometryPath, options.TruthMeshPath, options.Threshold, options.TruthPoints, progress);
+
+            // The report first, metrics.json last: a metrics.json marks a complete evaluation.
+            FileOps.WriteNewText(Path.Combine(outFolder, ReportHtml.FileName), ReportHtml.Build(result));
+            FileOps.WriteNewText(Path.Combine(outFolder, MetricsJson.FileName), MetricsJson.Text(MetricsJson.Build(result)));
+        }
+
+        /// <summary>Every render must have the ground truth's size (read from the PNG headers before any pixel is decoded).</summary>
+        static void CheckSizes(EvaluationDataset dataset, RenderSet renders)
+        {
+            var problems = new List<ValidationProblem>();
+            foreach (var view in renders.Views)
+            {
+                PngInfo truth, render;
+                try { truth = PngInfo.Read(dataset.Frames[view.FrameIndex].ImagePath); }
+                catch (InvalidDataException e) { problems.Add(new ValidationProblem("<dataset>", dataset.Frames[view.FrameIndex].ImagePath, e.Message, "Run nerf-dataset validate on the dataset.")); continue; }
+                try { render = PngInfo.Read(view.ColourPath); }
+                catch (InvalidDataException e) { problems.Add(new ValidationProblem("--renders", view.ColourPath, e.Message, "Re-render the view.")); continue; }
+                if (render.Width != truth.Width || render.Height != truth.Height)
+                    problems.Add(new ValidationProblem("--renders", view.ColourPath, "is " + render.Width + "×" + render.Height + " but the ground truth " + view.FramePath + " is " + truth.Width + "×" + truth.Height + ".",
+                        "Render at the dataset's resolution (3DGS: -r 1 for images wider than 1600 px; nerfstudio: no --downscale-factor)."));
+                if (problems.Count >= 5) break;
+            }
+            InvalidParameterException.ThrowIfAny(problems.ToArray());
+        }
+
+        static ViewResult Score(EvaluationDataset dataset, RenderView view, EvaluationBackground background, bool wantDepth, bool wantNormals, EvaluationOptions options, string outFolder)
+        {
+            var frame = dataset.Frames[view.FrameIndex];
+            var truthPng = PngReader.Read(frame.ImagePath);
+            var renderPng = PngReader.Read(view.ColourPath);
+            int w = truthPng.Width, h = truthPng.Height;
+            var truth = EvaluationImages.Colour(truthPng, background, frame.ImagePath);
+            var render = EvaluationImages.Colour(renderPng, background, view.ColourPath);
+            var result = new ViewResult
+            {
+                FrameIndex = view.FrameIndex,
+                FilePath = view.FramePath,
+                RenderPath = view.ColourPath,
+                Width = w,
+                Height = h,
+                Psnr = Psnr.Of(render, truth),
+                Ssim = Ssim.Mean(render, truth, w, h, 3),
+            };
+            byte[] mask = null;
+            if (frame.MaskPath != null && dataset.HasMasks)
+            {
+                mask = EvaluationImages.Mask(PngReader.Read(frame.MaskPath), frame.MaskPath);
+                result.MaskedPsnr = Psnr.Masked(render, truth, 3, mask, out var inside);
+                result.MaskPixels = inside;
+            }
+            if (wantDepth)
+            {
+                var truthDepth = EvaluationImages.DepthPng(PngReader.Read(frame.DepthPath), dataset.DepthScale, frame.DepthPath);
+                float[] renderDepth;
+                if (view.DepthFormat == RenderDataFormat.NpyGz)
+                    renderDepth = EvaluationImages.DepthNpy(NpyReader.ReadGz(view.DepthPath), w, h, options.DepthAlongRay, dataset.Focal(w), dataset.Cx ?? w / 2.0, dataset.Cy ?? h / 2.0, view.DepthPath);
+                else
+                {
+                    var png = PngReader.Read(view.DepthPath);
+                    if (png.Width != w || png.Height != h) throw SizeProblem(view.DepthPath, png, w, h);
+                    renderDepth = EvaluationImages.DepthPng(png, dataset.DepthScale, view.DepthPath);
+                }
+                result.Depth = DepthErrors.Compute(renderDepth, truthDepth, mask);
+            }
+            if (wantNormals)
+            {
+                var truthNormals = EvaluationImages.NormalsPng(PngReader.Read(frame.NormalPath), frame.NormalPath);
+                float[] renderNormals;
+                if (view.NormalFormat == RenderDataFormat.NpyGz) renderNormals = EvaluationImages.NormalsNpy(NpyReader.ReadGz(view.NormalPath), w, h, view.NormalPath);
+                else
+                {
+                    var png = PngReader.Read(view.NormalPath);
+                    if (png.Width != w || png.Height != h) throw SizeProblem(view.NormalPath, png, w, h);
+                    renderNormals = EvaluationImages.NormalsPng(png, view.NormalPath);
+                }
+                result.Normals = NormalErrors.Compute(renderNormals, truthNormals, mask);
+            }
+
+            var error = ErrorMap.Render(render, truth, w, h);
+            var name = RenderFolder.BaseName(view.FramePath) + EvaluationOutput.ErrorSuffix;
+            result.ErrorMapFile = EvaluationOutput.ErrorFolder + "/" + name;
+            FileOps.WriteNewBytes(Path.Combine(outFolder, EvaluationOutput.ErrorFolder, name), PngWriter.Encode(error, w, h, PngPixelFormat.Rgb8));
+            result.TruthThumbnail = Thumbnail(ErrorMap.ToBytes(truth), w, h, options.ThumbnailSize);
+            result.RenderThumbnail = Thumbnail(ErrorMap.ToBytes(render), w, h, options.ThumbnailSize);
+            result.ErrorThumbnail = Thumbnail(error, w, h, options.ThumbnailSize);
+            return result;
+        }
+
+        static byte[] Thumbnail(byte[] rgb, int w, int h, int size)
+        {
+            var small = ErrorMap.Thumbnail(rgb, w, h, size, out var tw, out var th);
+            return PngWriter.Encode(small, tw, th, PngPixelFormat.Rgb8);
+        }
+
+        static InvalidParameterException SizeProblem(string path, PngImage png, int w, int h) =>
+            new InvalidParameterException(new[] { new ValidationProblem("--renders", path, "is " + png.Width + "×" + png.Height + " but the ground truth is " + w + "×" + h + ".", "Render at the dataset's resolution.") });
+    }
+}

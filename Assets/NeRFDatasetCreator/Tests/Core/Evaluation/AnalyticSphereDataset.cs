@@ -1,0 +1,167 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Text;
+
+namespace NerfDatasetCreator.Tests
+{
+    /// <summary>
+    /// A Blender-format dataset rendered analytically: a sphere of radius <see cref="Radius"/> at the output origin, seen
+    /// by cameras at distance 4 looking at it (OpenGL cameras, +Z up). Each pixel's ray through its centre is intersected
+    /// with the sphere exactly: colour = 0.5 + 0.5·n (RGBA, background transparent), z-depth (16-bit thousandths), normal
+    /// (8-bit, output frame) and mask PNGs, and <c>geometry/target_mesh.ply</c> a UV sphere of the same radius. Renders in
+    /// each trainer's layout are made from the same pixels (<see cref="Render"/>), optionally perturbed.
+    /// </summary>
+    static class AnalyticSphereDataset
+    {
+        public const double Radius = 1.0;
+        public const double Distance = 4.0;
+        public const double CameraAngleX = 0.6911112070083618;
+
+        public sealed class View
+        {
+            public Matrix4x4d CameraToWorld;
+            public byte[] Rgba;
+            public ushort[] Depth;
+            public byte[] Normals;
+            public byte[] Mask;
+        }
+
+        public static Matrix4x4d LookAtOrigin(Vector3d eye)
+        {
+            var forward = (Vector3d.Zero - eye).Normalized();
+            var right = Vector3d.Cross(forward, Vector3d.UnitZ).Normalized();
+            var up = Vector3d.Cross(right, forward);
+            return Matrix4x4d.FromColumns(right, up, -forward, eye);
+        }
+
+        /// <summary>The camera centre of view <paramref name="i"/> of <paramref name="count"/>: around the sphere, elevations alternating ±30°.</summary>
+        public static Vector3d Eye(int i, int count, double offset)
+        {
+            var azimuth = 2 * Math.PI * (i + offset) / count;
+            var elevation = (i % 2 == 0 ? 1 : -1) * Math.PI / 6;
+            return new Vector3d(Math.Cos(elevation) * Math.Cos(azimuth), Math.Cos(elevation) * Math.Sin(azimuth), Math.Sin(elevation)) * Distance;
+        }
+
+        public static View RenderView(Matrix4x4d c2w, int width, int height)
+        {
+            var focal = 0.5 * width / Math.Tan(0.5 * CameraAngleX);
+            var view = new View { CameraToWorld = c2w, Rgba = new byte[width * height * 4], Depth = new ushort[width * height], Normals = new byte[width * height * 3], Mask = new byte[width * height] };
+            var origin = c2w.Translation;
+            for (var v = 0; v < height; v++)
+                for (var u = 0; u < width; u++)
+                {
+                    var dirCam = new Vector3d((u + 0.5 - width / 2.0) / focal, -(v + 0.5 - height / 2.0) / focal, -1);
+                    var d = c2w.MultiplyVector(dirCam);
+                    // |o + t d|² = R²: a t² + 2 b t + c = 0.
+                    double a = d.LengthSquared, b = Vector3d.Dot(origin, d), c = origin.LengthSquared - Radius * Radius;
+                    var disc = b * b - a * c;
+                    if (disc < 0) continue;
+                    var t = (-b - Math.Sqrt(disc)) / a; // z-depth: dirCam has z = −1
+                    var p = origin + d * t;
+                    var n = p.Normalized();
+                    var i = v * width + u;
+                    view.Rgba[4 * i] = Byte(0.5 + 0.5 * n.X);
+                    view.Rgba[4 * i + 1] = Byte(0.5 + 0.5 * n.Y);
+                    view.Rgba[4 * i + 2] = Byte(0.5 + 0.5 * n.Z);
+                    view.Rgba[4 * i + 3] = 255;
+                    view.Depth[i] = (ushort)Math.Round(t * 1000);
+                    view.Normals[3 * i] = Byte(n.X * 0.5 + 0.5);
+                    view.Normals[3 * i + 1] = Byte(n.Y * 0.5 + 0.5);
+                    view.Normals[3 * i + 2] = Byte(n.Z * 0.5 + 0.5);
+                    view.Mask[i] = 255;
+                }
+            return view;
+        }
+
+        static byte Byte(double v) => (byte)Math.Round(255 * Math.Max(0, Math.Min(1, v)));
+
+        /// <summary>Writes the dataset (train and test splits; val empty) and returns the test views.</summary>
+        public static List<View> Write(string folder, int width = 48, int height = 40, int train = 6, int test = 3, bool mesh = true)
+        {
+            Directory.CreateDirectory(folder);
+            List<View> testViews = null;
+            foreach (var (split, count, offset) in new[] { ("train", train, 0.0), ("val", 0, 0.25), ("test", test, 0.5) })
+            {
+                var views = new List<View>();
+                Directory.CreateDirectory(Path.Combine(folder, split));
+                var frames = new StringBuilder();
+                for (var i = 0; i < count; i++)
+                {
+                    var view = RenderView(LookAtOrigin(Eye(i, count, offset)), width, height);
+                    views.Add(view);
+                    var stem = Path.Combine(folder, split, "r_" + i);
+                    File.WriteAllBytes(stem + ".png", PngWriter.Encode(view.Rgba, width, height, PngPixelFormat.Rgba8));
+                    File.WriteAllBytes(stem + "_depth_0000.png", PngWriter.EncodeGray16(view.Depth, width, height));
+                    File.WriteAllBytes(stem + "_normal_0000.png", PngWriter.Encode(view.Normals, width, height, PngPixelFormat.Rgb8));
+                    File.WriteAllBytes(stem + "_mask_0000.png", PngWriter.Encode(view.Mask, width, height, PngPixelFormat.Gray8));
+                    if (i > 0) frames.Append(",\n");
+                    var rows = view.CameraToWorld.ToRows();
+                    frames.Append("    {\"file_path\": \"./").Append(split).Append("/r_").Append(i).Append("\", \"rotation\": 0.0, \"transform_matrix\": [");
+                    for (var r = 0; r < 4; r++)
+                    {
+                        if (r > 0) frames.Append(", ");
+                        frames.Append('[').Append(string.Join(", ", Array.ConvertAll(rows[r], x => x.ToString("R", CultureInfo.InvariantCulture)))).Append(']');
+                    }
+                    frames.Append("], \"depth_path\": \"./").Append(split).Append("/r_").Append(i).Append("_depth_0000.png\", \"normal_path\": \"./").Append(split).Append("/r_").Append(i)
+                        .Append("_normal_0000.png\", \"mask_path\": \"./").Append(split).Append("/r_").Append(i).Append("_mask_0000.png\"}");
+                }
+                File.WriteAllText(Path.Combine(folder, "transforms_" + split + ".json"),
+                    "{\n  \"camera_angle_x\": " + CameraAngleX.ToString("R", CultureInfo.InvariantCulture) + ",\n  \"w\": " + width + ", \"h\": " + height +
+                    ",\n  \"integer_depth_scale\": 0.001,\n  \"frames\": [\n" + frames + "\n  ]\n}\n");
+                if (split == "test") testViews = views;
+            }
+            if (mesh)
+            {
+                Directory.CreateDirectory(Path.Combine(folder, TargetMeshPly.Folder));
+                TargetMeshPly.Write(Path.Combine(folder, TargetMeshPly.Folder, TargetMeshPly.FileName), new[] { UvSphere(Radius, 48, 96) });
+            }
+            return testViews;
+        }
+
+        /// <summary>A UV sphere centred at the origin, faces counter-clockwise seen from outside, unit normals.</summary>
+        public static SurfaceMesh UvSphere(double radius, int rings, int segments, string name = "sphere")
+        {
+            var vertices = new List<Vector3d>();
+            var normals = new List<Vector3d>();
+            for (var r = 0; r <= rings; r++)
+            {
+                var theta = Math.PI * r / rings;
+                for (var s = 0; s < segments; s++)
+                {
+                    var phi = 2 * Math.PI * s / segments;
+                    var n = new Vector3d(Math.Sin(theta) * Math.Cos(phi), Math.Sin(theta) * Math.Sin(phi), Math.Cos(theta));
+                    vertices.Add(n * radius);
+                    normals.Add(n);
+                }
+            }
+            var triangles = new List<int>();
+            for (var r = 0; r < rings; r++)
+                for (var s = 0; s < segments; s++)
+                {
+                    int a = r * segments + s, b = r * segments + (s + 1) % segments, c = (r + 1) * segments + s, d = (r + 1) * segments + (s + 1) % segments;
+                    // (c − a) runs along e_θ, (b − a) along e_φ and e_θ × e_φ = e_r: (a, c, b) and (b, c, d) are counter-clockwise seen from outside.
+                    if (r > 0) { triangles.Add(a); triangles.Add(c); triangles.Add(b); }
+                    if (r < rings - 1) { triangles.Add(b); triangles.Add(c); triangles.Add(d); }
+                }
+            return new SurfaceMesh(vertices, triangles, normals, name: name);
+        }
+
+        /// <summary>
+        /// The test view composited on white as 8-bit RGB (what a model trained with a white background renders),
+        /// with <paramref name="perturb"/> added to every red sample inside the sphere (clamped).
+        /// </summary>
+        public static byte[] Render(View view, int width, int height, int perturb)
+        {
+            var rgb = new byte[width * height * 3];
+            for (var p = 0; p < width * height; p++)
+            {
+                var a = view.Rgba[4 * p + 3] / 255.0;
+                for (var c = 0; c < 3; c++) rgb[3 * p + c] = (byte)Math.Round(view.Rgba[4 * p + c] * a + 255 * (1 - a));
+                if (view.Mask[p] > 0) rgb[3 * p] = (byte)Math.Max(0, Math.Min(255, rgb[3 * p] + perturb));
+            }
+            return rgb;
+        }
+    }
+}

@@ -1,0 +1,149 @@
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+
+namespace NerfDatasetCreator.Tests
+{
+    /// <summary>
+    /// Each trainer's layout, made exactly as its code writes it (see RenderLayouts.Source for file and line), is found
+    /// and paired with the split's frames; counts and names that do not match the split are refused.
+    /// </summary>
+    public class RenderFolderTests
+    {
+        static readonly string[] Frames = { "./test/r_0", "./test/r_1", "./test/r_2" };
+
+        static void Png(string path, int w = 4, int h = 3, int colorType = PngInfo.ColorTypeRgb)
+        {
+            Directory.CreateDirectory(Path.GetDirectoryName(path));
+            TestPng.Write(path, w, h, 8, colorType);
+        }
+
+        /// <summary>3DGS render.py: &lt;model&gt;/test/ours_&lt;iter&gt;/renders/{idx:05d}.png and gt/ beside it.</summary>
+        static string GaussianModel(TempFolder temp, int count, params int[] iterations)
+        {
+            var model = temp.Combine("output", "lego");
+            foreach (var iteration in iterations)
+                for (var i = 0; i < count; i++)
+                {
+                    Png(Path.Combine(model, "test", "ours_" + iteration, "renders", i.ToString("00000") + ".png"));
+                    Png(Path.Combine(model, "test", "ours_" + iteration, "gt", i.ToString("00000") + ".png"));
+                }
+            Png(Path.Combine(model, "train", "ours_" + iterations[0], "renders", "00000.png"));
+            File.WriteAllText(Path.Combine(model, "cfg_args"), "Namespace()");
+            return model;
+        }
+
+        [Test]
+        public void GaussianSplattingRendersAreReadInFrameOrderFromTheLatestIteration()
+        {
+            using (var temp = new TempFolder())
+            {
+                var model = GaussianModel(temp, 3, 7000, 30000);
+                var set = RenderFolder.Read(model, null, "test", Frames);
+                Assert.That(set.Layout, Is.EqualTo(RenderLayout.GaussianSplatting));
+                Assert.That(set.Views.Select(v => Path.GetFileName(v.ColourPath)), Is.EqualTo(new[] { "00000.png", "00001.png", "00002.png" }));
+                Assert.That(set.Views.Select(v => v.FramePath), Is.EqualTo(Frames));
+                Assert.That(set.Folder, Does.EndWith(Path.Combine("ours_30000", "renders")));
+                Assert.That(set.Notes.Single(), Does.Contain("ours_30000"));
+                // The ours_<iter> folder itself picks that iteration.
+                var older = RenderFolder.Read(Path.Combine(model, "test", "ours_7000"), RenderLayout.GaussianSplatting, "test", Frames);
+                Assert.That(older.Folder, Does.EndWith(Path.Combine("ours_7000", "renders")));
+            }
+        }
+
+        [Test]
+        public void GaussianSplattingWithAnotherCountIsRefused()
+        {
+            using (var temp = new TempFolder())
+            {
+                var model = GaussianModel(temp, 2, 30000);
+                Assert.That(() => RenderFolder.Read(model, null, "test", Frames),
+                    Throws.TypeOf<InvalidParameterException>().With.Message.Contains("holds 2 renders (00000.png … 00001.png) but transforms_test.json lists 3 frames"));
+                Assert.That(() => RenderFolder.Read(model, RenderLayout.GaussianSplatting, "val", Frames),
+                    Throws.TypeOf<InvalidParameterException>().With.Message.Contains("never renders val"));
+            }
+        }
+
+        [Test]
+        public void NerfstudioDatasetRendersArePairedByImageName()
+        {
+            using (var temp = new TempFolder())
+            {
+                // ns-render dataset --output-path renders: renders/test/<output name>/<image path relative to the split's common folder>.
+                var output = temp.Combine("renders");
+                foreach (var name in new[] { "r_0", "r_1", "r_2" })
+                {
+                    Png(Path.Combine(output, "test", "rgb", name + ".png"));
+                    Png(Path.Combine(output, "test", "gt-rgb", name + ".png"));
+                    Png(Path.Combine(output, "test", "depth", name + ".png"));
+                    Directory.CreateDirectory(Path.Combine(output, "test", "raw-depth"));
+                    GeometryFileTests.WriteNpyGz(Path.Combine(output, "test", "raw-depth", name + ".npy.gz"), new[] { 3, 4, 1 }, new float[12]);
+                }
+                var set = RenderFolder.Read(output, null, "test", Frames);
+                Assert.That(set.Layout, Is.EqualTo(RenderLayout.Nerfstudio));
+                Assert.That(set.Views.Select(v => Path.GetFileName(v.ColourPath)), Is.EqualTo(new[] { "r_0.png", "r_1.png", "r_2.png" }));
+                Assert.That(set.Views.All(v => v.DepthFormat == RenderDataFormat.NpyGz && v.DepthPath.EndsWith(".npy.gz")), Is.True);
+                Assert.That(set.Views.All(v => v.NormalPath == null), Is.True);
+                // The split folder itself works too.
+                Assert.That(RenderFolder.Read(Path.Combine(output, "test"), null, "test", Frames).Layout, Is.EqualTo(RenderLayout.Nerfstudio));
+            }
+        }
+
+        [Test]
+        public void NerfstudioJpegRendersAreRefusedWithTheFlagThatFixesThem()
+        {
+            using (var temp = new TempFolder())
+            {
+                var output = temp.Combine("renders");
+                Directory.CreateDirectory(Path.Combine(output, "test", "rgb"));
+                foreach (var name in new[] { "r_0", "r_1", "r_2" }) File.WriteAllBytes(Path.Combine(output, "test", "rgb", name + ".jpg"), new byte[] { 0xff, 0xd8 });
+                Assert.That(() => RenderFolder.Read(output, null, "test", Frames), Throws.TypeOf<InvalidParameterException>().With.Message.Contains("--image-format png"));
+            }
+        }
+
+        [Test]
+        public void InstantNgpScreenshotsAreNamedAfterEachFilePath()
+        {
+            using (var temp = new TempFolder())
+            {
+                // run.py: os.path.join(screenshot_dir, os.path.basename(f["file_path"])) + ".png" when extensionless; RGBA.
+                var shots = temp.Combine("screenshots");
+                foreach (var name in new[] { "r_0", "r_1", "r_2" }) Png(Path.Combine(shots, name + ".png"), colorType: PngInfo.ColorTypeRgba);
+                var set = RenderFolder.Read(shots, RenderLayout.InstantNgp, "test", Frames);
+                Assert.That(set.Layout, Is.EqualTo(RenderLayout.InstantNgp));
+                Assert.That(set.Views.Select(v => Path.GetFileName(v.ColourPath)), Is.EqualTo(new[] { "r_0.png", "r_1.png", "r_2.png" }));
+                File.Delete(Path.Combine(shots, "r_1.png"));
+                Assert.That(() => RenderFolder.Read(shots, RenderLayout.InstantNgp, "test", Frames),
+                    Throws.TypeOf<InvalidParameterException>().With.Message.Contains("has no render for 1 of the 3 frames").And.Message.Contains("r_1.png").And.Message.Contains("--screenshot_transforms"));
+            }
+        }
+
+        [Test]
+        public void PlainFoldersPickUpDepthAndNormalsAndRefuseStrangers()
+        {
+            using (var temp = new TempFolder())
+            {
+                var plain = temp.Combine("plain");
+                foreach (var name in new[] { "r_0", "r_1", "r_2" })
+                {
+                    Png(Path.Combine(plain, name + ".png"));
+                    TestPng.Write(Path.Combine(plain, name + "_depth_0000.png"), 4, 3, 16, PngInfo.ColorTypeGray);
+                }
+                var set = RenderFolder.Read(plain, null, "test", Frames);
+                Assert.That(set.Layout, Is.EqualTo(RenderLayout.Plain));
+                Assert.That(set.Views.All(v => v.DepthFormat == RenderDataFormat.PluginPng), Is.True);
+                Png(Path.Combine(plain, "r_3.png"));
+                Assert.That(() => RenderFolder.Read(plain, null, "test", Frames),
+                    Throws.TypeOf<InvalidParameterException>().With.Message.Contains("holds r_3.png, which no frame of transforms_test.json names"));
+            }
+        }
+
+        [Test]
+        public void AFolderWithoutRendersNamesTheLayoutsItLookedFor()
+        {
+            using (var temp = new TempFolder())
+                Assert.That(() => RenderFolder.Read(temp.Path, null, "test", Frames),
+                    Throws.TypeOf<InvalidParameterException>().With.Message.Contains("test/ours_<iter>/renders/00000.png").And.Message.Contains("--layout"));
+        }
+    }
+}
