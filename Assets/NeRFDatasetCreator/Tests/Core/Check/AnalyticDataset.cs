@@ -18,15 +18,17 @@ namespace NerfDatasetCreator.Tests
         {
             public int Width = 96, Height = 72, Supersampling = 2;
             public int Train = 10, Val = 3, Test = 3;
-            public bool Normalised;
-            public int TimeSteps; // > 1: a multi-view dynamic capture with moving content
+            public bool Normalised { get; set; }
+
+            /// <summary>More than 1: a multi-view dynamic capture with moving content.</summary>
+            public int TimeSteps { get; set; }
             public int PointCloud = 2000;
 
             /// <summary>Depth and normals rendered at the output size (the capture's default, CaptureOptions.DepthAndNormalAtOutputSize), else at the supersampled size.</summary>
             public bool DataAtOutputSize = true;
 
             /// <summary>A planted fault: the depth pass holds the distance along each pixel's ray instead of z.</summary>
-            public bool DepthAlongRay;
+            public bool DepthAlongRay { get; set; }
         }
 
         static readonly Vector3d Centre = new Vector3d(1, 2, 3);
