@@ -58,6 +58,7 @@ for image, label in [("rgba", "RGBA render with grain"), ("rgba-clean", "RGBA re
 row("check of 300 views 800×800 with depth, normals, masks (s CPU)", "check.cpu.s", "{:.1f}")
 row("  the same (s wall clock)", "check.wall.s", "{:.1f}")
 row("  of which reading + PNG decoding (s wall clock)", "check.decode.s", "{:.1f}")
+row("  reading + decoding all its PNGs once, alone (s CPU)", "check.decode.cpu.s", "{:.1f}")
 row("  ms CPU per view", "check.ms-per-view", "{:.0f}")
 for kind, label in [("rgba", "RGBA"), ("depth", "depth (gray 16)"), ("normal", "normals (RGB 8)"), ("mask", "mask (gray 8)")]:
     k = f"check.png.{kind}"

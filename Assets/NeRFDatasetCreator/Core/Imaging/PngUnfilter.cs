@@ -9,7 +9,9 @@ namespace NerfDatasetCreator
     /// the result goes to <c>dst</c> in <c>pixels</c>. The first <c>bpp</c> bytes have no left neighbour (a = c = 0).
     /// Up, and Sub and Average on 2- and 4-byte pixels (16-bit grey, RGBA), add several bytes per step within a word
     /// (SWAR: the low seven bits of each byte added without carrying into the next byte, the top bits by exclusive or),
-    /// since byte loops are what Mono runs slowest; the others go byte by byte.
+    /// since byte loops are what Mono runs slowest; on 3-byte pixels (normal maps) Sub, Average and Paeth keep the left
+    /// pixel's channels in locals (three independent dependency chains, no reload of the byte just stored); the rest go
+    /// byte by byte.
     /// </summary>
     static class PngUnfilter
     {
@@ -22,13 +24,14 @@ namespace NerfDatasetCreator
         {
             if (bpp == 4 && (stride & 3) == 0) { Sub4(raw, src, pixels, dst, stride); return; }
             if (bpp == 2 && (stride & 1) == 0) { Sub2(raw, src, pixels, dst, stride); return; }
+            if (bpp == 3) { Sub3(raw, src, pixels, dst, stride); return; }
             for (var x = 0; x < bpp; x++) pixels[dst + x] = raw[src + x];
             for (int end = dst + stride, o = dst + bpp, i = src + bpp; o < end; o++, i++) pixels[o] = (byte)(raw[i] + pixels[o - bpp]);
         }
 
         static void Sub4(byte[] raw, int src, byte[] pixels, int dst, int stride)
         {
-            var r = MemoryMarshal.Cast<byte, uint>(new ReadOnlySpan<byte>(raw, src, stride));
+            var r = MemoryMarshal.Cast<byte, uint>(new Span<byte>(raw, src, stride));
             var o = MemoryMarshal.Cast<byte, uint>(new Span<byte>(pixels, dst, stride));
             ulong left = 0;
             for (var x = 0; x < r.Length; x++)
@@ -40,7 +43,7 @@ namespace NerfDatasetCreator
 
         static void Sub2(byte[] raw, int src, byte[] pixels, int dst, int stride)
         {
-            var r = MemoryMarshal.Cast<byte, ushort>(new ReadOnlySpan<byte>(raw, src, stride));
+            var r = MemoryMarshal.Cast<byte, ushort>(new Span<byte>(raw, src, stride));
             var o = MemoryMarshal.Cast<byte, ushort>(new Span<byte>(pixels, dst, stride));
             ulong left = 0;
             for (var x = 0; x < r.Length; x++)
@@ -53,8 +56,8 @@ namespace NerfDatasetCreator
         public static void Up(byte[] raw, int src, byte[] pixels, int dst, byte[] up, int upAt, int stride)
         {
             var words = stride >> 3;
-            var r = MemoryMarshal.Cast<byte, ulong>(new ReadOnlySpan<byte>(raw, src, words * 8));
-            var u = MemoryMarshal.Cast<byte, ulong>(new ReadOnlySpan<byte>(up, upAt, words * 8));
+            var r = MemoryMarshal.Cast<byte, ulong>(new Span<byte>(raw, src, words * 8));
+            var u = MemoryMarshal.Cast<byte, ulong>(new Span<byte>(up, upAt, words * 8));
             var o = MemoryMarshal.Cast<byte, ulong>(new Span<byte>(pixels, dst, words * 8));
             for (var x = 0; x < o.Length; x++) o[x] = Add(r[x], u[x]);
             for (var x = words * 8; x < stride; x++) pixels[dst + x] = (byte)(raw[src + x] + up[upAt + x]);
@@ -63,6 +66,7 @@ namespace NerfDatasetCreator
         public static void Average(byte[] raw, int src, byte[] pixels, int dst, byte[] up, int upAt, int stride, int bpp)
         {
             if (bpp == 4 && (stride & 3) == 0) { Average4(raw, src, pixels, dst, up, upAt, stride); return; }
+            if (bpp == 3) { Average3(raw, src, pixels, dst, up, upAt, stride); return; }
             for (var x = 0; x < bpp; x++) pixels[dst + x] = (byte)(raw[src + x] + (up[upAt + x] >> 1));
             for (int i = src + bpp, o = dst + bpp, u = upAt + bpp, end = dst + stride; o < end; i++, o++, u++)
                 pixels[o] = (byte)(raw[i] + ((pixels[o - bpp] + up[u]) >> 1));
@@ -70,8 +74,8 @@ namespace NerfDatasetCreator
 
         static void Average4(byte[] raw, int src, byte[] pixels, int dst, byte[] up, int upAt, int stride)
         {
-            var r = MemoryMarshal.Cast<byte, uint>(new ReadOnlySpan<byte>(raw, src, stride));
-            var u = MemoryMarshal.Cast<byte, uint>(new ReadOnlySpan<byte>(up, upAt, stride));
+            var r = MemoryMarshal.Cast<byte, uint>(new Span<byte>(raw, src, stride));
+            var u = MemoryMarshal.Cast<byte, uint>(new Span<byte>(up, upAt, stride));
             var o = MemoryMarshal.Cast<byte, uint>(new Span<byte>(pixels, dst, stride));
             ulong left = 0;
             for (var x = 0; x < r.Length; x++)
@@ -225,6 +229,42 @@ namespace NerfDatasetCreator
                         cl3 = b;
                         pixels[o + 3] = (byte)a3;
                     }
+            }
+        }
+
+        /// <summary>Average on 3-byte pixels (RGB normals): the left pixel's channels stay in locals.</summary>
+        static void Average3(byte[] raw, int src, byte[] pixels, int dst, byte[] up, int upAt, int stride)
+        {
+            int a0 = (raw[src] + (up[upAt] >> 1)) & 0xFF, a1 = (raw[src + 1] + (up[upAt + 1] >> 1)) & 0xFF, a2 = (raw[src + 2] + (up[upAt + 2] >> 1)) & 0xFF;
+            pixels[dst] = (byte)a0;
+            pixels[dst + 1] = (byte)a1;
+            pixels[dst + 2] = (byte)a2;
+            for (int i = src + 3, o = dst + 3, u = upAt + 3, end = dst + stride; o < end; i += 3, o += 3, u += 3)
+            {
+                a0 = (raw[i] + ((a0 + up[u]) >> 1)) & 0xFF;
+                a1 = (raw[i + 1] + ((a1 + up[u + 1]) >> 1)) & 0xFF;
+                a2 = (raw[i + 2] + ((a2 + up[u + 2]) >> 1)) & 0xFF;
+                pixels[o] = (byte)a0;
+                pixels[o + 1] = (byte)a1;
+                pixels[o + 2] = (byte)a2;
+            }
+        }
+
+        /// <summary>Sub on 3-byte pixels: the left pixel's channels stay in locals.</summary>
+        static void Sub3(byte[] raw, int src, byte[] pixels, int dst, int stride)
+        {
+            int a0 = raw[src], a1 = raw[src + 1], a2 = raw[src + 2];
+            pixels[dst] = (byte)a0;
+            pixels[dst + 1] = (byte)a1;
+            pixels[dst + 2] = (byte)a2;
+            for (int i = src + 3, o = dst + 3, end = dst + stride; o < end; i += 3, o += 3)
+            {
+                a0 = (raw[i] + a0) & 0xFF;
+                a1 = (raw[i + 1] + a1) & 0xFF;
+                a2 = (raw[i + 2] + a2) & 0xFF;
+                pixels[o] = (byte)a0;
+                pixels[o + 1] = (byte)a1;
+                pixels[o + 2] = (byte)a2;
             }
         }
     }
