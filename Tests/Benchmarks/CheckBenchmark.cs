@@ -35,6 +35,11 @@ namespace NerfDatasetCreator.Benchmarks
             Console.WriteLine($"  whole check (CPU)                                    {used,7:F2}");
             Console.WriteLine($"  whole check (wall clock)                             {wall.Elapsed.TotalSeconds,7:F2}");
             Console.WriteLine($"  of which reading + PNG decoding (wall clock)         {report.DecodeSeconds,7:F2}");
+            foreach (var pair in report.CheckSeconds)
+            {
+                Console.WriteLine($"    in {pair.Key + " (wall clock)",-48} {pair.Value,7:F2}");
+                record("check.in." + pair.Key.Replace(' ', '-') + ".s", pair.Value);
+            }
             Console.WriteLine($"  views checked {report.ViewsChecked}, failed: {report.Failed} ({report.Problems.Count} problems)");
             foreach (var line in report.SummaryLines) Console.WriteLine("    " + line);
             // The decoding alone, in CPU time like the whole: every PNG the check's first pass reads, read and decoded once.

@@ -22,21 +22,38 @@ namespace NerfDatasetCreator
 
         int _views, _bad;
         double _worstShare;
+        readonly EdgeShift _shift = new EdgeShift();
+        bool[] _alpha = new bool[0], _geometry = new bool[0];
 
         public void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems)
         {
             if (images.Alpha == null || (images.Mask == null && images.Depth == null)) return;
             _views++;
             int w = images.Width, h = images.Height, n = w * h;
-            var a = new bool[n];
-            for (var i = 0; i < n; i++) a[i] = images.Alpha[i] != 0;
-            if (images.Mask != null) Compare(view, a, Coverage(images.Mask), w, h, view.MaskFile, problems);
-            if (images.Depth != null) Compare(view, a, Coverage(images.Depth), w, h, view.DepthFile, problems);
+            if (_alpha.Length != n)
+            {
+                _alpha = new bool[n];
+                _geometry = new bool[n];
+            }
+            var alpha = images.Alpha;
+            for (var i = 0; i < n; i++) _alpha[i] = alpha[i] != 0;
+            if (images.Mask != null)
+            {
+                var mask = images.Mask;
+                for (var i = 0; i < n; i++) _geometry[i] = mask[i] != 0;
+                Compare(view, _alpha, _geometry, w, h, view.MaskFile, problems);
+            }
+            if (images.Depth != null)
+            {
+                var depth = images.Depth;
+                for (var i = 0; i < n; i++) _geometry[i] = depth[i] != 0;
+                Compare(view, _alpha, _geometry, w, h, view.DepthFile, problems);
+            }
         }
 
         void Compare(CheckView view, bool[] a, bool[] g, int w, int h, string against, List<DatasetCheckProblem> problems)
         {
-            var r = EdgeShift.Measure(a, g, w, h);
+            var r = _shift.Measure(a, g, w, h);
             if (r.BandPixels == 0) return;
             var share = (double)r.MismatchAtZero / r.BandPixels;
             if (share > _worstShare) _worstShare = share;
@@ -54,20 +71,6 @@ namespace NerfDatasetCreator
             if (dx != 0) parts.Add(System.Math.Abs(dx) + " px " + (dx > 0 ? "right" : "left"));
             if (dy != 0) parts.Add(System.Math.Abs(dy) + " px " + (dy > 0 ? "down" : "up"));
             return string.Join(" and ", parts);
-        }
-
-        static bool[] Coverage(byte[] plane)
-        {
-            var c = new bool[plane.Length];
-            for (var i = 0; i < plane.Length; i++) c[i] = plane[i] != 0;
-            return c;
-        }
-
-        static bool[] Coverage(ushort[] plane)
-        {
-            var c = new bool[plane.Length];
-            for (var i = 0; i < plane.Length; i++) c[i] = plane[i] != 0;
-            return c;
         }
 
         public DatasetCheckResult Finish()

@@ -72,7 +72,12 @@ namespace NerfDatasetCreator
                     var problem = CheckDatasetReader.Complete(view, images.Width, images.Height);
                     if (problem != null && intrinsicsReported.Add(view.Split)) report.Add(problem);
                     var found = new List<DatasetCheckProblem>();
-                    foreach (var check in checks) check.View(view, images, found);
+                    foreach (var check in checks)
+                    {
+                        var before = Stopwatch.GetTimestamp();
+                        check.View(view, images, found);
+                        Time(report, check.Name, before);
+                    }
                     foreach (var p in found) report.Add(p);
                     if (images.Depth != null) cache.Put(view.Number, images.Depth);
                     else view.DepthFile = null; // unusable: leave it out of the multi-view pass
@@ -96,7 +101,9 @@ namespace NerfDatasetCreator
                     foreach (var pair in group)
                     {
                         var b = Depth(root, views[pair.Value], cache, ref decodeTicks);
+                        var before = Stopwatch.GetTimestamp();
                         if (a != null && b != null) multiView.Pair(views[pair.Key], a, views[pair.Value], b, found);
+                        Time(report, MultiViewGeometryCheck.CheckName, before);
                     }
                     progress?.Invoke(++done, total);
                 }
@@ -115,6 +122,12 @@ namespace NerfDatasetCreator
             report.DecodeSeconds = decodeTicks / (double)Stopwatch.Frequency;
             report.TotalSeconds = (Stopwatch.GetTimestamp() - started) / (double)Stopwatch.Frequency;
             return report;
+        }
+
+        static void Time(DatasetCheckReport report, string check, long since)
+        {
+            report.CheckSeconds.TryGetValue(check, out var seconds);
+            report.CheckSeconds[check] = seconds + (Stopwatch.GetTimestamp() - since) / (double)Stopwatch.Frequency;
         }
 
         static ushort[] Depth(string root, CheckView view, DepthCache cache, ref long decodeTicks)

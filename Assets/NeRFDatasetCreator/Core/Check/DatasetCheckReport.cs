@@ -25,6 +25,9 @@ namespace NerfDatasetCreator
         public double DecodeSeconds { get; internal set; }
         public double TotalSeconds { get; internal set; }
 
+        /// <summary>Time spent in each check, in seconds, by name (for the benchmark).</summary>
+        public Dictionary<string, double> CheckSeconds { get; } = new Dictionary<string, double>();
+
         /// <summary>True when any check failed or any problem was found.</summary>
         public bool Failed => problems.Count > 0 || results.Any(r => r.Status == DatasetCheckStatus.Failed);
 

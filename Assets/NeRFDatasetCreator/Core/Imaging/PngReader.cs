@@ -102,8 +102,10 @@ namespace NerfDatasetCreator
         {
             var rowBytes = stride + 1;
             var band = Math.Max(1, Math.Min(height, (1 << 18) / rowBytes));
-            var raw = new byte[band * rowBytes];
-            var zero = new byte[stride];
+            // The thread's scratch rows, kept between calls: a 256 KiB array per decode would be a large-object allocation.
+            var raw = Scratch(ref bandScratch, band * rowBytes);
+            var zero = Scratch(ref zeroScratch, stride);
+            Array.Clear(zero, 0, stride);
             for (var y0 = 0; y0 < height; y0 += band)
             {
                 var rows = Math.Min(band, height - y0);
@@ -134,6 +136,14 @@ namespace NerfDatasetCreator
                     }
                 }
             }
+        }
+
+        [ThreadStatic] static byte[] bandScratch, zeroScratch;
+
+        static byte[] Scratch(ref byte[] array, int length)
+        {
+            if (array == null || array.Length < length) array = new byte[length];
+            return array;
         }
 
         static bool Is(byte[] b, int i, char c0, char c1, char c2, char c3) => b[i] == c0 && b[i + 1] == c1 && b[i + 2] == c2 && b[i + 3] == c3;
