@@ -39,6 +39,15 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void DepthAndNormalsAtTheSupersampledSizePass()
+        {
+            // CaptureOptions.DepthAndNormalAtOutputSize off: depth and normals point-sampled from 2×2 blocks, a quarter
+            // pixel off the pixel centre (pixels.md §4).
+            var folder = AnalyticDataset.Write(_temp.Path, "blocks", new AnalyticDataset.Options { DataAtOutputSize = false });
+            AssertClean(DatasetCheck.Run(folder, new DatasetCheckOptions()));
+        }
+
+        [Test]
         public void NormalisedDatasetPasses()
         {
             var folder = AnalyticDataset.Write(_temp.Path, "half", new AnalyticDataset.Options { Normalised = true });
