@@ -170,6 +170,36 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void PointCloudInUnityAxesIsCaught()
+        {
+            // The cloud written without the Y/Z swap, and recorded as this plugin's (so it is checked, not skipped as foreign).
+            var folder = Copy();
+            var ply = Path.Combine(folder, "points3d.ply");
+            var points = PlyReader.Read(ply).Select(p => new CloudPoint(new Vector3d(p.Position.X, p.Position.Z, p.Position.Y), p.Normal, p.Red, p.Green, p.Blue)).ToList();
+            File.Delete(ply);
+            PlyWriter.Write(ply, points);
+            var configPath = Path.Combine(folder, "dataset_config.json");
+            var config = JObject.Parse(File.ReadAllText(configPath));
+            config[PointCloudRecord.Key] = PointCloudRecord.Of(ply, "points3d.ply", points.Count).ToJson();
+            File.WriteAllText(configPath, config.ToString());
+            AssertCaughtBy(Check(folder), "point cloud vs masks");
+        }
+
+        [Test]
+        public void AForeignPointCloudIsSkippedWithTheReason()
+        {
+            // 3DGS's random cube under our name: not the target's surface, so not held against the masks.
+            var folder = Copy();
+            var ply = Path.Combine(folder, "points3d.ply");
+            var random = new Random(3);
+            File.Delete(ply);
+            PlyWriter.Write(ply, Enumerable.Range(0, 500).Select(_ => new CloudPoint(new Vector3d(random.NextDouble() * 2.6 - 1.3, random.NextDouble() * 2.6 - 1.3, random.NextDouble() * 2.6 - 1.3), Vector3d.UnitZ, 1, 2, 3)).ToList());
+            var report = Check(folder);
+            Assert.That(report.Failed, Is.False);
+            Assert.That(report.Results.Single(r => r.Name == "point cloud vs masks").SummaryLine, Does.StartWith("point cloud vs masks: skipped (points3d.ply is not this plugin's"));
+        }
+
+        [Test]
         public void ColourShiftedByOnePixelIsCaught()
         {
             var folder = Copy();
