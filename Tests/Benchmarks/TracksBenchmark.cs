@@ -10,7 +10,7 @@ namespace NerfDatasetCreator.Benchmarks
 {
     /// <summary>
     /// Exact COLMAP tracks (ColmapVisibility) for 100 000 surface points over 300 views of 800×800, from real 16-bit
-    /// depth PNGs and 8-bit masks of an analytic two-sphere target (the tests' AnalyticScene, linked) seen from the
+    /// depth PNGs and 8-bit masks of an analytic two-sphere target (the tests' SphereScene, linked) seen from the
     /// upper hemisphere at distance 4 with nerf_synthetic's field of view. The files are written once into a temp
     /// folder (not timed, in parallel); then each round decodes every depth map and mask once and projects every point
     /// into each view, single thread, timing the decoding and the projection separately (CPU time). Also: how many points each
@@ -29,7 +29,7 @@ namespace NerfDatasetCreator.Benchmarks
             try
             {
                 var k = CameraIntrinsics.FromVerticalFov(CameraIntrinsics.VerticalFovDegreesFromHorizontal(CameraAngleX, Size, Size), Size, Size);
-                var target = AnalyticScene.TwoSpheres();
+                var target = SphereScene.TwoSpheres();
                 var frames = new ExportFrame[Views];
                 var generation = Stopwatch.StartNew();
                 Parallel.For(0, Views, v =>
@@ -38,7 +38,7 @@ namespace NerfDatasetCreator.Benchmarks
                     var z = 1 - (v + 0.5) / Views;
                     var azimuth = v * Math.PI * (3 - Math.Sqrt(5));
                     var rho = Math.Sqrt(1 - z * z);
-                    var c2w = AnalyticScene.LookAt(new Vector3d(Distance * rho * Math.Cos(azimuth), Distance * rho * Math.Sin(azimuth), Distance * z), Vector3d.Zero);
+                    var c2w = SphereScene.LookAt(new Vector3d(Distance * rho * Math.Cos(azimuth), Distance * rho * Math.Sin(azimuth), Distance * z), Vector3d.Zero);
                     target.Render(c2w, k, out var depth, out var mask, out _);
                     File.WriteAllBytes(Path.Combine(root, "r_" + v + "_depth_0000.png"), PngWriter.EncodeGray16(depth, Size, Size));
                     File.WriteAllBytes(Path.Combine(root, "r_" + v + "_mask_0000.png"), PngWriter.Encode(mask, Size, Size, PngPixelFormat.Gray8));

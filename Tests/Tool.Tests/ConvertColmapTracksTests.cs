@@ -17,10 +17,10 @@ namespace NerfDatasetCreator.Tool.Tests
         {
             _scratch = new Scratch();
             _dataset = _scratch.PathOf("spheres");
-            var scene = AnalyticScene.TwoSpheres();
+            var scene = SphereScene.TwoSpheres();
             var k = CameraIntrinsics.FromVerticalFov(40, 64, 48);
             var views = new[] { "train", "train", "train", "val", "test" }
-                .Select((split, i) => (split, AnalyticScene.LookAt(new Vector3d(4.5 * System.Math.Cos(i * 1.2), 4.5 * System.Math.Sin(i * 1.2), 1.5), Vector3d.Zero)))
+                .Select((split, i) => (split, SphereScene.LookAt(new Vector3d(4.5 * System.Math.Cos(i * 1.2), 4.5 * System.Math.Sin(i * 1.2), 1.5), Vector3d.Zero)))
                 .ToList();
             scene.WriteDataset(_dataset, views, k, scene.Sample(800, 3));
         }

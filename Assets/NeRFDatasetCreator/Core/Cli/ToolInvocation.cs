@@ -11,6 +11,7 @@ namespace NerfDatasetCreator
         public const string ConvertCommand = "convert";
         public const string CleanCommand = "clean";
         public const string EvaluateCommand = "evaluate";
+        public const string CheckCommand = "check";
         public const string HelpCommand = "help";
 
         /// <summary>"plan", "validate", "merge", "convert", "clean" or "help".</summary>
@@ -60,6 +61,15 @@ namespace NerfDatasetCreator
         /// <summary><c>evaluate &lt;dir&gt; --renders &lt;dir&gt; …</c>: what to score and how.</summary>
         public EvaluationOptions Evaluation { get; internal set; }
 
+        /// <summary><c>check --split train|val|test</c>: only that split; null for all.</summary>
+        public string Split { get; internal set; }
+
+        /// <summary><c>check --json &lt;file&gt;</c>: where to write the whole report (a file that must not exist yet).</summary>
+        public string JsonReport { get; internal set; }
+
+        /// <summary><c>check --max-views N</c>: at most N views per split, spread evenly; 0 for all.</summary>
+        public int MaxViews { get; internal set; }
+
         /// <summary>Usage mistakes; the command runs only when this is empty.</summary>
         public List<string> Errors { get; } = new List<string>();
 
@@ -72,6 +82,7 @@ namespace NerfDatasetCreator
             "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs [--out <dir>] [--depths] [--binary] [--points N] [--min-track N]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures)\n" +
             "  clean <dir> [--dry-run]                                 finish or roll back interrupted runs, remove their leftover folders\n" +
             "  evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj> [--gt-mesh <mesh>] [--threshold <units>]]  score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html\n" +
+            "  check <dir> [--split S] [--json FILE] [--max-views N]   decode the images and check that alpha, masks, depth, normals, poses and point cloud agree\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
     }
 }

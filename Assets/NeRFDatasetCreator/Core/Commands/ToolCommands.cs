@@ -43,6 +43,7 @@ namespace NerfDatasetCreator
                 case ToolInvocation.ConvertCommand: return ConvertCommand.Run(invocation.DatasetFolder, invocation.Target.Value, invocation.OutputFolder, stdout, stderr, invocation.Depths, invocation.ColmapModelOptions);
                 case ToolInvocation.CleanCommand: return CleanCommand.Run(invocation.DatasetFolder, invocation.DryRun, stdout, stderr);
                 case ToolInvocation.EvaluateCommand: return EvaluateCommand.Run(invocation.Evaluation, stdout, stderr);
+                case ToolInvocation.CheckCommand: return CheckCommand.Run(invocation, stdout, stderr);
                 default:
                     stdout.WriteLine(ToolInvocation.Usage);
                     return ToolExitCodes.Success;

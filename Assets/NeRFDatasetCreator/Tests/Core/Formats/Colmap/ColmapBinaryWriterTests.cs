@@ -21,8 +21,8 @@ namespace NerfDatasetCreator.Tests
         {
             var poses = new[]
             {
-                ColmapPose.FromCameraToWorld(AnalyticScene.LookAt(new Vector3d(0, -4, 1), Vector3d.Zero)),
-                ColmapPose.FromCameraToWorld(AnalyticScene.LookAt(new Vector3d(3, -3, 0.5), Vector3d.Zero)),
+                ColmapPose.FromCameraToWorld(SphereScene.LookAt(new Vector3d(0, -4, 1), Vector3d.Zero)),
+                ColmapPose.FromCameraToWorld(SphereScene.LookAt(new Vector3d(3, -3, 0.5), Vector3d.Zero)),
             };
             var points = new[]
             {

@@ -22,7 +22,7 @@ namespace NerfDatasetCreator.Tests
         const int MaskedView = 1;
 
         TempFolder _temp;
-        AnalyticScene _scene;
+        SphereScene _scene;
         CameraIntrinsics _k;
         List<(string Split, Matrix4x4d CameraToWorld)> _views;
         List<CloudPoint> _cloud;
@@ -34,7 +34,7 @@ namespace NerfDatasetCreator.Tests
         public void Render()
         {
             _temp = new TempFolder();
-            _scene = AnalyticScene.TwoSpheres();
+            _scene = SphereScene.TwoSpheres();
             // Off-centre principal point and a non-square image: a swapped axis or a half-pixel slip shows.
             _k = CameraIntrinsics.FromVerticalFov(40, Width, Height, 0.031, -0.022);
             _views = new List<(string, Matrix4x4d)>();
@@ -42,11 +42,11 @@ namespace NerfDatasetCreator.Tests
             {
                 var azimuth = 2 * Math.PI * i / 10;
                 var eye = new Vector3d(4.5 * Math.Cos(azimuth) * Math.Cos(0.3), 4.5 * Math.Sin(azimuth) * Math.Cos(0.3), 4.5 * Math.Sin(0.3));
-                _views.Add((i < 7 ? "train" : i < 9 ? "val" : "test", AnalyticScene.LookAt(eye, new Vector3d(0.2, 0, 0))));
+                _views.Add((i < 7 ? "train" : i < 9 ? "val" : "test", SphereScene.LookAt(eye, new Vector3d(0.2, 0, 0))));
             }
-            _views.Add(("train", AnalyticScene.LookAt(new Vector3d(0.6, 0.4, 4.4), Vector3d.Zero)));
+            _views.Add(("train", SphereScene.LookAt(new Vector3d(0.6, 0.4, 4.4), Vector3d.Zero)));
             // Close to the big sphere, looking past it at the small one: much of the cloud is behind this camera.
-            _views.Add(("train", AnalyticScene.LookAt(new Vector3d(0, -1.15, 0.3), new Vector3d(1.45, -0.6, 0.3))));
+            _views.Add(("train", SphereScene.LookAt(new Vector3d(0, -1.15, 0.3), new Vector3d(1.45, -0.6, 0.3))));
             _cloud = _scene.Sample(Points, 25);
             _dataset = Path.Combine(_temp.Path, "spheres");
             _scene.WriteDataset(_dataset, _views, _k, _cloud, alterMask: (v, mask) =>
@@ -154,7 +154,7 @@ namespace NerfDatasetCreator.Tests
 
         static int Count(Dictionary<string, int> misses, string reason) => misses.TryGetValue(reason, out var n) ? n : 0;
 
-        AnalyticScene.Sphere NearestSphere(Vector3d p) =>
+        SphereScene.Sphere NearestSphere(Vector3d p) =>
             _scene.Spheres.OrderBy(s => Math.Abs(Vector3d.Distance(p, s.Centre) - s.Radius)).First();
 
         /// <summary>
@@ -177,7 +177,7 @@ namespace NerfDatasetCreator.Tests
             {
                 int i = i0 + (c & 1), j = j0 + (c >> 1);
                 if (_masks[view][j * Width + i] != 255) return "mask";
-                var ray = AnalyticScene.Ray(c2w, _k, i + 0.5, j + 0.5);
+                var ray = SphereScene.Ray(c2w, _k, i + 0.5, j + 0.5);
                 var trueDepth = _scene.DepthAt(c2w, _k, i + 0.5, j + 0.5);
                 var planeDepth = Vector3d.Dot(normal, toPoint) / Vector3d.Dot(normal, ray);
                 if (trueDepth == 0) return "background";

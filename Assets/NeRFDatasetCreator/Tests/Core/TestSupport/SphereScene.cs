@@ -15,7 +15,7 @@ namespace NerfDatasetCreator.Tests
     /// COLMAP code: the tests compare Core's tracks with this scene's own ray casts. Also used by
     /// Tests/Benchmarks (linked) for the tracks benchmark.
     /// </summary>
-    sealed class AnalyticScene
+    sealed class SphereScene
     {
         public readonly struct Sphere
         {
@@ -31,12 +31,12 @@ namespace NerfDatasetCreator.Tests
             public byte Blue { get; }
         }
 
-        public AnalyticScene(params Sphere[] spheres) => Spheres = spheres;
+        public SphereScene(params Sphere[] spheres) => Spheres = spheres;
 
         public Sphere[] Spheres { get; }
 
         /// <summary>Two objects, the small one hiding part of the big one from +x and hidden behind it from −x.</summary>
-        public static AnalyticScene TwoSpheres() => new AnalyticScene(
+        public static SphereScene TwoSpheres() => new SphereScene(
             new Sphere(new Vector3d(0, 0, 0), 1.0, 200, 60, 40),
             new Sphere(new Vector3d(1.45, 0.1, 0.3), 0.35, 40, 90, 220));
 
