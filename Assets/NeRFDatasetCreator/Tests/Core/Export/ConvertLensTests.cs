@@ -314,6 +314,33 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void Ngp_RefusesAnEquidistantFisheye_ItWouldReadAsAPinhole()
+        {
+            // read_lens switches to the fisheye only when some coefficient is non-zero.
+            WriteDataset(new JObject { ["camera_model"] = "OPENCV_FISHEYE" });
+            var e = Assert.Throws<InvalidParameterException>(() => DatasetConverter.Convert(_root, ExportTarget.Ngp));
+            Assert.That(e.Problems[0].Field, Is.EqualTo("camera_model"));
+            // nerfstudio and COLMAP hold it.
+            var json = JObject.Parse(File.ReadAllText(DatasetConverter.Convert(_root, ExportTarget.Nerfstudio).MainFile));
+            Assert.That((string)json["camera_model"], Is.EqualTo("OPENCV_FISHEYE"));
+            Assert.That((double)json["k1"], Is.EqualTo(0));
+        }
+
+        [Test]
+        public void APinholeDataset_KeepsItsPinholeFiles_WithoutLensKeys()
+        {
+            WriteDataset(new JObject());
+            var nerfstudio = JObject.Parse(File.ReadAllText(DatasetConverter.Convert(_root, ExportTarget.Nerfstudio).MainFile));
+            Assert.That((string)nerfstudio["camera_model"], Is.EqualTo("PINHOLE"));
+            var ngp = JObject.Parse(File.ReadAllText(DatasetConverter.Convert(_root, ExportTarget.Ngp).MainFile));
+            foreach (var key in TransformsLens.CoefficientKeys.Concat(new[] { "is_fisheye" }))
+            {
+                Assert.That(nerfstudio[key], Is.Null, key);
+                Assert.That(ngp[key], Is.Null, key);
+            }
+        }
+
+        [Test]
         public void ColmapDepths_AreRefused_For3dgsCannotReadTheCamera()
         {
             WriteDataset(OpenCvKeys());
