@@ -118,6 +118,42 @@ namespace NerfDatasetCreator
             yd = y * scale;
         }
 
+        /// <summary>
+        /// The Jacobian ∂(x_d, y_d)/∂(x, y) at the ideal point (x, y), row-major [[a, b], [c, d]]. OpenCV: the derivatives
+        /// nerfstudio's <c>_compute_residual_and_jacobian</c> writes out; fisheye: (x, y)·s(r) with s = θ_d/r has
+        /// J = s·I + (s′/r)·(x, y)ᵀ(x, y), s′ = (θ_d′(θ)/(1 + r²) − s)/r.
+        /// </summary>
+        public void Jacobian(double x, double y, out double a, out double b, out double c, out double d)
+        {
+            if (Model == LensModel.OpenCv)
+            {
+                var r2 = x * x + y * y;
+                var radial = 1 + r2 * (K1 + r2 * (K2 + r2 * K3));
+                var dr = K1 + r2 * (2 * K2 + r2 * 3 * K3);
+                a = radial + 2 * x * x * dr + 2 * P1 * y + 6 * P2 * x;
+                b = 2 * x * y * dr + 2 * P1 * x + 2 * P2 * y;
+                c = 2 * x * y * dr + 2 * P2 * y + 2 * P1 * x;
+                d = radial + 2 * y * y * dr + 2 * P2 * x + 6 * P1 * y;
+                return;
+            }
+            var r = Math.Sqrt(x * x + y * y);
+            if (!(r > 1e-8))
+            {
+                // s(r) = 1 − r²/3 + k1 r² + O(r⁴): J = I to within 1e-16 here.
+                a = d = 1; b = c = 0;
+                return;
+            }
+            var theta = Math.Atan(r);
+            var t2 = theta * theta;
+            var s = FisheyeAngle(theta) / r;
+            var dThetaD = 1 + t2 * (3 * K1 + t2 * (5 * K2 + t2 * (7 * K3 + t2 * 9 * K4)));
+            var sPrimeOverR = (dThetaD / (1 + r * r) - s) / (r * r);
+            a = s + sPrimeOverR * x * x;
+            b = sPrimeOverR * x * y;
+            c = b;
+            d = s + sPrimeOverR * y * y;
+        }
+
         /// <summary>θ_d = θ(1 + k1 θ² + k2 θ⁴ + k3 θ⁶ + k4 θ⁸).</summary>
         public double FisheyeAngle(double theta)
         {
@@ -144,12 +180,7 @@ namespace NerfDatasetCreator
                 var d = 1 + r2 * (K1 + r2 * (K2 + r2 * K3));
                 var fx = x * d + 2 * P1 * x * y + P2 * (r2 + 2 * x * x) - xd;
                 var fy = y * d + 2 * P2 * x * y + P1 * (r2 + 2 * y * y) - yd;
-                // ∂d/∂r² and the Jacobian of (fx, fy), as nerfstudio's _compute_residual_and_jacobian (k4 = 0 here).
-                var dr = K1 + r2 * (2 * K2 + r2 * 3 * K3);
-                var fxX = d + 2 * x * x * dr + 2 * P1 * y + 6 * P2 * x;
-                var fxY = 2 * x * y * dr + 2 * P1 * x + 2 * P2 * y;
-                var fyX = 2 * x * y * dr + 2 * P2 * y + 2 * P1 * x;
-                var fyY = d + 2 * y * y * dr + 2 * P2 * x + 6 * P1 * y;
+                Jacobian(x, y, out var fxX, out var fxY, out var fyX, out var fyY);
                 var det = fxX * fyY - fxY * fyX;
                 // A root where the lens has folded over is not the ray a camera images there: only the unfolded part,
                 // where the Jacobian keeps orientation and points outward (det > 0 and trace > 0), counts.

@@ -156,6 +156,23 @@ namespace NerfDatasetCreator.Tests
             Assert.That(LensDistortion.Fisheye(0, 0, 0, 0).Undistort(1.6, 0, out _, out _), Is.False);
         }
 
+        [TestCaseSource(nameof(Lenses))]
+        public void Jacobian_MatchesCentralDifferencesOfDistort(string name, LensDistortion lens)
+        {
+            const double h = 1e-5;
+            foreach (var (x, y) in new[] { (0.0, 0.0), (0.3, -0.2), (-0.7, 0.45), (0.9, 0.6), (1e-9, 0) })
+            {
+                lens.Jacobian(x, y, out var a, out var b, out var c, out var d);
+                lens.Distort(x + h, y, out var xp, out var yp);
+                lens.Distort(x - h, y, out var xm, out var ym);
+                lens.Distort(x, y + h, out var xq, out var yq);
+                lens.Distort(x, y - h, out var xr, out var yr);
+                Assert.That(new[] { a, b, c, d },
+                    Is.EqualTo(new[] { (xp - xm) / (2 * h), (xq - xr) / (2 * h), (yp - ym) / (2 * h), (yq - yr) / (2 * h) }).Within(1e-8),
+                    name + " at " + x + ", " + y);
+            }
+        }
+
         // ---- names, parameter lists, refusals ----------------------------------------------------------------------
 
         [Test]
