@@ -45,6 +45,8 @@ namespace NerfDatasetCreator
                 throw new InvalidParameterException(new[] { new ValidationProblem("--depths", ExportTargets.Name(target), "is for --to colmap (3DGS reads depth maps for COLMAP sources).", "Drop --depths, or convert to colmap.") });
             if (colmap != null && target != ExportTarget.Colmap)
                 throw new InvalidParameterException(new[] { new ValidationProblem("--binary, --points, --min-track", ExportTargets.Name(target), "shape the COLMAP model only.", "Drop them, or convert to colmap.") });
+            // A lens the target cannot hold is refused before anything is written (LensExports).
+            InvalidParameterException.ThrowIfAny(LensExports.Refusal(scene.Lens, target, depths));
             var output = OutputFolder(scene.RootDirectory, target, outDir);
             // Everything is written into a working folder inside the output and moved into place when complete (StagedOutput).
             var staged = StagedOutput.Begin(output, "convert");
@@ -153,18 +155,20 @@ namespace NerfDatasetCreator
                     "there is no point cloud, and 3DGS's COLMAP loader fails on an empty points3D file, so it holds the same uniform [−1.3, 1.3]³ cloud 3DGS would generate for the Blender layout (with empty tracks: random points are on no surface).",
                     "Export the target's surface point cloud from Unity for a better start."));
             }
-            var model = ColmapModelBuilder.Build(scene, names, points, surface, options, warnings);
+            // Tracks are projected with the pinhole model, so a distorted dataset gets none (LensExports.ColmapWarnings says so).
+            if (scene.Lens != null) warnings.AddRange(LensExports.ColmapWarnings(scene.Lens, surface));
+            var model = ColmapModelBuilder.Build(scene, names, points, surface && scene.Lens == null, options, warnings);
 
             foreach (var (from, to) in copies) staged.Copy(from, to);
             if (options.Binary)
             {
-                staged.WriteNew(cameras, s => ColmapBinaryWriter.WriteCameras(s, scene.Intrinsics));
+                staged.WriteNew(cameras, s => ColmapBinaryWriter.WriteCameras(s, scene.Intrinsics, scene.Lens));
                 staged.WriteNew(imagesFile, s => ColmapBinaryWriter.WriteImages(s, model));
                 staged.WriteNew(pointsFile, s => ColmapBinaryWriter.WritePoints3D(s, model));
             }
             else
             {
-                staged.WriteNewText(cameras, ColmapTextWriter.CamerasText(scene.Intrinsics));
+                staged.WriteNewText(cameras, ColmapTextWriter.CamerasText(scene.Intrinsics, scene.Lens));
                 staged.WriteNew(imagesFile, s => WriteText(s, w => ColmapTextWriter.WriteImages(w, model)));
                 staged.WriteNew(pointsFile, s => WriteText(s, w => ColmapTextWriter.WritePoints3D(w, model)));
             }

@@ -12,7 +12,7 @@ namespace NerfDatasetCreator
     {
         public ExportScene(string rootDirectory, CameraIntrinsics intrinsics, IEnumerable<ExportFrame> frames,
             string pointCloudPath = null, SceneNormalisation normalisation = null, double depthUnitScale = DefaultDepthUnitScale,
-            int? declaredAabbScale = null, double? targetReach = null, bool insideOut = false)
+            int? declaredAabbScale = null, double? targetReach = null, bool insideOut = false, LensDistortion lens = null)
         {
             RootDirectory = rootDirectory ?? throw new ArgumentNullException(nameof(rootDirectory));
             Intrinsics = intrinsics ?? throw new ArgumentNullException(nameof(intrinsics));
@@ -29,7 +29,14 @@ namespace NerfDatasetCreator
             DeclaredAabbScale = declaredAabbScale;
             TargetReach = targetReach;
             InsideOut = insideOut;
+            Lens = lens == null || lens.IsPinhole ? null : lens;
         }
+
+        /// <summary>
+        /// The lens distortion every image was taken through (<see cref="LensDistortion"/>, the same for all frames), or
+        /// null for an ideal pinhole. Exporters carry it or refuse (Documentation~/exports.md, "Lens distortion").
+        /// </summary>
+        public LensDistortion Lens { get; }
 
         /// <summary>Whether the dataset records itself as an inside-out environment capture (<see cref="InsideOutRecord"/>).</summary>
         public bool InsideOut { get; }

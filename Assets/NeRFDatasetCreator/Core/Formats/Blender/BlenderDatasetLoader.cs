@@ -16,7 +16,7 @@ namespace NerfDatasetCreator
     /// <c>&lt;image&gt;_depth_0000.png</c> (16-bit grey), <c>&lt;image&gt;_mask_0000.png</c> (8-bit grey), <c>points3d.ply</c>
     /// when dataset_config.json records it (<see cref="PointCloudOwnership"/>; any other is a warning),
     /// <c>scene_normalisation</c>; train's <c>aabb_scale</c> and the target's reach from <c>dataset_config.json</c>
-    /// (<see cref="DatasetTargetReach"/>) for instant-ngp's cube. (May later merge with the dataset module's transforms reader.)
+    /// (<see cref="DatasetTargetReach"/>) for instant-ngp's cube; the lens distortion (<see cref="TransformsLens"/>). (May later merge with the dataset module's transforms reader.)
     /// </summary>
     public static class BlenderDatasetLoader
     {
@@ -41,6 +41,8 @@ namespace NerfDatasetCreator
             int? aabbScale = null;
             PngInfo size = null;
             string sizeSource = null;
+            LensDistortion lens = null;
+            string lensSource = null;
             foreach (var split in DatasetSplits.Names)
             {
                 var jsonPath = Path.Combine(root, DatasetLayout.TransformsFileName(split));
@@ -70,6 +72,17 @@ namespace NerfDatasetCreator
                 if (json["w"] != null || json["h"] != null) declaredSizes.Add((split, json["w"], json["h"]));
                 if (normalisation == null && json["scene_normalisation"] != null) normalisation = SceneNormalisation.FromJson(json["scene_normalisation"]);
                 if (split == "train") aabbScale = AabbScale.Declared(json["aabb_scale"], Path.GetFileName(jsonPath), warnings);
+                // The lens (k1…k4, p1, p2, camera_model / is_fisheye): one for the whole dataset, carried by every export.
+                // A split without frames has no images, so its lens (or none) cannot contradict the others.
+                if (json["frames"] is JArray withFrames && withFrames.Count > 0)
+                {
+                    var splitLens = TransformsLens.Read(json, Path.GetFileName(jsonPath), problems);
+                    if (lensSource == null) { lens = splitLens; lensSource = Path.GetFileName(jsonPath); }
+                    else if (!TransformsLens.Same(lens, splitLens))
+                        problems.Add(new ValidationProblem(Path.GetFileName(jsonPath), TransformsLens.Describe(splitLens),
+                            "has another lens than " + lensSource + " (" + TransformsLens.Describe(lens) + "); convert writes one shared camera for the whole dataset.",
+                            "Write the same camera_model and k1…k4, p1, p2 in every split file."));
+                }
 
                 if (!(json["frames"] is JArray list))
                 {
@@ -134,7 +147,7 @@ namespace NerfDatasetCreator
             var isLink = File.Exists(plyPath) && PathSafety.IsLink(plyPath);
             var ply = !isLink && PointCloudOwnership.IsOwn(root, warnings) ? PointCloudFileName : null;
             return new ExportScene(root, intrinsics, frames, ply, normalisation,
-                declaredAabbScale: aabbScale, targetReach: DatasetTargetReach.Read(root, warnings), insideOut: InsideOutRecord.Read(root));
+                declaredAabbScale: aabbScale, targetReach: DatasetTargetReach.Read(root, warnings), insideOut: InsideOutRecord.Read(root), lens: lens);
         }
 
         /// <summary>The root-relative image path with extension, or null when neither the path nor path + ".png" exists.</summary>

@@ -24,16 +24,19 @@ namespace NerfDatasetCreator
         public const int PinholeModelId = 1;
 
         /// <summary>Each method writes one file's bytes into <paramref name="stream"/> and closes it.</summary>
-        public static void WriteCameras(Stream stream, CameraIntrinsics k)
+        public static void WriteCameras(Stream stream, CameraIntrinsics k) => WriteCameras(stream, k, null);
+
+        /// <summary>cameras.bin with <paramref name="lens"/>'s model id and parameters (<see cref="LensDistortion.ColmapParams"/>), or PINHOLE when it is null.</summary>
+        public static void WriteCameras(Stream stream, CameraIntrinsics k, LensDistortion lens)
         {
             using (var w = Writer(stream))
             {
                 w.Write((ulong)1);
                 w.Write((uint)1);
-                w.Write(PinholeModelId);
+                w.Write(lens == null ? PinholeModelId : lens.ColmapModelId);
                 w.Write((ulong)k.Width);
                 w.Write((ulong)k.Height);
-                w.Write(k.FlX); w.Write(k.FlY); w.Write(k.Cx); w.Write(k.Cy);
+                foreach (var p in lens == null ? new[] { k.FlX, k.FlY, k.Cx, k.Cy } : lens.ColmapParams(k)) w.Write(p);
             }
         }
 

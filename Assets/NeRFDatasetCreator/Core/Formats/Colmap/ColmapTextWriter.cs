@@ -38,14 +38,22 @@ namespace NerfDatasetCreator
             return names;
         }
 
-        public static string CamerasText(CameraIntrinsics k)
+        public static string CamerasText(CameraIntrinsics k) => CamerasText(k, null);
+
+        /// <summary>
+        /// cameras.txt with <paramref name="lens"/>'s model (OPENCV, FULL_OPENCV or OPENCV_FISHEYE and its parameters in
+        /// models.h's order, <see cref="LensDistortion.ColmapParams"/>), or PINHOLE when it is null.
+        /// </summary>
+        public static string CamerasText(CameraIntrinsics k, LensDistortion lens)
         {
             var sb = new StringBuilder();
             sb.Append("# Camera list with one line of data per camera:\n");
             sb.Append("#   CAMERA_ID, MODEL, WIDTH, HEIGHT, PARAMS[]\n");
             sb.Append("# Number of cameras: 1\n");
-            sb.Append("1 PINHOLE ").Append(I(k.Width)).Append(' ').Append(I(k.Height)).Append(' ')
-                .Append(R(k.FlX)).Append(' ').Append(R(k.FlY)).Append(' ').Append(R(k.Cx)).Append(' ').Append(R(k.Cy)).Append('\n');
+            var parameters = lens == null ? new[] { k.FlX, k.FlY, k.Cx, k.Cy } : lens.ColmapParams(k);
+            sb.Append("1 ").Append(lens == null ? "PINHOLE" : lens.ColmapModelName).Append(' ').Append(I(k.Width)).Append(' ').Append(I(k.Height));
+            foreach (var p in parameters) sb.Append(' ').Append(R(p));
+            sb.Append('\n');
             return sb.ToString(); // numbers went through R() and I(), both invariant
         }
 

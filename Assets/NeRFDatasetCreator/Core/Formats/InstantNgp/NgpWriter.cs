@@ -17,6 +17,44 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class NgpWriter
     {
+        /// <summary>
+        /// instant-ngp's lens keys (src/nerf_loader.cu <c>read_lens</c>): <c>is_fisheye</c> picks OpenCVFisheye, and each
+        /// of k1, k2, k3, k4 then p1, p2 is stored in <c>lens.params</c> at 0, 1, 2, 3, 2, 3 — p1 and p2 OVERWRITE k3 and k4,
+        /// and the lens stays a pinhole unless some coefficient is non-zero. So OPENCV writes k1 k2 p1 p2 (no k3: ngp's
+        /// OpenCV has none, <see cref="Refusal"/>), and a fisheye writes <c>is_fisheye</c> with k1…k4 and never p1/p2.
+        /// </summary>
+        public static void AddLens(JObject json, LensDistortion lens)
+        {
+            if (lens == null) return;
+            if (Refusal(lens) != null) throw new InvalidParameterException(new[] { Refusal(lens) });
+            json["k1"] = lens.K1;
+            json["k2"] = lens.K2;
+            if (lens.Model == LensModel.OpenCvFisheye)
+            {
+                json["is_fisheye"] = true;
+                json["k3"] = lens.K3;
+                json["k4"] = lens.K4;
+                return;
+            }
+            json["p1"] = lens.P1;
+            json["p2"] = lens.P2;
+        }
+
+        /// <summary>Why instant-ngp cannot hold <paramref name="lens"/>, or null when it can.</summary>
+        public static ValidationProblem Refusal(LensDistortion lens)
+        {
+            if (lens == null) return null;
+            if (lens.Model == LensModel.OpenCv && lens.K3 != 0)
+                return new ValidationProblem("k3", ValidationProblem.Format(lens.K3),
+                    "cannot be carried to instant-ngp: its OpenCV lens has only k1, k2, p1, p2 (nerf_loader.cu read_lens stores p1 where k3 would go).",
+                    "Convert to nerfstudio or colmap (FULL_OPENCV), which hold k3, or undistort the images first.");
+            if (lens.Model == LensModel.OpenCvFisheye && lens.K1 == 0 && lens.K2 == 0 && lens.K3 == 0 && lens.K4 == 0)
+                return new ValidationProblem("camera_model", "OPENCV_FISHEYE with k1 = k2 = k3 = k4 = 0",
+                    "cannot be carried to instant-ngp: it switches to its fisheye lens only when a coefficient is non-zero (nerf_loader.cu read_lens), so it would read a pinhole.",
+                    "Convert to nerfstudio or colmap (OPENCV_FISHEYE), or undistort the images first.");
+            return null;
+        }
+
         public const string FolderName = "ngp";
         public const string FileName = "transforms.json";
 
@@ -41,6 +79,7 @@ namespace NerfDatasetCreator
                 ["camera_angle_y"] = k.CameraAngleY,
             };
             ExportJson.AddPixelIntrinsics(json, k);
+            AddLens(json, scene.Lens);
             json["aabb_scale"] = sceneRadius.HasValue
                 ? AabbScale.ForRadius(sceneRadius.Value, warnings)
                 : AabbScale.ForDataset(scene.DeclaredAabbScale, scene.TargetReach, warnings);

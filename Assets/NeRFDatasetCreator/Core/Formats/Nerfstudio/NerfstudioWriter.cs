@@ -26,9 +26,10 @@ namespace NerfDatasetCreator
             var k = scene.Intrinsics;
             var json = new JObject
             {
-                ["camera_model"] = "PINHOLE",
+                ["camera_model"] = scene.Lens?.CameraModelName ?? "PINHOLE",
             };
             ExportJson.AddPixelIntrinsics(json, k);
+            AddLens(json, scene.Lens);
             json["applied_transform"] = ExportJson.Matrix3x4(Matrix4x4d.Identity);
             if (scene.PointCloudPath != null) json["ply_file_path"] = Rel(scene.PointCloudPath);
             if (scene.HasDepth) json["depth_unit_scale_factor"] = scene.DepthUnitScale;
@@ -53,6 +54,23 @@ namespace NerfDatasetCreator
             }
             json["frames"] = frames;
             return json;
+        }
+
+        /// <summary>
+        /// The lens keys nerfstudio-data reads at the top of transforms.json (nerfstudio_dataparser.py: any of k1, k2, k3,
+        /// p1, p2 makes the distortion shared; get_distortion_params(k1, k2, k3, k4, p1, p2)). OPENCV writes all six with
+        /// k4 = 0 (nerfstudio's k4 is an r⁸ term OpenCV does not have); OPENCV_FISHEYE writes k1…k4, as ns-process-data does.
+        /// </summary>
+        public static void AddLens(JObject json, LensDistortion lens)
+        {
+            if (lens == null) return;
+            json["k1"] = lens.K1;
+            json["k2"] = lens.K2;
+            json["k3"] = lens.K3;
+            json["k4"] = lens.K4;
+            if (lens.Model == LensModel.OpenCvFisheye) return;
+            json["p1"] = lens.P1;
+            json["p2"] = lens.P2;
         }
 
         /// <summary>Problems worth telling the user about before they train.</summary>

@@ -1,0 +1,48 @@
+using System.Collections.Generic;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Where a distorted dataset's lens can go. nerfstudio holds both models (camera_model + k1…k4, p1, p2);
+    /// instant-ngp holds OPENCV without k3 and a fisheye with some non-zero coefficient (<see cref="NgpWriter.Refusal"/>);
+    /// COLMAP holds all of them (OPENCV, FULL_OPENCV, OPENCV_FISHEYE) but 3DGS's COLMAP reader asserts PINHOLE or
+    /// SIMPLE_PINHOLE, so it warns; Dynamic 3D Gaussians' per-time-step files carry only a pinhole K and refuse.
+    /// Without this the images of a distorted dataset would be exported under a pinhole camera and no longer match
+    /// their rays.
+    /// </summary>
+    public static class LensExports
+    {
+        /// <summary>Why <paramref name="target"/> cannot take a dataset with <paramref name="lens"/>, or null when it can (always null for a pinhole).</summary>
+        public static ValidationProblem Refusal(LensDistortion lens, ExportTarget target, bool depths = false)
+        {
+            if (lens == null) return null;
+            switch (target)
+            {
+                case ExportTarget.Dynamic3dgs:
+                    return new ValidationProblem("--to", "dynamic3dgs",
+                        "cannot hold lens distortion: Dynamic 3D Gaussians' train_meta.json gives each camera a pinhole K only, and this dataset's images were taken through " + lens.Describe() + ".",
+                        "Undistort the images to a pinhole first, or convert to nerfstudio, ngp or colmap, which carry the lens.");
+                case ExportTarget.Ngp:
+                    return NgpWriter.Refusal(lens);
+                case ExportTarget.Colmap when depths:
+                    return new ValidationProblem("--depths", lens.ColmapModelName,
+                        "writes depth maps for 3DGS, whose COLMAP reader accepts only PINHOLE and SIMPLE_PINHOLE cameras, and this dataset's lens is " + lens.Describe() + ".",
+                        "Drop --depths (the model itself is written with its lens), or undistort the images first.");
+                default:
+                    return null;
+            }
+        }
+
+        /// <summary>What a COLMAP export of a distorted dataset tells the user: 3DGS refuses the model, and the tracks are left out.</summary>
+        public static IEnumerable<ValidationProblem> ColmapWarnings(LensDistortion lens, bool surface)
+        {
+            yield return new ValidationProblem("cameras", lens.ColmapModelName + " " + lens.Describe(),
+                "is the camera the images were taken through; COLMAP, nerfstudio (ns-process-data / colmap dataparser) and gsplat read it, but 3DGS's COLMAP reader (scene/dataset_readers.py readColmapCameras) accepts only PINHOLE and SIMPLE_PINHOLE and stops with \"Colmap camera model not handled\".",
+                "For 3DGS, undistort first (colmap image_undistorter --input_path sparse/0 --output_path <out>) and train on <out>.");
+            if (surface)
+                yield return new ValidationProblem("points3D tracks", "empty",
+                    "are left out for a distorted lens: they are computed with the pinhole projection, which is not where a distorted image shows the point.",
+                    "Train without gsplat's --depth_loss, or undistort the dataset first.");
+        }
+    }
+}
