@@ -13,6 +13,13 @@ namespace NerfDatasetCreator
     {
         public static string[] Validate(string datasetFolder) => new[] { ToolInvocation.ValidateCommand, Required(datasetFolder) };
 
+        /// <summary><c>check &lt;dataset&gt;</c>: decodes the images and checks that alpha, masks, depth, normals and poses agree.</summary>
+        public static string[] Check(string datasetFolder) => new[] { ToolInvocation.CheckCommand, Required(datasetFolder) };
+
+        /// <summary><c>evaluate &lt;dataset&gt; --renders &lt;folder&gt;</c> with the tool's defaults (test split, layout detected, white background).</summary>
+        public static string[] Evaluate(string datasetFolder, string rendersFolder) =>
+            new[] { ToolInvocation.EvaluateCommand, Required(datasetFolder), "--renders", Required(rendersFolder) };
+
         /// <summary><c>convert &lt;dataset&gt; --to &lt;target&gt; [--out &lt;folder&gt;] [--depths]</c>; an empty <paramref name="outputFolder"/> is the format's default place in the dataset.</summary>
         public static string[] Convert(string datasetFolder, ExportTarget target, string outputFolder = null, bool depths = false)
         {

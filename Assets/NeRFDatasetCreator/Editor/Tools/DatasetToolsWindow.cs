@@ -6,7 +6,7 @@ using UnityEngine;
 namespace NerfDatasetCreator.Editor
 {
     /// <summary>
-    /// Window ▸ NeRF Dataset Tools: the headless tool's validate, convert, merge and clean on any folder (datasets live
+    /// Window ▸ NeRF Dataset Tools: the headless tool's validate, check, convert, evaluate, merge and clean on any folder (datasets live
     /// outside Assets/, where the Project window's context menu does not reach), run in the editor by
     /// <see cref="DatasetToolRunner"/> with the tool's own messages and the equivalent terminal command.
     /// </summary>
@@ -14,6 +14,7 @@ namespace NerfDatasetCreator.Editor
     {
         [SerializeField] string datasetFolder = "";
         [SerializeField] string exportFolder = "";
+        [SerializeField] string rendersFolder = "";
         [SerializeField] string shardsFolder = "";
         [SerializeField] string mergedFolder = "";
         [SerializeField] bool moveFiles;
@@ -64,10 +65,18 @@ namespace NerfDatasetCreator.Editor
                 datasetFolder = FolderField("Dataset folder", datasetFolder, "A Blender-format dataset: a capture, a merged shard set, or nerf_synthetic.", f => datasetFolder = f);
                 using (new EditorGUI.DisabledScope(string.IsNullOrWhiteSpace(datasetFolder)))
                 {
+                    EditorGUILayout.BeginHorizontal();
                     if (GUILayout.Button(new GUIContent("Validate", "nerf-dataset validate: every problem a loader would trip on.")))
                         Run("validate", DatasetToolArguments.Validate(datasetFolder));
+                    if (GUILayout.Button(new GUIContent("Check", "nerf-dataset check: decodes the images and checks that alpha, masks, depth, normals, poses and point cloud agree (Documentation~/check.md).")))
+                        Run("check", DatasetToolArguments.Check(datasetFolder));
+                    EditorGUILayout.EndHorizontal();
                     exportFolder = FolderField("Export into", exportFolder, "Empty: the format's default folder inside the dataset (nerfstudio/, colmap/, ngp/, dynamic3dgs/). Nothing is ever overwritten.", f => exportFolder = f);
                     DrawExportButtons(datasetFolder, exportFolder);
+                    rendersFolder = FolderField("Trained renders", rendersFolder, "A trainer's renders of the test split: a 3DGS model folder, ns-render dataset output, instant-ngp screenshots or r_<i>.png files (Documentation~/evaluate.md).", f => rendersFolder = f);
+                    using (new EditorGUI.DisabledScope(string.IsNullOrWhiteSpace(rendersFolder)))
+                        if (GUILayout.Button(new GUIContent("Evaluate renders", "nerf-dataset evaluate: PSNR, SSIM, masked PSNR, depth and normal errors; writes metrics.json, error maps and report.html beside the renders.")))
+                            Run("evaluate", DatasetToolArguments.Evaluate(datasetFolder, rendersFolder));
                 }
 
                 EditorGUILayout.Space();

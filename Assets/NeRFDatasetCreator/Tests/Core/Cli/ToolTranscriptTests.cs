@@ -66,6 +66,8 @@ namespace NerfDatasetCreator.Tests
         [Test]
         public void ButtonsBuildTheCommandLinesAUserWouldType()
         {
+            Assert.That(DatasetToolArguments.Check("d"), Is.EqualTo(new[] { "check", "d" }));
+            Assert.That(DatasetToolArguments.Evaluate("d", "r"), Is.EqualTo(new[] { "evaluate", "d", "--renders", "r" }));
             Assert.That(DatasetToolArguments.Convert("d", ExportTarget.Colmap, null, depths: true), Is.EqualTo(new[] { "convert", "d", "--to", "colmap", "--depths" }));
             Assert.That(DatasetToolArguments.Convert("d", ExportTarget.Ngp, "out"), Is.EqualTo(new[] { "convert", "d", "--to", "ngp", "--out", "out" }));
             Assert.That(DatasetToolArguments.Convert("d", ExportTarget.Dynamic3dgs), Is.EqualTo(new[] { "convert", "d", "--to", "dynamic3dgs" }));
