@@ -25,8 +25,11 @@ namespace NerfDatasetCreator
         /// shuffle in .NET Standard 2.1's Vector API): lanes 0–3 of each block's slot hold ((K₀ + K₁) + K₂) + K₃ as the
         /// scalar path sums them (its leading +0 + K₀ is K₀ for K₀ ≥ +0). The sRGB encode's table lookups stay scalar.
         /// Groups with any other block, and the row's last pixels, go through <see cref="DifferenceMatting.TwoByTwoRun"/>.
+        /// Diagnostics as the scalar run counts them: a background group has nothing to count, a covered group's samples
+        /// are stray wherever the mask is 0, and the scalar run counts the rest.
         /// </summary>
-        internal static void ResolveTransparentLinearTwoByTwo(ushort[] black, ushort[] white, byte[] rgba, int width, int ow, int oh)
+        internal static void ResolveTransparentLinearTwoByTwo(ushort[] black, ushort[] white, byte[] rgba, int width, int ow, int oh,
+            byte[] mask, int maskBytes, ref int darker, ref int stray)
         {
             Span<ulong> blackWords = MemoryMarshal.Cast<ushort, ulong>(new Span<ushort>(black));
             Span<ulong> whiteWords = MemoryMarshal.Cast<ushort, ulong>(new Span<ushort>(white));
@@ -85,8 +88,17 @@ namespace NerfDatasetCreator
                                               | blackTop | blackBottom) & laneTops)
                                           | Vector.AsVectorUInt64(subnormal), Vector<ulong>.Zero))
                     {
-                        DifferenceMatting.TwoByTwoRun(black, white, blackWords, whiteWords, pixels, first, width, o, group);
+                        DifferenceMatting.TwoByTwoRun(black, white, blackWords, whiteWords, pixels, first, width, o, group, mask, maskBytes, ref darker, ref stray);
                         continue;
+                    }
+                    if (mask != null)
+                    {
+                        // Covered (W = K): every sample the mask leaves empty differs from the clear pair.
+                        for (int s = 0, top = first * maskBytes, bottom = below * maskBytes; s < samples; s++, top += maskBytes, bottom += maskBytes)
+                        {
+                            if (mask[top] == 0) stray++;
+                            if (mask[bottom] == 0) stray++;
+                        }
                     }
                     var topLater = new Vector<ulong>(blackWords.Slice(first + 1, samples)) & laterKeep;
                     var bottomLater = new Vector<ulong>(blackWords.Slice(below + 1, samples)) & laterKeep;
@@ -118,7 +130,8 @@ namespace NerfDatasetCreator
                         pixels[o + i] = pixel;
                     }
                 }
-                DifferenceMatting.TwoByTwoRun(black, white, blackWords, whiteWords, pixels, rowFirst + ox * 2, width, o, ow - ox);
+                DifferenceMatting.TwoByTwoRun(black, white, blackWords, whiteWords, pixels, rowFirst + ox * 2, width, o, ow - ox,
+                    mask, maskBytes, ref darker, ref stray);
             }
         }
     }
