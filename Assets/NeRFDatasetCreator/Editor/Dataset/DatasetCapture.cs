@@ -83,6 +83,12 @@ namespace NerfDatasetCreator.Editor
             {
                 problems.Add(new ValidationProblem("capture", CaptureEnvironment.RenderPipelineName, e.Message, ""));
             }
+            // URP renderer features run in both colour renders (review S3-1): Full Screen Pass is refused, unknown ones warned.
+            var features = UrpRendererFeatures.Read(out var rendererName);
+            if (features != null)
+                RendererFeatureCheck.Check(rendererName, features, settings.Background != null && settings.Background.Sky, problems, extraWarnings);
+            var occlusion = UrpRendererFeatures.GpuOcclusionCullingWarning();
+            if (occlusion != null) extraWarnings.Add(occlusion);
 
             var timeWarnings = new List<ValidationProblem>();
             var measured = TimeMeasurement.Measure(target, settings, MeasureTarget(target), timeWarnings);
@@ -196,6 +202,8 @@ namespace NerfDatasetCreator.Editor
             provenance.Statistics["seconds"] = summary.Seconds;
             provenance.Statistics["viewsPerSecond"] = summary.ViewsPerSecond;
             provenance.Statistics["clampedDepthPixels"] = files.ClampedDepthPixels;
+            files.Matting.WriteStatistics(provenance.Statistics);
+            summary.Matting = files.Matting.Total;
             IReadOnlyList<CloudPoint> cloud = null;
             try
             {
@@ -232,6 +240,9 @@ namespace NerfDatasetCreator.Editor
                 message += string.Format(CultureInfo.InvariantCulture,
                     " {0} depth pixels lay beyond 65.535 output units and were clamped in the 16-bit depth PNGs (the EXR files keep them).",
                     files.ClampedDepthPixels);
+            if (files.Matting.ViewsCounted > 0) message += " Matting: " + files.Matting.Total + ".";
+            var mattingWarning = files.Matting.Warning();
+            if (mattingWarning != null) Debug.LogWarning(mattingWarning);
             return new DatasetCaptureResult(true, false, session.FinalFolder, null, message, summary.Views, summary.ViewsPerSecond);
         }
 
@@ -302,9 +313,12 @@ namespace NerfDatasetCreator.Editor
         static CaptureOptions OptionsFor(DatasetSettings settings, Camera template)
         {
             var splits = DatasetSplits.All.Select(settings.Split).ToList();
-            // Alpha comes from the colour pair; the mask pass runs only for the mask images.
+            // Alpha comes from the colour pair. The mask pass runs for the mask images and, over a clear background, for
+            // the matting diagnostics: a sample outside the geometry must show the clear colours (MattingDiagnostics).
+            // A sky fills both halves, so there it runs only for the mask images.
             var passes = CapturePasses.Color;
-            if (splits.Any(s => s.Count > 0 && s.Mask)) passes |= CapturePasses.Mask;
+            var sky = settings.Background != null && settings.Background.Sky;
+            if (splits.Any(s => s.Count > 0 && s.Mask) || !sky) passes |= CapturePasses.Mask;
             if (splits.Any(s => s.Count > 0 && s.Depth != ExtraOutput.None)) passes |= CapturePasses.Depth;
             if (splits.Any(s => s.Count > 0 && s.Normal != ExtraOutput.None)) passes |= CapturePasses.Normal;
             return new CaptureOptions
