@@ -36,6 +36,29 @@ namespace NerfDatasetCreator.Editor
             ShardSpec shard = default, string datasetFolder = null)
         {
             if (settings == null) throw new ArgumentNullException(nameof(settings));
+            PrepareCalls++;
+            IsPreparing = true;
+            try
+            {
+                return PrepareNow(settings, target, projectRoot, shard, datasetFolder);
+            }
+            finally
+            {
+                IsPreparing = false;
+            }
+        }
+
+        /// <summary>
+        /// True while <see cref="Prepare"/> runs: its copies (time measurement, animated and Cinemachine cameras) may raise
+        /// hierarchy and object-change events, which the window must not take for the user's edits (review S3-2).
+        /// </summary>
+        public static bool IsPreparing { get; private set; }
+
+        /// <summary>How many times <see cref="Prepare"/> has run in this domain: the window's tests count its re-checks.</summary>
+        public static int PrepareCalls { get; private set; }
+
+        static PreparedCapture PrepareNow(DatasetSettings settings, GameObject target, string projectRoot, ShardSpec shard, string datasetFolder)
+        {
             settings = settings.Clone();
             VolumeSource.ClearCache(); // the preview may read the obstacles from a cache; a capture reads the scene now
             var problems = new List<ValidationProblem>();
