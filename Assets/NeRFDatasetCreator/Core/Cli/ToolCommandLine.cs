@@ -81,6 +81,7 @@ namespace NerfDatasetCreator
                 case ToolInvocation.MergeCommand: Merge(result, options, positionals); break;
                 case ToolInvocation.ConvertCommand: Convert(result, options, positionals); break;
                 case ToolInvocation.CleanCommand: Clean(result, options, positionals); break;
+                case ToolInvocation.CheckCommand: Check(result, options, positionals); break;
                 default:
                     result.Errors.Add("unknown command '" + command + "'.");
                     break;
@@ -156,6 +157,29 @@ namespace NerfDatasetCreator
             if (positionals.Count != 1) result.Errors.Add("clean needs exactly one folder: the one holding the datasets (e.g. NeRFDatasets) or a dataset.");
             else result.DatasetFolder = positionals[0];
             result.DryRun = options.ContainsKey(DryRunFlag);
+        }
+
+        static void Check(ToolInvocation result, Dictionary<string, string> options, List<string> positionals)
+        {
+            RefuseUnknownOptions(result, options, "split", "json", "max-views");
+            if (positionals.Count != 1) result.Errors.Add("check needs exactly one dataset folder.");
+            else result.DatasetFolder = positionals[0];
+            if (options.TryGetValue("split", out var split))
+            {
+                if (!System.Linq.Enumerable.Contains(DatasetSplits.Names, split)) result.Errors.Add("--split " + split + ": is not train, val or test.");
+                else result.Split = split;
+            }
+            if (options.TryGetValue("json", out var json))
+            {
+                if (string.IsNullOrWhiteSpace(json)) result.Errors.Add("--json is empty; name the report file to write, e.g. --json report.json.");
+                else result.JsonReport = json;
+            }
+            if (options.TryGetValue("max-views", out var max))
+            {
+                if (!int.TryParse(max, System.Globalization.NumberStyles.None, System.Globalization.CultureInfo.InvariantCulture, out var n) || n < 1)
+                    result.Errors.Add("--max-views " + max + ": is not a whole number of at least 1.");
+                else result.MaxViews = n;
+            }
         }
 
         static void RefuseUnknownOptions(ToolInvocation result, Dictionary<string, string> options, params string[] known)

@@ -10,6 +10,7 @@ namespace NerfDatasetCreator
         public const string MergeCommand = "merge";
         public const string ConvertCommand = "convert";
         public const string CleanCommand = "clean";
+        public const string CheckCommand = "check";
         public const string HelpCommand = "help";
 
         /// <summary>"plan", "validate", "merge", "convert", "clean" or "help".</summary>
@@ -42,6 +43,15 @@ namespace NerfDatasetCreator
         /// <summary><c>convert --to colmap --depths</c>: also write 3DGS's inverse-depth maps and depth_params.json.</summary>
         public bool Depths { get; internal set; }
 
+        /// <summary><c>check --split train|val|test</c>: only that split; null for all.</summary>
+        public string Split { get; internal set; }
+
+        /// <summary><c>check --json &lt;file&gt;</c>: where to write the whole report (a file that must not exist yet).</summary>
+        public string JsonReport { get; internal set; }
+
+        /// <summary><c>check --max-views N</c>: at most N views per split, spread evenly; 0 for all.</summary>
+        public int MaxViews { get; internal set; }
+
         /// <summary>Usage mistakes; the command runs only when this is empty.</summary>
         public List<string> Errors { get; } = new List<string>();
 
@@ -53,6 +63,7 @@ namespace NerfDatasetCreator
             "  merge --out <dir> [--files copy|move] <shard-dir>...    join the folders of a sharded capture\n" +
             "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs [--out <dir>] [--depths]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; dynamic3dgs: multi-view dynamic captures)\n" +
             "  clean <dir> [--dry-run]                                 finish or roll back interrupted runs, remove their leftover folders\n" +
+            "  check <dir> [--split S] [--json FILE] [--max-views N]   decode the images and check that alpha, masks, depth, normals, poses and point cloud agree\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
     }
 }

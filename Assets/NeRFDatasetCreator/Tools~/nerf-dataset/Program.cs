@@ -57,6 +57,7 @@ namespace NerfDatasetCreator.Tool
                 case ToolInvocation.MergeCommand: return MergeCommand.Run(invocation.ShardFolders, invocation.OutputFolder, invocation.MoveFiles, stdout, stderr);
                 case ToolInvocation.ConvertCommand: return ConvertCommand.Run(invocation.DatasetFolder, invocation.Target.Value, invocation.OutputFolder, stdout, stderr, invocation.Depths);
                 case ToolInvocation.CleanCommand: return CleanCommand.Run(invocation.DatasetFolder, invocation.DryRun, stdout, stderr);
+                case ToolInvocation.CheckCommand: return CheckCommand.Run(invocation, stdout, stderr);
                 default:
                     stdout.WriteLine(ToolInvocation.Usage);
                     return Success;

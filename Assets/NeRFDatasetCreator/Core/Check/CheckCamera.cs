@@ -1,0 +1,82 @@
+using System;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// A view's pinhole camera as the loaders read it: f = 0.5·W / tan(0.5·camera_angle_x) for both axes (square
+    /// pixels), principal point (cx, cy) in continuous pixels (top-left corner at 0, rows down), and the OpenGL camera
+    /// of <c>transform_matrix</c> (+X right, +Y up, looking along −Z). Pixel (u, v)'s centre is (u + ½, v + ½)
+    /// (conventions.md, Intrinsics). The matrix is held as plain doubles: these run per pixel.
+    /// </summary>
+    public sealed class CheckCamera
+    {
+        // Camera-to-world rotation (row-major) and centre.
+        readonly double r00, r01, r02, r10, r11, r12, r20, r21, r22, tx, ty, tz;
+
+        public CheckCamera(Matrix4x4d cameraToWorld, int width, int height, double focal, double cx, double cy)
+        {
+            CameraToWorld = cameraToWorld;
+            Width = width;
+            Height = height;
+            Focal = focal;
+            Cx = cx;
+            Cy = cy;
+            r00 = cameraToWorld[0, 0]; r01 = cameraToWorld[0, 1]; r02 = cameraToWorld[0, 2]; tx = cameraToWorld[0, 3];
+            r10 = cameraToWorld[1, 0]; r11 = cameraToWorld[1, 1]; r12 = cameraToWorld[1, 2]; ty = cameraToWorld[1, 3];
+            r20 = cameraToWorld[2, 0]; r21 = cameraToWorld[2, 1]; r22 = cameraToWorld[2, 2]; tz = cameraToWorld[2, 3];
+        }
+
+        public Matrix4x4d CameraToWorld { get; }
+        public int Width { get; }
+        public int Height { get; }
+        public double Focal { get; }
+        public double Cx { get; }
+        public double Cy { get; }
+
+        public Vector3d Centre => new Vector3d(tx, ty, tz);
+
+        /// <summary>The viewing direction in the world (the camera's −Z).</summary>
+        public Vector3d Forward => new Vector3d(-r02, -r12, -r22);
+
+        /// <summary>The world point on pixel (<paramref name="u"/>, <paramref name="v"/>) (continuous coordinates) at z-depth <paramref name="z"/>.</summary>
+        public void BackProject(double u, double v, double z, out double x, out double y, out double w)
+        {
+            double cxr = (u - Cx) / Focal * z, cyr = -(v - Cy) / Focal * z, czr = -z;
+            x = r00 * cxr + r01 * cyr + r02 * czr + tx;
+            y = r10 * cxr + r11 * cyr + r12 * czr + ty;
+            w = r20 * cxr + r21 * cyr + r22 * czr + tz;
+        }
+
+        /// <summary>
+        /// Projects a world point: continuous pixel coordinates and its z-depth (positive in front). False when the point
+        /// is not in front of the camera.
+        /// </summary>
+        public bool Project(double x, double y, double w, out double u, out double v, out double z)
+        {
+            double dx = x - tx, dy = y - ty, dz = w - tz;
+            // Camera coordinates: Rᵀ·(p − t).
+            double px = r00 * dx + r10 * dy + r20 * dz;
+            double py = r01 * dx + r11 * dy + r21 * dz;
+            double pz = r02 * dx + r12 * dy + r22 * dz;
+            z = -pz;
+            if (!(z > 0))
+            {
+                u = v = 0;
+                return false;
+            }
+            u = Focal * px / z + Cx;
+            v = -Focal * py / z + Cy;
+            return true;
+        }
+
+        /// <summary>A camera-frame direction turned into the world frame.</summary>
+        public void ToWorld(double x, double y, double z, out double wx, out double wy, out double wz)
+        {
+            wx = r00 * x + r01 * y + r02 * z;
+            wy = r10 * x + r11 * y + r12 * z;
+            wz = r20 * x + r21 * y + r22 * z;
+        }
+
+        public static double FocalOf(int width, double cameraAngleX) => 0.5 * width / Math.Tan(0.5 * cameraAngleX);
+    }
+}

@@ -1,0 +1,35 @@
+namespace NerfDatasetCreator
+{
+    /// <summary>One frame of a transforms file as the check sees it: its files (relative to the dataset, null when absent), camera and time.</summary>
+    public sealed class CheckView
+    {
+        public string Split;
+
+        /// <summary>The frame's index in its transforms file's <c>frames</c>.</summary>
+        public int Frame;
+
+        /// <summary>The colour image as <c>file_path</c> resolves (with ".png" appended when extensionless).</summary>
+        public string ColourFile;
+        public string DepthFile, NormalFile, MaskFile;
+
+        /// <summary>Set once the colour image's size is known.</summary>
+        public CheckCamera Camera;
+
+        public Matrix4x4d CameraToWorld;
+
+        /// <summary>The frame's <c>time</c> (dynamic datasets), or null.</summary>
+        public double? Time;
+
+        /// <summary>Output units per step of the depth PNG (<c>integer_depth_scale</c>).</summary>
+        public double DepthScale;
+
+        // The split's intrinsics keys, until the image size is known (CheckDatasetReader.Complete).
+        internal double PendingAngle;
+        internal double? PendingCx, PendingCy, PendingFlX;
+
+        /// <summary>Position in the checked list.</summary>
+        public int Number;
+
+        public string Name => "./" + Split + "/" + System.IO.Path.GetFileName(ColourFile);
+    }
+}

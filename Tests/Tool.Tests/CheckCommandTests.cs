@@ -1,0 +1,93 @@
+using System.IO;
+using System.Linq;
+using NerfDatasetCreator.Tests;
+using Newtonsoft.Json.Linq;
+using NUnit.Framework;
+
+namespace NerfDatasetCreator.Tool.Tests
+{
+    /// <summary><c>nerf-dataset check</c> on analytically rendered datasets: the summary, the problem lines, --json, exit codes.</summary>
+    [TestFixture]
+    public class CheckCommandTests
+    {
+        Scratch _scratch;
+        string _clean;
+
+        static readonly string[] Checks = { "dataset", "alpha vs mask", "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry" };
+
+        [OneTimeSetUp]
+        public void Render()
+        {
+            _scratch = new Scratch();
+            _clean = AnalyticDataset.Write(_scratch.Root, "clean", new AnalyticDataset.Options { Train = 6, Val = 2, Test = 2 });
+        }
+
+        [OneTimeTearDown] public void Delete() => _scratch.Dispose();
+
+        [Test]
+        public void CleanDatasetPrintsEveryCheckAndExitsZero()
+        {
+            var run = ToolRun.Of("check", _clean);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.ToString());
+            var lines = run.Out.Split('\n');
+            foreach (var check in Checks)
+                Assert.That(lines.Count(l => l.StartsWith("  " + check + ": ")), Is.EqualTo(1), check + "\n" + run);
+            Assert.That(lines.Where(l => l.StartsWith("  ") && !l.StartsWith("  dataset")).All(l => l.Contains("; threshold ") && l.EndsWith("; passed")), Is.True, run.ToString());
+            Assert.That(run.Out, Does.Not.Contain("problem:"));
+            Assert.That(run.Out.TrimEnd().Split('\n').Last(), Is.EqualTo("OK"));
+        }
+
+        [Test]
+        public void ShiftedColourPrintsOneLinePerProblemAndExitsOne()
+        {
+            var folder = DatasetFaults.Copy(_clean, _scratch.PathOf("shifted"));
+            DatasetFaults.EditImages(folder, DatasetFaults.IsColour, (png, s, _) => DatasetFaults.ShiftRight(png, s, 1));
+            var run = ToolRun.Of("check", folder);
+            Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
+            Assert.That(run.Out, Does.Contain("  colour vs geometry: "));
+            Assert.That(run.Out, Does.Contain("problem: ./train/r_0.png frame 0 [colour vs geometry]: the alpha's edges lie 1 px right of "), run.ToString());
+            Assert.That(run.Err, Does.StartWith("failed: "));
+        }
+
+        [Test]
+        public void JsonWritesTheWholeReportAndNeverReplacesAFile()
+        {
+            var json = _scratch.PathOf("report.json");
+            var run = ToolRun.Of("check", _clean, "--json", json, "--split", "train", "--max-views", "4");
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.ToString());
+            var report = JObject.Parse(File.ReadAllText(json));
+            Assert.That((bool)report["failed"], Is.False);
+            Assert.That((int)report["viewsChecked"], Is.EqualTo(4));
+            Assert.That(report["checks"].Select(c => (string)c["name"]), Is.EqualTo(Checks));
+            Assert.That(report["checks"].Single(c => (string)c["name"] == "multi-view geometry")["status"].ToString(), Is.EqualTo("passed"));
+
+            File.WriteAllText(json, "not ours");
+            var again = ToolRun.Of("check", _clean, "--json", json);
+            Assert.That(again.ExitCode, Is.EqualTo(1), again.ToString());
+            Assert.That(again.Err, Does.Contain("already exists"));
+            Assert.That(File.ReadAllText(json), Is.EqualTo("not ours"));
+        }
+
+        [TestCase("check")]
+        [TestCase("check", "a", "b")]
+        [TestCase("check", "DIR", "--split", "training")]
+        [TestCase("check", "DIR", "--max-views", "0")]
+        [TestCase("check", "DIR", "--max-views", "many")]
+        [TestCase("check", "DIR", "--frames", "3")]
+        public void UsageMistakesExitTwo(params string[] args)
+        {
+            var run = ToolRun.Of(args.Select(a => a == "DIR" ? _clean : a).ToArray());
+            Assert.That(run.ExitCode, Is.EqualTo(2), run.ToString());
+            Assert.That(run.Err, Does.StartWith("error: "));
+        }
+
+        [Test]
+        public void MissingFolderIsOneErrorLine()
+        {
+            var run = ToolRun.Of("check", _scratch.PathOf("nowhere"));
+            Assert.That(run.ExitCode, Is.EqualTo(1));
+            Assert.That(run.Err.Trim().Split('\n'), Has.Length.EqualTo(1));
+            Assert.That(run.Err, Does.StartWith("error: ").And.Contain("nowhere"));
+        }
+    }
+}
