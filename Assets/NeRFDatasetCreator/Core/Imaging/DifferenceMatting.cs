@@ -274,11 +274,16 @@ namespace NerfDatasetCreator
                     unpremultiply = 0.25f;
                     if (mask != null)
                     {
-                        // Covered: W = K, so each sample differs from the clear pair; stray where the mask is empty.
-                        if (mask[first * maskBytes] == 0) strayHere++;
-                        if (mask[(first + 1) * maskBytes] == 0) strayHere++;
-                        if (mask[below * maskBytes] == 0) strayHere++;
-                        if (mask[(below + 1) * maskBytes] == 0) strayHere++;
+                        // Covered: W = K, so each sample differs from the clear pair; stray where the mask is empty. One
+                        // branch for the usual all-covered block (255 & 255 & 255 & 255 ≠ 0); a zero AND counts byte by byte.
+                        int m0 = mask[first * maskBytes], m1 = mask[(first + 1) * maskBytes], m2 = mask[below * maskBytes], m3 = mask[(below + 1) * maskBytes];
+                        if ((m0 & m1 & m2 & m3) == 0)
+                        {
+                            if (m0 == 0) strayHere++;
+                            if (m1 == 0) strayHere++;
+                            if (m2 == 0) strayHere++;
+                            if (m3 == 0) strayHere++;
+                        }
                     }
                 }
                 else

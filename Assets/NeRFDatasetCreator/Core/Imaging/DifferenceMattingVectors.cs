@@ -93,12 +93,21 @@ namespace NerfDatasetCreator
                     }
                     if (mask != null)
                     {
-                        // Covered (W = K): every sample the mask leaves empty differs from the clear pair.
-                        for (int s = 0, top = first * maskBytes, bottom = below * maskBytes; s < samples; s++, top += maskBytes, bottom += maskBytes)
+                        // Covered (W = K): every sample the mask leaves empty differs from the clear pair. With a 1-byte
+                        // mask and 4 samples a row, two 32-bit reads and the zero-byte test ((x − 0x01010101) & ~x &
+                        // 0x80808080 is non-zero exactly when some byte is 0) skip the usual all-covered group.
+                        bool countBytes = maskBytes != 1 || samples != 4;
+                        if (!countBytes)
                         {
-                            if (mask[top] == 0) stray++;
-                            if (mask[bottom] == 0) stray++;
+                            uint top = BitConverter.ToUInt32(mask, first), bottom = BitConverter.ToUInt32(mask, below);
+                            countBytes = ((((top - 0x0101_0101u) & ~top) | ((bottom - 0x0101_0101u) & ~bottom)) & 0x8080_8080u) != 0;
                         }
+                        if (countBytes)
+                            for (int s = 0, t = first * maskBytes, u = below * maskBytes; s < samples; s++, t += maskBytes, u += maskBytes)
+                            {
+                                if (mask[t] == 0) stray++;
+                                if (mask[u] == 0) stray++;
+                            }
                     }
                     var topLater = new Vector<ulong>(blackWords.Slice(first + 1, samples)) & laterKeep;
                     var bottomLater = new Vector<ulong>(blackWords.Slice(below + 1, samples)) & laterKeep;

@@ -60,6 +60,7 @@ namespace NerfDatasetCreator.Editor
         static PreparedCapture PrepareNow(DatasetSettings settings, GameObject target, string projectRoot, ShardSpec shard, string datasetFolder)
         {
             settings = settings.Clone();
+            var given = settings.Clone();
             VolumeSource.ClearCache(); // the preview may read the obstacles from a cache; a capture reads the scene now
             var problems = new List<ValidationProblem>();
             var extraWarnings = new List<ValidationProblem>();
@@ -127,14 +128,21 @@ namespace NerfDatasetCreator.Editor
             // the user types, and copying a large model's arrays each time would make the editor stutter.
             var warnings = new List<ValidationProblem>(run.IsValid ? run.FullPlan.Warnings.Concat(timeWarnings) : Array.Empty<ValidationProblem>());
             warnings.AddRange(extraWarnings);
-            return new PreparedCapture(run, target, options, problems, warnings);
+            return new PreparedCapture(run, target, options, problems, warnings) { Settings = given, ProjectRoot = projectRoot };
         }
 
-        /// <summary>Captures and writes the whole dataset (or shard) before returning. Never throws for user or I/O errors.</summary>
+        /// <summary>
+        /// Captures and writes the whole dataset (or shard) before returning — after the preflight of a large capture
+        /// (<see cref="PreflightCapture"/>) — and checks it (<see cref="PostCaptureCheck"/>: the result's
+        /// <see cref="DatasetCaptureResult.Check"/>, <see cref="DatasetCheck.ReportFileName"/> in the dataset). Never throws
+        /// for user or I/O errors.
+        /// </summary>
         public static DatasetCaptureResult RunBlocking(PreparedCapture prepared, ICaptureProgress progress = null, string tool = "unity-editor")
         {
             if (!prepared.IsValid) return Refused(prepared.Problems);
             if (ActiveCapture.IsRunning) return Busy();
+            var preflight = PreflightCapture.Run(prepared);
+            if (preflight != null) return preflight;
             var unreadable = ReadSurface(prepared);
             if (unreadable != null) return unreadable;
             DatasetWriteSession session;
@@ -150,20 +158,46 @@ namespace NerfDatasetCreator.Editor
             var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode);
             using (var consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files)))
             {
+                DatasetCaptureResult result;
                 try
                 {
                     var summary = CaptureRunner.RunBlocking(prepared.Target, Poses(prepared), prepared.Options, consumer, progress);
-                    return Finish(prepared, session, files, summary, tool);
+                    result = Finish(prepared, session, files, summary, tool);
                 }
                 catch (Exception e)
                 {
                     return Failed(prepared, session, e, consumer.Written);
                 }
+                return result.Succeeded ? CheckBlocking(result) : result;
             }
+        }
+
+        /// <summary>The self-check of a finished dataset, blocking: a progress bar in the editor, log lines in batch mode.</summary>
+        static DatasetCaptureResult CheckBlocking(DatasetCaptureResult result)
+        {
+            var lastLog = DateTime.UtcNow;
+            var drawn = false;
+            var report = PostCaptureCheck.RunBlocking(result.DatasetFolder, (done, total) =>
+            {
+                if (Application.isBatchMode)
+                {
+                    if ((DateTime.UtcNow - lastLog).TotalSeconds < 2) return;
+                    lastLog = DateTime.UtcNow;
+                    Debug.Log(string.Format(CultureInfo.InvariantCulture, "NeRF Dataset Creator: checking the dataset: step {0} of {1}", done, total));
+                    return;
+                }
+                drawn = true;
+                UnityEditor.EditorUtility.DisplayProgressBar("NeRF Dataset Creator: checking the dataset", done + " of " + total, total > 0 ? (float)done / total : 0);
+            });
+            if (drawn) UnityEditor.EditorUtility.ClearProgressBar();
+            return result.WithCheck(report);
         }
 
         /// <summary>
         /// Starts the capture on editor updates (the editor stays usable; progress and Cancel in Background Tasks).
+        /// A large capture's preflight (<see cref="PreflightCapture"/>, a few seconds) runs first, blocking. After a
+        /// successful capture the dataset is checked off the main thread (<see cref="PostCaptureCheck"/>), and
+        /// <paramref name="done"/> gets the result once the check is in.
         /// <paramref name="done"/> runs on the main thread with the result, which is also logged to the Console (the
         /// run may outlive the window that started it, and Play mode, a script reload or quitting end it from inside
         /// that editor event: the log then says why and where the partial files are). Returns the session (its
@@ -172,7 +206,7 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         public static CaptureSession StartInBackground(PreparedCapture prepared, Action<DatasetCaptureResult> done, string tool = "unity-editor")
         {
-            var refused = !prepared.IsValid ? Refused(prepared.Problems) : ActiveCapture.IsRunning ? Busy() : ReadSurface(prepared);
+            var refused = !prepared.IsValid ? Refused(prepared.Problems) : ActiveCapture.IsRunning ? Busy() : PreflightCapture.Run(prepared) ?? ReadSurface(prepared);
             if (refused != null)
             {
                 Log(refused);
@@ -195,7 +229,18 @@ namespace NerfDatasetCreator.Editor
                         : Failed(prepared, session, error, written.Written);
                     written.Dispose();
                     Log(result);
-                    done?.Invoke(result);
+                    if (!result.Succeeded)
+                    {
+                        done?.Invoke(result);
+                        return;
+                    }
+                    // The self-check runs off the main thread; done gets the result once it is in.
+                    PostCaptureCheck.StartInBackground(result.DatasetFolder, report =>
+                    {
+                        var checkedResult = result.WithCheck(report);
+                        LogCheck(checkedResult);
+                        done?.Invoke(checkedResult);
+                    });
                 });
             }
             catch (Exception e)
@@ -209,10 +254,19 @@ namespace NerfDatasetCreator.Editor
             }
         }
 
+        /// <summary>The self-check's summary in the Console: information when it passed, an error when it found problems.</summary>
+        public static void LogCheck(DatasetCaptureResult result)
+        {
+            if (result.Check == null) return;
+            var text = "NeRF Dataset Creator: " + PostCaptureCheck.Summary(result.Check);
+            if (result.CheckFailed) Debug.LogError(text);
+            else Debug.Log(text);
+        }
+
         /// <summary>A result in the Console: information, a warning after a cancel or interruption, else an error.</summary>
         public static void Log(DatasetCaptureResult result)
         {
-            if (result.Succeeded) Debug.Log(result.Message);
+            if (result.Succeeded && !result.CheckFailed) Debug.Log(result.Message);
             else if (result.Cancelled) Debug.LogWarning(result.Message);
             else Debug.LogError(result.Message);
         }
