@@ -91,8 +91,12 @@ namespace NerfDatasetCreator.Editor.Tests
             Assert.That(report["checks"].Select(c => (string)c["name"]), Does.Contain("multi-view geometry").And.Contain("alpha vs mask"));
             Assert.That(OwnDataset.WhyNotOurs(result.DatasetFolder), Is.Null, "the report is one of the dataset's own files");
             var config = JObject.Parse(File.ReadAllText(Path.Combine(result.DatasetFolder, "dataset_config.json")));
-            Assert.That(config.SelectToken("statistics.mattingDarkerOverWhiteSamples")?.Value<double>(), Is.EqualTo(0), "a clean scene: " + result.Message);
-            Assert.That(config.SelectToken("statistics.mattingStrayBackgroundSamples")?.Value<double>(), Is.EqualTo(0), "a clean scene: " + result.Message);
+            // A clean scene: the two colour renders differ by the clear colour only (nothing animates, no full-screen
+            // feature), and background samples are the clear pair; the mask pass's edges may differ from the colour pass's
+            // by a sample where the engine rounds the two projections differently, never by 0.1 % of a view.
+            Assert.That(config.SelectToken("statistics.mattingDarkerOverWhiteSamples")?.Value<double>(), Is.EqualTo(0), result.Message);
+            Assert.That(config.SelectToken("statistics.mattingStrayBackgroundSamples"), Is.Not.Null, "the mask pass ran for the diagnostics");
+            Assert.That(config.SelectToken("statistics.mattingViewsAboveThreshold")?.Value<double>(), Is.EqualTo(0), result.Message);
         }
 
         [Test]
@@ -112,7 +116,8 @@ namespace NerfDatasetCreator.Editor.Tests
                 var result = DatasetCapture.RunBlocking(prepared, new SilentProgress());
 
                 Assert.That(result.Succeeded, Is.False, "the preflight stops the capture: " + result.Message);
-                Assert.That(result.Message, Does.Contain("preflight stopped the capture").And.Contain("alpha vs mask"));
+                Assert.That(result.Message, Does.Contain("preflight stopped the capture").And.Contain("[alpha vs mask]"),
+                    "a problem line of the alpha-vs-mask check names the fault");
                 Assert.That(Directory.Exists(prepared.DatasetFolder), Is.False, "nothing was captured");
                 Assert.That(Directory.GetDirectories(_project, "*", SearchOption.AllDirectories), Is.Empty, "no partial folder either");
                 Assert.That(PreflightFolders(), Is.EqualTo(before), "the calibration's temporary folder is deleted");
