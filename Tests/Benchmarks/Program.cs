@@ -10,7 +10,7 @@ namespace NerfDatasetCreator.Benchmarks
     /// Prints figures; asserts nothing. The same sources build for .NET (this project) and for Mono, the runtime
     /// Unity's editor runs (Tests/Benchmarks/run-all builds both, runs both and prints them side by side with
     /// Pillow's PNG encoder as an anchor).
-    /// Options: --only post|matting|png|view|plan (one section), --tsv FILE (figures as "key TAB value" lines for run-all),
+    /// Options: --only post|matting|png|view|plan|check (one section; check only when named: it renders a 300-view dataset once), --tsv FILE (figures as "key TAB value" lines for run-all),
     /// --dump DIR (the raw images the PNG figures use, for the Pillow anchor), --batches N.
     /// </summary>
     static class Program
@@ -23,6 +23,11 @@ namespace NerfDatasetCreator.Benchmarks
 
         static void Main(string[] args)
         {
+            if (Array.IndexOf(args, "--check-folder") >= 0)
+            {
+                Console.WriteLine(CheckBenchmark.Folder); // for run-all's Pillow decoding of the same files
+                return;
+            }
             string only = Option(args, "--only"), tsv = Option(args, "--tsv"), dump = Option(args, "--dump");
             if (Option(args, "--batches") != null) batches = int.Parse(Option(args, "--batches"), System.Globalization.CultureInfo.InvariantCulture);
             Console.WriteLine($"NeRF Dataset Creator benchmarks — {Environment.ProcessorCount} logical cores, {Runtime}, {System.Runtime.InteropServices.RuntimeInformation.OSDescription}");
@@ -35,6 +40,7 @@ namespace NerfDatasetCreator.Benchmarks
             if (only == null || only == "png") Png();
             if (only == null || only == "view") WholeView();
             if (only == null || only == "plan") TransformsBenchmark.Run(Record);
+            if (only == "check") CheckBenchmark.Run(Record, steps => Interleaved(false, steps));
 
             if (tsv != null)
                 using (var file = new StreamWriter(tsv))

@@ -55,6 +55,20 @@ for image, label in [("rgba", "RGBA render with grain"), ("rgba-clean", "RGBA re
     if f"png.{image}.huffman.mbs" in net and f"png.{image}.zlib6.mbs" in net:
         print(f"| PNG {label}: Huffman speed / level 6 speed | {net[f'png.{image}.huffman.mbs'] / net[f'png.{image}.zlib6.mbs']:.1f}× | "
               + (f"{mono[f'png.{image}.huffman.mbs'] / mono[f'png.{image}.zlib6.mbs']:.1f}×" if f"png.{image}.huffman.mbs" in mono else "—") + " |")
+row("check of 300 views 800×800 with depth, normals, masks (s CPU)", "check.cpu.s", "{:.1f}")
+row("  the same (s wall clock)", "check.wall.s", "{:.1f}")
+row("  of which reading + PNG decoding (s wall clock)", "check.decode.s", "{:.1f}")
+row("  reading + decoding all its PNGs once, alone (s CPU)", "check.decode.cpu.s", "{:.1f}")
+row("  ms CPU per view", "check.ms-per-view", "{:.0f}")
+for kind, label in [("rgba", "RGBA"), ("depth", "depth (gray 16)"), ("normal", "normals (RGB 8)"), ("mask", "mask (gray 8)")]:
+    k = f"check.png.{kind}"
+    if k + ".mbs" in net or k + ".mbs" in mono:
+        print(f"| PNG decode, check dataset {label} (MB/s) | {cell(net, k + '.mbs', '{:.0f}')} | {cell(mono, k + '.mbs', '{:.0f}')} |")
+    if k + ".pillow.mbs" in pillow:
+        print(f"| PNG decode, check dataset {label}, Pillow (MB/s) | {pillow[k + '.pillow.mbs']:.0f} (CPython) | |")
+        if k + ".mbs" in net:
+            print(f"| PNG decode {label}: PngReader / Pillow speed | {net[k + '.mbs'] / pillow[k + '.pillow.mbs']:.2f}× | "
+                  + (f"{mono[k + '.mbs'] / pillow[k + '.pillow.mbs']:.2f}×" if k + ".mbs" in mono else "—") + " |")
 row("whole view, 1 thread (ms CPU per view)", "view.1.ms", "{:.1f}")
 row("whole view, 1 thread (views/s per core)", "view.1.vps", "{:.1f}")
 row("PNG encoding's share of the whole view", "view.png-share", "{:.0%}")
