@@ -67,7 +67,14 @@ namespace NerfDatasetCreator.Editor
                 Volatile.Write(ref totalSteps, Math.Max(1, t));
                 Volatile.Write(ref doneSteps, d);
             }, CancellationToken.None));
-            while (!task.Wait(100)) progress?.Invoke(Volatile.Read(ref doneSteps), Volatile.Read(ref totalSteps));
+            try
+            {
+                while (!task.Wait(100)) progress?.Invoke(Volatile.Read(ref doneSteps), Volatile.Read(ref totalSteps));
+            }
+            catch (AggregateException)
+            {
+                // The check itself crashed: Result words it as a failed report.
+            }
             return Result(task, datasetFolder);
         }
 
