@@ -38,11 +38,11 @@ namespace NerfDatasetCreator.Benchmarks
             Console.WriteLine($"  views checked {report.ViewsChecked}, failed: {report.Failed} ({report.Problems.Count} problems)");
             foreach (var line in report.SummaryLines) Console.WriteLine("    " + line);
             // The decoding alone, in CPU time like the whole: every PNG the check's first pass reads, read and decoded once.
-            var files = Directory.GetFiles(folder, "*.png", SearchOption.AllDirectories);
+            var pngFiles = Directory.GetFiles(folder, "*.png", SearchOption.AllDirectories);
             var decodeCpu = Process.GetCurrentProcess().TotalProcessorTime;
-            foreach (var file in files) PngReader.Read(file);
+            foreach (var file in pngFiles) PngReader.Read(file);
             var decodeUsed = (Process.GetCurrentProcess().TotalProcessorTime - decodeCpu).TotalSeconds;
-            Console.WriteLine($"  reading + decoding its {files.Length} PNGs once (CPU)           {decodeUsed,7:F2}  ({100 * decodeUsed / used:F0} % of the check)");
+            Console.WriteLine($"  reading + decoding its {pngFiles.Length} PNGs once (CPU)           {decodeUsed,7:F2}  ({100 * decodeUsed / used:F0} % of the check)");
             record("check.decode.cpu.s", decodeUsed);
             record("check.cpu.s", used);
             record("check.wall.s", wall.Elapsed.TotalSeconds);
