@@ -20,7 +20,7 @@ namespace NerfDatasetCreator
         static readonly string[] RootFiles =
         {
             DatasetLayout.ConfigFileName, DatasetLayout.RigPreviewFileName, RigPreviewPicture.FileName, TargetPointCloud.FileName, ShardManifest.FileName,
-            NerfstudioWriter.FileName, OperationJournal.FileName, OperationJournal.FileName + ".tmp",
+            NerfstudioWriter.FileName, OperationJournal.FileName, OperationJournal.FileName + ".tmp", DatasetCheck.ReportFileName,
         };
         static readonly string[] ColmapSparseFiles = { "cameras.txt", "images.txt", "points3D.txt", "points3D.ply", "test.txt", GaussianSplattingDepths.ParamsFileName };
 

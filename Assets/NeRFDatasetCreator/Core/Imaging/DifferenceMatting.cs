@@ -30,8 +30,14 @@ namespace NerfDatasetCreator
         /// default): alpha = round(255·mean alpha), colour = Σ premultiplied / Σ alpha in linear light, clamped to [0, 1],
         /// sRGB-encoded; alpha 0 gives (0,0,0,0). Solid background B: each sample is composited exactly, per channel,
         /// as K + T·B — what rendering over B would have given, tinted glass included — averaged in linear light, alpha 255.
+        /// <para>
+        /// Returns the samples the matting model cannot explain (<see cref="MattingDiagnostics"/>): over white darker
+        /// than over black, and — when the frame has a <see cref="RawFrame.Mask"/> and <paramref name="checkBackground"/>
+        /// — samples outside the mask's geometry that are not exactly the clear colours. Pass false when the background
+        /// is not a clear (a skybox rendered into both halves). The bytes written do not depend on either.
+        /// </para>
         /// </summary>
-        public static void Resolve(RawFrame frame, byte[] rgba, Background background = default)
+        public static MattingDiagnostics Resolve(RawFrame frame, byte[] rgba, Background background = default, bool checkBackground = true)
         {
             var problems = frame.Validate();
             if (frame.ColorOverBlack == null && frame.ColorOverWhite == null)
@@ -44,15 +50,20 @@ namespace NerfDatasetCreator
             int k = frame.Supersampling, width = frame.Width;
             float inverseSamples = 1f / (k * k);
             ushort[] black = frame.ColorOverBlack, white = frame.ColorOverWhite;
+            byte[] mask = checkBackground ? frame.Mask : null;
+            int maskBytes = frame.MaskBytesPerPixel, darker = 0, stray = 0;
+            var diagnostics = new MattingDiagnostics { Samples = (long)width * frame.Height, BackgroundChecked = mask != null };
             if (!background.IsSolid && !frame.ColorIsGammaEncoded)
             {
                 // One RGBA half pixel is one 64-bit word on a little-endian machine (every Unity editor platform).
                 // Several blocks at a time where Vector<T> is accelerated (.NET); Mono, Unity's runtime, takes the scalar path.
                 if (k == 2 && System.BitConverter.IsLittleEndian && System.Numerics.Vector.IsHardwareAccelerated)
-                    DifferenceMattingVectors.ResolveTransparentLinearTwoByTwo(black, white, rgba, width, ow, oh);
-                else if (k == 2 && System.BitConverter.IsLittleEndian) ResolveTransparentLinearTwoByTwo(black, white, rgba, width, ow, oh);
-                else ResolveTransparentLinear(black, white, rgba, k, width, ow, oh);
-                return;
+                    DifferenceMattingVectors.ResolveTransparentLinearTwoByTwo(black, white, rgba, width, ow, oh, mask, maskBytes, ref darker, ref stray);
+                else if (k == 2 && System.BitConverter.IsLittleEndian) ResolveTransparentLinearTwoByTwo(black, white, rgba, width, ow, oh, mask, maskBytes, ref darker, ref stray);
+                else ResolveTransparentLinear(black, white, rgba, k, width, ow, oh, mask, maskBytes, ref darker, ref stray);
+                diagnostics.DarkerOverWhite = darker;
+                diagnostics.StrayBackground = stray;
+                return diagnostics;
             }
             float[] half = HalfFloat.Lookup;
             bool gamma = frame.ColorIsGammaEncoded;
@@ -75,6 +86,11 @@ namespace NerfDatasetCreator
                         {
                             float kr = half[black[c]], kg = half[black[c + 1]], kb = half[black[c + 2]];
                             float tr = half[white[c]] - kr, tg = half[white[c + 1]] - kg, tb = half[white[c + 2]] - kb;
+                            // Diagnostics (MattingDiagnostics): the same per-sample tests as SumSamples.
+                            if (tr < -MattingDiagnostics.DarkerTolerance || tg < -MattingDiagnostics.DarkerTolerance || tb < -MattingDiagnostics.DarkerTolerance) darker++;
+                            if (mask != null && mask[(c >> 2) * maskBytes] == 0
+                                && (black[c] != 0 || black[c + 1] != 0 || black[c + 2] != 0 || white[c] != WhiteHalf || white[c + 1] != WhiteHalf || white[c + 2] != WhiteHalf))
+                                stray++;
                             if (background.IsSolid)
                             {
                                 r += Linear(kr + tr * br, gamma);
@@ -124,7 +140,13 @@ namespace NerfDatasetCreator
                     rgba[o + 3] = alpha > 255 ? (byte)255 : (byte)alpha;
                 }
             }
+            diagnostics.DarkerOverWhite = darker;
+            diagnostics.StrayBackground = stray;
+            return diagnostics;
         }
+
+        /// <summary>The clear white, 1.0, as an IEEE half.</summary>
+        const ushort WhiteHalf = 0x3C00;
 
         /// <summary>
         /// The transparent-background, linear-light case of <see cref="Resolve"/> (a Linear project's capture), with
@@ -132,7 +154,8 @@ namespace NerfDatasetCreator
         /// inline small methods). k = 2 on a little-endian machine — the default capture — takes
         /// <see cref="ResolveTransparentLinearTwoByTwo"/> instead.
         /// </summary>
-        static void ResolveTransparentLinear(ushort[] black, ushort[] white, byte[] rgba, int k, int width, int ow, int oh)
+        static void ResolveTransparentLinear(ushort[] black, ushort[] white, byte[] rgba, int k, int width, int ow, int oh,
+            byte[] mask, int maskBytes, ref int darker, ref int stray)
         {
             float[] half = HalfFloat.Lookup;
             byte[] encodeTable = Srgb.EncodeBucketLookup;
@@ -146,7 +169,7 @@ namespace NerfDatasetCreator
                 {
                     int first = blockRow * width + ox * k;
                     float alphaSum = 0, r = 0, g = 0, b = 0;
-                    SumSamples(black, white, half, first, width, k, ref alphaSum, ref r, ref g, ref b);
+                    SumSamples(black, white, half, first, width, k, ref alphaSum, ref r, ref g, ref b, mask, maskBytes, ref darker, ref stray);
 
                     // round(255·mean alpha), halves up.
                     int alpha = (int)(alphaSum * inverseSamples * 255f + 0.5f);
@@ -185,14 +208,16 @@ namespace NerfDatasetCreator
         /// <see cref="ResolveTransparentLinear"/> for k = 2 (the default capture), with the same bytes, one output row
         /// at a time through <see cref="TwoByTwoRun"/>.
         /// </summary>
-        static void ResolveTransparentLinearTwoByTwo(ushort[] black, ushort[] white, byte[] rgba, int width, int ow, int oh)
+        static void ResolveTransparentLinearTwoByTwo(ushort[] black, ushort[] white, byte[] rgba, int width, int ow, int oh,
+            byte[] mask, int maskBytes, ref int darker, ref int stray)
         {
             System.Span<ulong> blackWords = System.Runtime.InteropServices.MemoryMarshal.Cast<ushort, ulong>(new System.Span<ushort>(black));
             System.Span<ulong> whiteWords = System.Runtime.InteropServices.MemoryMarshal.Cast<ushort, ulong>(new System.Span<ushort>(white));
             // One output pixel R, G, B, A is one little-endian 32-bit word.
             System.Span<uint> pixels = System.Runtime.InteropServices.MemoryMarshal.Cast<byte, uint>(new System.Span<byte>(rgba));
             for (int oy = 0; oy < oh; oy++)
-                TwoByTwoRun(black, white, blackWords, whiteWords, pixels, RowOrder.SourceBlockRow(oy, oh, 2) * width, width, oy * ow, ow);
+                TwoByTwoRun(black, white, blackWords, whiteWords, pixels, RowOrder.SourceBlockRow(oy, oh, 2) * width, width, oy * ow, ow,
+                    mask, maskBytes, ref darker, ref stray);
         }
 
         /// <summary>
@@ -202,11 +227,15 @@ namespace NerfDatasetCreator
         /// unsafe code), so the background test (black RGB all +0, white RGB all 1) and the fully covered test (equal
         /// RGB, no infinite or NaN lane, tested for three lanes at once) are 8 loads and a few ALU operations per block
         /// instead of 24 to 48 loads; the covered block's halves come from the words already read. Written out without
-        /// calls: Mono does not inline.
+        /// calls: Mono does not inline. Diagnostics: a background block has nothing to count; a covered block's
+        /// samples (W = K) are never darker and are stray wherever the mask is 0; other blocks count per sample in
+        /// <see cref="SumSamples"/>. Counts are kept in locals and added to <paramref name="darker"/> and
+        /// <paramref name="stray"/> once per run.
         /// </summary>
         internal static void TwoByTwoRun(ushort[] black, ushort[] white, System.Span<ulong> blackWords, System.Span<ulong> whiteWords,
-            System.Span<uint> pixels, int first, int width, int o, int count)
+            System.Span<uint> pixels, int first, int width, int o, int count, byte[] mask, int maskBytes, ref int darker, ref int stray)
         {
+            int darkerHere = 0, strayHere = 0;
             float[] half = HalfFloat.Lookup;
             byte[] encodeTable = Srgb.EncodeBucketLookup;
             float[] threshold = Srgb.EncodeThresholdLookup;
@@ -243,11 +272,24 @@ namespace NerfDatasetCreator
                     b += half[(int)(b3 >> 32) & 0xFFFF];
                     alpha = 255;
                     unpremultiply = 0.25f;
+                    if (mask != null)
+                    {
+                        // Covered: W = K, so each sample differs from the clear pair; stray where the mask is empty. One
+                        // branch for the usual all-covered block (255 & 255 & 255 & 255 ≠ 0); a zero AND counts byte by byte.
+                        int m0 = mask[first * maskBytes], m1 = mask[(first + 1) * maskBytes], m2 = mask[below * maskBytes], m3 = mask[(below + 1) * maskBytes];
+                        if ((m0 & m1 & m2 & m3) == 0)
+                        {
+                            if (m0 == 0) strayHere++;
+                            if (m1 == 0) strayHere++;
+                            if (m2 == 0) strayHere++;
+                            if (m3 == 0) strayHere++;
+                        }
+                    }
                 }
                 else
                 {
                     float alphaSum = 0;
-                    SumSamples(black, white, half, first, width, 2, ref alphaSum, ref r, ref g, ref b);
+                    SumSamples(black, white, half, first, width, 2, ref alphaSum, ref r, ref g, ref b, mask, maskBytes, ref darkerHere, ref strayHere);
                     // round(255·mean alpha), halves up.
                     int rounded = (int)(alphaSum * 0.25f * 255f + 0.5f);
                     if (rounded <= 0)
@@ -288,11 +330,17 @@ namespace NerfDatasetCreator
                 }
                 pixels[o] = pixel;
             }
+            darker += darkerHere;
+            stray += strayHere;
         }
 
-        /// <summary>The per-sample solve of <see cref="Resolve"/> (transparent, linear) over one k×k block, without calls.</summary>
+        /// <summary>
+        /// The per-sample solve of <see cref="Resolve"/> (transparent, linear) over one k×k block, without calls, and the
+        /// per-sample diagnostics: over white darker than over black by more than the tolerance in any channel; outside
+        /// the mask and not exactly the clear pair (black +0, white 1.0: the halves, bit for bit, as the block tests read them).
+        /// </summary>
         static void SumSamples(ushort[] black, ushort[] white, float[] half, int first, int width, int k,
-            ref float alphaSum, ref float r, ref float g, ref float b)
+            ref float alphaSum, ref float r, ref float g, ref float b, byte[] mask, int maskBytes, ref int darker, ref int stray)
         {
             float sa = alphaSum, sr = r, sg = g, sb = b;
             for (int dy = 0; dy < k; dy++)
@@ -302,6 +350,10 @@ namespace NerfDatasetCreator
                 {
                     float kr = half[black[c]], kg = half[black[c + 1]], kb = half[black[c + 2]];
                     float tr = half[white[c]] - kr, tg = half[white[c + 1]] - kg, tb = half[white[c + 2]] - kb;
+                    if (tr < -MattingDiagnostics.DarkerTolerance || tg < -MattingDiagnostics.DarkerTolerance || tb < -MattingDiagnostics.DarkerTolerance) darker++;
+                    if (mask != null && mask[(c >> 2) * maskBytes] == 0
+                        && (black[c] != 0 || black[c + 1] != 0 || black[c + 2] != 0 || white[c] != WhiteHalf || white[c + 1] != WhiteHalf || white[c + 2] != WhiteHalf))
+                        stray++;
                     float a = 1f - (tr + tg + tb) * (1f / 3f);
                     a = a > 1 ? 1 : a > 0 ? a : 0; // Clamp01
                     if (a <= 0) continue;

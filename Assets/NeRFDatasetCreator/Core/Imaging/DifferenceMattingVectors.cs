@@ -25,8 +25,11 @@ namespace NerfDatasetCreator
         /// shuffle in .NET Standard 2.1's Vector API): lanes 0–3 of each block's slot hold ((K₀ + K₁) + K₂) + K₃ as the
         /// scalar path sums them (its leading +0 + K₀ is K₀ for K₀ ≥ +0). The sRGB encode's table lookups stay scalar.
         /// Groups with any other block, and the row's last pixels, go through <see cref="DifferenceMatting.TwoByTwoRun"/>.
+        /// Diagnostics as the scalar run counts them: a background group has nothing to count, a covered group's samples
+        /// are stray wherever the mask is 0, and the scalar run counts the rest.
         /// </summary>
-        internal static void ResolveTransparentLinearTwoByTwo(ushort[] black, ushort[] white, byte[] rgba, int width, int ow, int oh)
+        internal static void ResolveTransparentLinearTwoByTwo(ushort[] black, ushort[] white, byte[] rgba, int width, int ow, int oh,
+            byte[] mask, int maskBytes, ref int darker, ref int stray)
         {
             Span<ulong> blackWords = MemoryMarshal.Cast<ushort, ulong>(new Span<ushort>(black));
             Span<ulong> whiteWords = MemoryMarshal.Cast<ushort, ulong>(new Span<ushort>(white));
@@ -85,8 +88,26 @@ namespace NerfDatasetCreator
                                               | blackTop | blackBottom) & laneTops)
                                           | Vector.AsVectorUInt64(subnormal), Vector<ulong>.Zero))
                     {
-                        DifferenceMatting.TwoByTwoRun(black, white, blackWords, whiteWords, pixels, first, width, o, group);
+                        DifferenceMatting.TwoByTwoRun(black, white, blackWords, whiteWords, pixels, first, width, o, group, mask, maskBytes, ref darker, ref stray);
                         continue;
+                    }
+                    if (mask != null)
+                    {
+                        // Covered (W = K): every sample the mask leaves empty differs from the clear pair. With a 1-byte
+                        // mask and 4 samples a row, two 32-bit reads and the zero-byte test ((x − 0x01010101) & ~x &
+                        // 0x80808080 is non-zero exactly when some byte is 0) skip the usual all-covered group.
+                        bool countBytes = maskBytes != 1 || samples != 4;
+                        if (!countBytes)
+                        {
+                            uint top = BitConverter.ToUInt32(mask, first), bottom = BitConverter.ToUInt32(mask, below);
+                            countBytes = ((((top - 0x0101_0101u) & ~top) | ((bottom - 0x0101_0101u) & ~bottom)) & 0x8080_8080u) != 0;
+                        }
+                        if (countBytes)
+                            for (int s = 0, t = first * maskBytes, u = below * maskBytes; s < samples; s++, t += maskBytes, u += maskBytes)
+                            {
+                                if (mask[t] == 0) stray++;
+                                if (mask[u] == 0) stray++;
+                            }
                     }
                     var topLater = new Vector<ulong>(blackWords.Slice(first + 1, samples)) & laterKeep;
                     var bottomLater = new Vector<ulong>(blackWords.Slice(below + 1, samples)) & laterKeep;
@@ -118,7 +139,8 @@ namespace NerfDatasetCreator
                         pixels[o + i] = pixel;
                     }
                 }
-                DifferenceMatting.TwoByTwoRun(black, white, blackWords, whiteWords, pixels, rowFirst + ox * 2, width, o, ow - ox);
+                DifferenceMatting.TwoByTwoRun(black, white, blackWords, whiteWords, pixels, rowFirst + ox * 2, width, o, ow - ox,
+                    mask, maskBytes, ref darker, ref stray);
             }
         }
     }

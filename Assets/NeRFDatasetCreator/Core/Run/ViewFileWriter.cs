@@ -20,6 +20,8 @@ namespace NerfDatasetCreator
         readonly Background _background;
         readonly ExrEncoder _encodeExr;
         readonly double _depthScale;
+        readonly bool _backgroundIsClear;
+        readonly MattingTally _matting = new MattingTally();
         readonly HashSet<string> _createdFolders = new HashSet<string>(StringComparer.Ordinal);
         int _clampedDepthPixels;
         long _writeTicks, _encodeTicks;
@@ -42,6 +44,8 @@ namespace NerfDatasetCreator
             _session = session ?? throw new ArgumentNullException(nameof(session));
             _background = BackgroundOf(plan.Settings);
             _depthScale = plan.Normalisation.Scale;
+            // A sky is rendered into both colour halves (no clear shows): nothing outside the geometry is "background".
+            _backgroundIsClear = plan.Settings.Background == null || !plan.Settings.Background.Sky;
             _encodeExr = encodeExr;
         }
 
@@ -50,6 +54,12 @@ namespace NerfDatasetCreator
 
         /// <summary>Depth pixels farther than a 16-bit PNG holds (65.535 output units), clamped so far: reported once per run.</summary>
         public int ClampedDepthPixels => Volatile.Read(ref _clampedDepthPixels);
+
+        /// <summary>
+        /// What the difference matting could not explain, summed over the views written so far, and the views above the
+        /// per-view threshold (<see cref="MattingDiagnostics"/>; Documentation~/capture.md, "Matting diagnostics").
+        /// </summary>
+        public MattingTally Matting => _matting;
 
         /// <summary>Views written so far, by all threads.</summary>
         public int ViewsWritten => Volatile.Read(ref _viewsWritten);
@@ -77,7 +87,7 @@ namespace NerfDatasetCreator
             if (colour.ColorOverBlack != null)
             {
                 // Alpha from the two colour renders; the mask file is the mask pass's geometry coverage (pixels.md §3).
-                DifferenceMatting.Resolve(colour, rgba, _background);
+                _matting.Add(view.Split, view.Index, DifferenceMatting.Resolve(colour, rgba, _background, _backgroundIsClear));
                 if (wantsMask) MaskEncoding.Encode(colour, mask);
             }
             else StraightAlpha.Resolve(colour, rgba, _background, mask);

@@ -102,6 +102,13 @@ namespace NerfDatasetCreator
         /// </summary>
         public double PointCloudRadius;
 
+        /// <summary>
+        /// Before a capture of more than <see cref="PreflightCheck.MinViews"/> views, the Unity capture renders a small
+        /// calibration capture (a handful of the plan's views at low resolution, into a temporary folder), checks it with
+        /// <c>nerf-dataset check</c>'s checks and stops with their words if it fails. On by default.
+        /// </summary>
+        public bool Preflight = true;
+
         /// <summary>Dynamic capture: what drives time, its range and steps, and how cameras meet it (static by default).</summary>
         public TimeSettings Time = new TimeSettings();
 

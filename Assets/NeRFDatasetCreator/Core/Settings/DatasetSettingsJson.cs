@@ -63,6 +63,12 @@ namespace NerfDatasetCreator
             w.WritePropertyName("pointCloudPoints"); w.WriteValue(s.PointCloudPoints);
             // Only when set, so object captures' configs keep their keys (0, the default, picks it from the volume boxes).
             if (s.PointCloudRadius != 0) Number(w, "pointCloudRadius", s.PointCloudRadius);
+            // Only when turned off, so existing configs keep their keys.
+            if (!s.Preflight)
+            {
+                w.WritePropertyName("preflight");
+                w.WriteValue(false);
+            }
             if (s.Time != null && s.Time.Enabled)
             {
                 w.WritePropertyName(TimeSettingsJson.Key);
@@ -263,6 +269,7 @@ namespace NerfDatasetCreator
                 ["normalisedTargetRadius"] = (t, p) => s.NormalisedTargetRadius = reader.Double(t, p),
                 ["pointCloudPoints"] = (t, p) => s.PointCloudPoints = reader.Int(t, p),
                 ["pointCloudRadius"] = (t, p) => s.PointCloudRadius = reader.Double(t, p),
+                ["preflight"] = (t, p) => s.Preflight = reader.Bool(t, p),
                 [TimeSettingsJson.Key] = (t, p) => TimeSettingsJson.Read(reader, t, p, s.Time),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),

@@ -12,7 +12,8 @@ namespace NerfDatasetCreator.Editor
     /// <summary>
     /// The batch-mode entry point:
     /// <c>Unity -batchmode -projectPath P -executeMethod NerfDatasetCreator.Editor.BatchCapture.Run -nerfConfig F
-    /// [-nerfScene S] [-nerfOut D] [-nerfShard i/N] -logFile -</c>. Exits 0 on success, 1 when the capture failed,
+    /// [-nerfScene S] [-nerfOut D] [-nerfShard i/N] -logFile -</c>. Exits 0 on success, 1 when the capture failed or its
+    /// preflight or self-check found problems,
     /// 2 when the arguments, config, scene or target are invalid (every problem printed), 3 without a graphics device.
     /// The capture runs to the end inside <see cref="Run"/>, which then exits Unity with its code: -quit is not needed.
     /// </summary>
@@ -91,9 +92,10 @@ namespace NerfDatasetCreator.Editor
             Debug.Log(Prefix + "capturing " + prepared.ViewCount + " views of '" + target.name + "'" +
                 (shard.Count > 1 ? " (shard " + shard.Index + "/" + shard.Count + ")" : "") + " into " + prepared.DatasetFolder);
             var result = DatasetCapture.RunBlocking(prepared, new LogProgress(), "unity-batch");
-            if (result.Succeeded) Debug.Log(result.Message);
+            // A written dataset whose self-check failed (check_report.json in it) is a failure too: its files would train a worse model.
+            if (result.Succeeded && !result.CheckFailed) Debug.Log(result.Message);
             else Debug.LogError(result.Message);
-            return result.Succeeded ? Success : Failure;
+            return result.Succeeded && !result.CheckFailed ? Success : Failure;
         }
 
         static int Refuse(string what, IEnumerable<ValidationProblem> problems)

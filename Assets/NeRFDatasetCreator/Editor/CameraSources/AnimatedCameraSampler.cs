@@ -35,6 +35,10 @@ namespace NerfDatasetCreator.Editor
 
         static readonly Dictionary<string, List<SceneCamera>> Cache = new Dictionary<string, List<SceneCamera>>();
         static readonly Dictionary<string, CinemachineCameraSampler.Result> CinemachineCache = new Dictionary<string, CinemachineCameraSampler.Result>();
+        // The last samples per key, kept when the caches are cleared: the window's 10 Hz preview draws these (marked
+        // stale) instead of sampling, which copies the camera's root or the whole scene (review S3-2).
+        static readonly Dictionary<string, (List<SceneCamera> Cameras, IReadOnlyList<ValidationProblem> Warnings)> Last =
+            new Dictionary<string, (List<SceneCamera>, IReadOnlyList<ValidationProblem>)>();
         static bool _listening;
 
         public static List<SceneCamera> Sample(CameraSourceSettings source, int width, int height, string field, out ValidationProblem problem) =>
@@ -62,12 +66,13 @@ namespace NerfDatasetCreator.Editor
             if (brain != null)
             {
                 Listen();
-                var cmKey = string.Join("|", camera.GetInstanceID(), source.Start, source.End, source.Samples, source.FrameStep, source.FrameRate, width, height);
+                var cmKey = Key(camera, source, width, height);
                 if (!CinemachineCache.TryGetValue(cmKey, out var sampledByBrain))
                 {
                     sampledByBrain = CinemachineCameraSampler.Sample(camera, brain, source, width, height, field, out problem);
                     if (problem != null) return null;
                     CinemachineCache[cmKey] = sampledByBrain;
+                    Last[cmKey] = (sampledByBrain.Cameras, sampledByBrain.Warnings);
                 }
                 warnings = sampledByBrain.Warnings;
                 return sampledByBrain.Cameras;
@@ -94,11 +99,39 @@ namespace NerfDatasetCreator.Editor
             }
 
             Listen();
-            var key = string.Join("|", camera.GetInstanceID(), source.Start, source.End, source.Samples, source.FrameStep, source.FrameRate, width, height);
+            var key = Key(camera, source, width, height);
             if (Cache.TryGetValue(key, out var cached)) return cached;
             var sampled = SampleOnCopy(camera, root, times, width, height, field, out problem);
-            if (problem == null) Cache[key] = sampled;
+            if (problem == null)
+            {
+                Cache[key] = sampled;
+                Last[key] = (sampled, Array.Empty<ValidationProblem>());
+            }
             return sampled;
+        }
+
+        static string Key(Camera camera, CameraSourceSettings source, int width, int height) =>
+            string.Join("|", camera.GetInstanceID(), source.Start, source.End, source.Samples, source.FrameStep, source.FrameRate, width, height);
+
+        /// <summary>
+        /// The samples the last <see cref="Sample"/> of this source produced, without sampling (no copy, no animation
+        /// step): for the window's preview, which runs ten times a second. <paramref name="stale"/> is true when the
+        /// scene changed since (the cache was cleared) or nothing was sampled yet (null is returned then).
+        /// </summary>
+        public static List<SceneCamera> LastSampled(CameraSourceSettings source, int width, int height, out bool stale,
+            out IReadOnlyList<ValidationProblem> warnings)
+        {
+            stale = true;
+            warnings = Array.Empty<ValidationProblem>();
+            if (string.IsNullOrWhiteSpace(source.ObjectPath)) return null;
+            var found = SceneObjects.Find(source.ObjectPath);
+            var camera = found == null ? null : found.GetComponent<Camera>();
+            if (camera == null) return null;
+            var key = Key(camera, source, width, height);
+            stale = !Cache.ContainsKey(key) && !CinemachineCache.ContainsKey(key);
+            if (!Last.TryGetValue(key, out var last)) return null;
+            warnings = last.Warnings;
+            return last.Cameras;
         }
 
         /// <summary>The camera's pose and field of view at each time, read from a posed copy. The user's objects are only read.</summary>

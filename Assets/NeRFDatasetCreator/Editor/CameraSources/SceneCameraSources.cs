@@ -13,9 +13,15 @@ namespace NerfDatasetCreator.Editor
     /// </summary>
     public static class SceneCameraSources
     {
-        /// <summary>Fills the scene sources of <paramref name="settings"/>, a copy the caller owns (its splits' sources are changed).</summary>
-        public static void Resolve(DatasetSettings settings, bool sampleAnimations = true)
+        /// <summary>
+        /// Fills the scene sources of <paramref name="settings"/>, a copy the caller owns (its splits' sources are changed).
+        /// With <paramref name="sampleAnimations"/> false (the window's 10 Hz preview) an animated camera is not sampled
+        /// — that copies its root or, for Cinemachine, the whole scene — but given the last samples of a check
+        /// (<see cref="AnimatedCameraSampler.LastSampled"/>); returns true when any of those is stale or missing.
+        /// </summary>
+        public static bool Resolve(DatasetSettings settings, bool sampleAnimations = true)
         {
+            var stale = false;
             foreach (var split in DatasetSplits.All)
             {
                 var source = settings.Split(split)?.Source;
@@ -33,7 +39,13 @@ namespace NerfDatasetCreator.Editor
                     source.SceneCameras = UnderParent(source.ObjectPath, settings.Width, settings.Height, field, out source.SceneProblem);
                 else if (sampleAnimations)
                     source.SceneCameras = AnimatedCameraSampler.Sample(source, settings.Width, settings.Height, field, out source.SceneProblem, out source.SceneWarnings);
+                else
+                {
+                    source.SceneCameras = AnimatedCameraSampler.LastSampled(source, settings.Width, settings.Height, out var old, out source.SceneWarnings);
+                    stale |= old;
+                }
             }
+            return stale;
         }
 
         /// <summary>

@@ -60,6 +60,7 @@ namespace NerfDatasetCreator.Editor.Capture
                     Neutralise(copy);
                     LodZero.Apply(source, copy);
                     RenderAsPosed(copy);
+                    if (options.Isolation == CaptureIsolation.WholeScene) DisableProbesWithoutCubemap(copy);
                 }
                 if (options.Isolation == CaptureIsolation.TargetOnly && options.CopySceneLights)
                     CopySceneLights(target);
@@ -158,9 +159,29 @@ namespace NerfDatasetCreator.Editor.Capture
         static void RenderAsPosed(GameObject copy)
         {
             foreach (var skinned in copy.GetComponentsInChildren<SkinnedMeshRenderer>(true))
+            {
                 skinned.forceMatrixRecalculationPerRender = true;
+                // Review S3-5: the data passes' DrawRenderer relies on the colour render having skinned this renderer
+                // for this view; with stale bounds it could be culled in colour while its geometry is in view, and the
+                // data passes would draw the previous view's skin. Skinning off-screen too keeps bounds and skin current
+                // (UCR 2022.3 GraphicsRenderers.bindings.cs:371, 6000.0 :383).
+                skinned.updateWhenOffscreen = true;
+            }
             foreach (var animator in copy.GetComponentsInChildren<Animator>(true))
                 animator.cullingMode = AnimatorCullingMode.AlwaysAnimate;
+        }
+
+        /// <summary>
+        /// Review S3-10: in whole-scene mode the copies bring the scene's reflection probes. A baked probe's cubemap
+        /// belongs to the scene's lighting data; a copy without one (<c>ReflectionProbe.texture</c> null, UCR 2022.3/6000.0
+        /// <c>Runtime/Export/Camera/ReflectionProbe.bindings.cs:60</c>) would still be picked for the renderers in its
+        /// volume and take away the default reflection that <see cref="SceneLighting"/> pins. Such copies are disabled
+        /// (only copies change); realtime and custom probes are left as they are.
+        /// </summary>
+        static void DisableProbesWithoutCubemap(GameObject copy)
+        {
+            foreach (var probe in copy.GetComponentsInChildren<ReflectionProbe>(true))
+                if (probe.mode == UnityEngine.Rendering.ReflectionProbeMode.Baked && probe.texture == null) probe.enabled = false;
         }
 
         /// <summary>
@@ -217,6 +238,18 @@ namespace NerfDatasetCreator.Editor.Capture
             to.cookie = from.cookie;
             to.cookieSize = from.cookieSize;
             to.renderMode = from.renderMode;
+            // Review S3-9: the Built-in pipeline's per-light shadow quality, the shadow-caster mode, the bounding-sphere
+            // override and (2022.3; obsolete in 6000 where Light.type carries it) the spot shape (UCR 2022.3
+            // Runtime/Export/Graphics/Light.bindings.cs:36 shadowResolution; GraphicsComponents.bindings.cs:82 shape,
+            // :92-93 bounding sphere, :96 shadowCustomResolution, :109 lightShadowCasterMode; 6000.0 :37, :96-97, :101, :115).
+            to.shadowResolution = from.shadowResolution;
+            to.shadowCustomResolution = from.shadowCustomResolution;
+            to.lightShadowCasterMode = from.lightShadowCasterMode;
+            to.useBoundingSphereOverride = from.useBoundingSphereOverride;
+            to.boundingSphereOverride = from.boundingSphereOverride;
+#if !UNITY_6000_0_OR_NEWER
+            to.shape = from.shape;
+#endif
             to.lightmapBakeType = LightmapBakeType.Realtime;
         }
 
@@ -262,6 +295,12 @@ namespace NerfDatasetCreator.Editor.Capture
             camera.orthographic = false;
             camera.rect = new Rect(0f, 0f, 1f, 1f);
             camera.allowDynamicResolution = false;
+            // Review S3-7: a template's per-layer cull distances (if CopyFrom carries them; native) would drop far objects
+            // from the colour pass while the data passes draw them. 0 = the far plane for every layer (UCR 2022.3
+            // Runtime/Export/Camera/Camera.bindings.cs:97-103, 6000.0 :112-118). Spherical culling is Built-in only and
+            // 6000's setter warns under a pipeline (:83-94), so it is reset only where it is on and there is none.
+            camera.layerCullDistances = new float[32];
+            if (camera.layerCullSpherical && UnityEngine.Rendering.GraphicsSettings.currentRenderPipeline == null) camera.layerCullSpherical = false;
             camera.ResetProjectionMatrix();
             camera.ResetWorldToCameraMatrix();
             camera.ResetCullingMatrix();

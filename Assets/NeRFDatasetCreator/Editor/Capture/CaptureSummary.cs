@@ -32,10 +32,18 @@ namespace NerfDatasetCreator.Editor.Capture
         public string GraphicsApi { get; }
         public int UnsupportedRenderers { get; }
 
+        /// <summary>
+        /// What the difference matting could not explain, summed over the capture's views (samples darker over white than
+        /// over black; samples outside the geometry that differ from the clear colour): set by the dataset layer once its
+        /// writers have finished (<see cref="ViewFileWriter.Matting"/>), default (no samples) for other consumers.
+        /// </summary>
+        public MattingDiagnostics Matting { get; internal set; }
+
         public override string ToString() => string.Format(CultureInfo.InvariantCulture,
             "NeRF Dataset Creator: {0} views in {1:0.0} s ({2:0.00} views/s); {3}, {4} colour space, {5}, {6} readback, Unity {7}{8}",
             Views, Seconds, ViewsPerSecond, RenderPipeline, ColorSpace, GraphicsApi, AsyncReadback ? "async" : "ReadPixels",
             UnityVersion, UnsupportedRenderers == 0 ? "" : string.Format(CultureInfo.InvariantCulture,
-                "; {0} non-mesh renderers left out of mask/depth/normal", UnsupportedRenderers));
+                "; {0} non-mesh renderers left out of mask/depth/normal", UnsupportedRenderers))
+            + (Matting.Samples > 0 ? "; matting: " + Matting : "");
     }
 }

@@ -36,7 +36,31 @@ namespace NerfDatasetCreator.Editor
             ShardSpec shard = default, string datasetFolder = null)
         {
             if (settings == null) throw new ArgumentNullException(nameof(settings));
+            PrepareCalls++;
+            IsPreparing = true;
+            try
+            {
+                return PrepareNow(settings, target, projectRoot, shard, datasetFolder);
+            }
+            finally
+            {
+                IsPreparing = false;
+            }
+        }
+
+        /// <summary>
+        /// True while <see cref="Prepare"/> runs: its copies (time measurement, animated and Cinemachine cameras) may raise
+        /// hierarchy and object-change events, which the window must not take for the user's edits (review S3-2).
+        /// </summary>
+        public static bool IsPreparing { get; private set; }
+
+        /// <summary>How many times <see cref="Prepare"/> has run in this domain: the window's tests count its re-checks.</summary>
+        public static int PrepareCalls { get; private set; }
+
+        static PreparedCapture PrepareNow(DatasetSettings settings, GameObject target, string projectRoot, ShardSpec shard, string datasetFolder)
+        {
             settings = settings.Clone();
+            var given = settings.Clone();
             VolumeSource.ClearCache(); // the preview may read the obstacles from a cache; a capture reads the scene now
             var problems = new List<ValidationProblem>();
             var extraWarnings = new List<ValidationProblem>();
@@ -83,6 +107,12 @@ namespace NerfDatasetCreator.Editor
             {
                 problems.Add(new ValidationProblem("capture", CaptureEnvironment.RenderPipelineName, e.Message, ""));
             }
+            // URP renderer features run in both colour renders (review S3-1): Full Screen Pass is refused, unknown ones warned.
+            var features = UrpRendererFeatures.Read(out var rendererName);
+            if (features != null)
+                RendererFeatureCheck.Check(rendererName, features, settings.Background != null && settings.Background.Sky, problems, extraWarnings);
+            var occlusion = UrpRendererFeatures.GpuOcclusionCullingWarning();
+            if (occlusion != null) extraWarnings.Add(occlusion);
 
             var timeWarnings = new List<ValidationProblem>();
             var measured = TimeMeasurement.Measure(target, settings, MeasureTarget(target), timeWarnings);
@@ -98,14 +128,21 @@ namespace NerfDatasetCreator.Editor
             // the user types, and copying a large model's arrays each time would make the editor stutter.
             var warnings = new List<ValidationProblem>(run.IsValid ? run.FullPlan.Warnings.Concat(timeWarnings) : Array.Empty<ValidationProblem>());
             warnings.AddRange(extraWarnings);
-            return new PreparedCapture(run, target, options, problems, warnings);
+            return new PreparedCapture(run, target, options, problems, warnings) { Settings = given, ProjectRoot = projectRoot };
         }
 
-        /// <summary>Captures and writes the whole dataset (or shard) before returning. Never throws for user or I/O errors.</summary>
+        /// <summary>
+        /// Captures and writes the whole dataset (or shard) before returning — after the preflight of a large capture
+        /// (<see cref="PreflightCapture"/>) — and checks it (<see cref="PostCaptureCheck"/>: the result's
+        /// <see cref="DatasetCaptureResult.Check"/>, <see cref="DatasetCheck.ReportFileName"/> in the dataset). Never throws
+        /// for user or I/O errors.
+        /// </summary>
         public static DatasetCaptureResult RunBlocking(PreparedCapture prepared, ICaptureProgress progress = null, string tool = "unity-editor")
         {
             if (!prepared.IsValid) return Refused(prepared.Problems);
             if (ActiveCapture.IsRunning) return Busy();
+            var preflight = PreflightCapture.Run(prepared);
+            if (preflight != null) return preflight;
             var unreadable = ReadSurface(prepared);
             if (unreadable != null) return unreadable;
             DatasetWriteSession session;
@@ -121,20 +158,46 @@ namespace NerfDatasetCreator.Editor
             var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode);
             using (var consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files)))
             {
+                DatasetCaptureResult result;
                 try
                 {
                     var summary = CaptureRunner.RunBlocking(prepared.Target, Poses(prepared), prepared.Options, consumer, progress);
-                    return Finish(prepared, session, files, summary, tool);
+                    result = Finish(prepared, session, files, summary, tool);
                 }
                 catch (Exception e)
                 {
                     return Failed(prepared, session, e, consumer.Written);
                 }
+                return result.Succeeded ? CheckBlocking(result) : result;
             }
+        }
+
+        /// <summary>The self-check of a finished dataset, blocking: a progress bar in the editor, log lines in batch mode.</summary>
+        static DatasetCaptureResult CheckBlocking(DatasetCaptureResult result)
+        {
+            var lastLog = DateTime.UtcNow;
+            var drawn = false;
+            var report = PostCaptureCheck.RunBlocking(result.DatasetFolder, (done, total) =>
+            {
+                if (Application.isBatchMode)
+                {
+                    if ((DateTime.UtcNow - lastLog).TotalSeconds < 2) return;
+                    lastLog = DateTime.UtcNow;
+                    Debug.Log(string.Format(CultureInfo.InvariantCulture, "NeRF Dataset Creator: checking the dataset: step {0} of {1}", done, total));
+                    return;
+                }
+                drawn = true;
+                UnityEditor.EditorUtility.DisplayProgressBar("NeRF Dataset Creator: checking the dataset", done + " of " + total, total > 0 ? (float)done / total : 0);
+            });
+            if (drawn) UnityEditor.EditorUtility.ClearProgressBar();
+            return result.WithCheck(report);
         }
 
         /// <summary>
         /// Starts the capture on editor updates (the editor stays usable; progress and Cancel in Background Tasks).
+        /// A large capture's preflight (<see cref="PreflightCapture"/>, a few seconds) runs first, blocking. After a
+        /// successful capture the dataset is checked off the main thread (<see cref="PostCaptureCheck"/>), and
+        /// <paramref name="done"/> gets the result once the check is in.
         /// <paramref name="done"/> runs on the main thread with the result, which is also logged to the Console (the
         /// run may outlive the window that started it, and Play mode, a script reload or quitting end it from inside
         /// that editor event: the log then says why and where the partial files are). Returns the session (its
@@ -143,7 +206,7 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         public static CaptureSession StartInBackground(PreparedCapture prepared, Action<DatasetCaptureResult> done, string tool = "unity-editor")
         {
-            var refused = !prepared.IsValid ? Refused(prepared.Problems) : ActiveCapture.IsRunning ? Busy() : ReadSurface(prepared);
+            var refused = !prepared.IsValid ? Refused(prepared.Problems) : ActiveCapture.IsRunning ? Busy() : PreflightCapture.Run(prepared) ?? ReadSurface(prepared);
             if (refused != null)
             {
                 Log(refused);
@@ -166,7 +229,18 @@ namespace NerfDatasetCreator.Editor
                         : Failed(prepared, session, error, written.Written);
                     written.Dispose();
                     Log(result);
-                    done?.Invoke(result);
+                    if (!result.Succeeded)
+                    {
+                        done?.Invoke(result);
+                        return;
+                    }
+                    // The self-check runs off the main thread; done gets the result once it is in.
+                    PostCaptureCheck.StartInBackground(result.DatasetFolder, report =>
+                    {
+                        var checkedResult = result.WithCheck(report);
+                        LogCheck(checkedResult);
+                        done?.Invoke(checkedResult);
+                    });
                 });
             }
             catch (Exception e)
@@ -180,10 +254,19 @@ namespace NerfDatasetCreator.Editor
             }
         }
 
+        /// <summary>The self-check's summary in the Console: information when it passed, an error when it found problems.</summary>
+        public static void LogCheck(DatasetCaptureResult result)
+        {
+            if (result.Check == null) return;
+            var text = "NeRF Dataset Creator: " + PostCaptureCheck.Summary(result.Check);
+            if (result.CheckFailed) Debug.LogError(text);
+            else Debug.Log(text);
+        }
+
         /// <summary>A result in the Console: information, a warning after a cancel or interruption, else an error.</summary>
         public static void Log(DatasetCaptureResult result)
         {
-            if (result.Succeeded) Debug.Log(result.Message);
+            if (result.Succeeded && !result.CheckFailed) Debug.Log(result.Message);
             else if (result.Cancelled) Debug.LogWarning(result.Message);
             else Debug.LogError(result.Message);
         }
@@ -196,6 +279,8 @@ namespace NerfDatasetCreator.Editor
             provenance.Statistics["seconds"] = summary.Seconds;
             provenance.Statistics["viewsPerSecond"] = summary.ViewsPerSecond;
             provenance.Statistics["clampedDepthPixels"] = files.ClampedDepthPixels;
+            files.Matting.WriteStatistics(provenance.Statistics);
+            summary.Matting = files.Matting.Total;
             IReadOnlyList<CloudPoint> cloud = null;
             try
             {
@@ -233,6 +318,9 @@ namespace NerfDatasetCreator.Editor
                 message += string.Format(CultureInfo.InvariantCulture,
                     " {0} depth pixels lay beyond 65.535 output units and were clamped in the 16-bit depth PNGs (the EXR files keep them).",
                     files.ClampedDepthPixels);
+            if (files.Matting.ViewsCounted > 0) message += " Matting: " + files.Matting.Total + ".";
+            var mattingWarning = files.Matting.Warning();
+            if (mattingWarning != null) Debug.LogWarning(mattingWarning);
             return new DatasetCaptureResult(true, false, session.FinalFolder, null, message, summary.Views, summary.ViewsPerSecond);
         }
 
@@ -315,9 +403,12 @@ namespace NerfDatasetCreator.Editor
         static CaptureOptions OptionsFor(DatasetSettings settings, Camera template)
         {
             var splits = DatasetSplits.All.Select(settings.Split).ToList();
-            // Alpha comes from the colour pair; the mask pass runs only for the mask images.
+            // Alpha comes from the colour pair. The mask pass runs for the mask images and, over a clear background, for
+            // the matting diagnostics: a sample outside the geometry must show the clear colours (MattingDiagnostics).
+            // A sky fills both halves, so there it runs only for the mask images.
             var passes = CapturePasses.Color;
-            if (splits.Any(s => s.Count > 0 && s.Mask)) passes |= CapturePasses.Mask;
+            var sky = settings.Background != null && settings.Background.Sky;
+            if (splits.Any(s => s.Count > 0 && s.Mask) || !sky) passes |= CapturePasses.Mask;
             if (splits.Any(s => s.Count > 0 && s.Depth != ExtraOutput.None)) passes |= CapturePasses.Depth;
             if (splits.Any(s => s.Count > 0 && s.Normal != ExtraOutput.None)) passes |= CapturePasses.Normal;
             return new CaptureOptions

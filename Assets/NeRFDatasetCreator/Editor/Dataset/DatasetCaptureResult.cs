@@ -28,6 +28,20 @@ namespace NerfDatasetCreator.Editor
         public int Views { get; }
         public double ViewsPerSecond { get; }
 
+        /// <summary>
+        /// The self-check of the finished dataset (<see cref="PostCaptureCheck"/>; also in the dataset as
+        /// <see cref="DatasetCheck.ReportFileName"/>), or null when the capture did not finish or was not checked.
+        /// </summary>
+        public DatasetCheckReport Check { get; private set; }
+
+        /// <summary>The dataset was written but its self-check found problems (batch mode then exits 1).</summary>
+        public bool CheckFailed => Check != null && Check.Failed;
+
+        /// <summary>This result with <paramref name="check"/> attached and its summary appended to the message.</summary>
+        internal DatasetCaptureResult WithCheck(DatasetCheckReport check) =>
+            new DatasetCaptureResult(Succeeded, Cancelled, DatasetFolder, PartialFolder,
+                Message + "\n" + PostCaptureCheck.Summary(check), Views, ViewsPerSecond) { Check = check };
+
         public override string ToString() => Message;
     }
 }

@@ -21,6 +21,10 @@ namespace NerfDatasetCreator.Editor
         internal GameObject Target { get; }
         internal CaptureOptions Options { get; }
 
+        /// <summary>What <see cref="DatasetCapture.Prepare"/> was given (a copy): the preflight prepares its calibration from them.</summary>
+        internal DatasetSettings Settings { get; set; }
+        internal string ProjectRoot { get; set; }
+
         /// <summary>
         /// The target's mesh surfaces (Unity world) for points3d.ply, read when the run starts; null when this run writes
         /// none or has not started.

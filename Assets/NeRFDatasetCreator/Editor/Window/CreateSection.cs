@@ -33,6 +33,8 @@ namespace NerfDatasetCreator.Editor
                 return foreground;
             }
 
+            if (PostCaptureCheck.IsRunning)
+                EditorGUILayout.LabelField("Checking the dataset just written (progress in Background Tasks)…", EditorStyles.wordWrappedMiniLabel);
             foreground = EditorGUILayout.Popup(RunLabel, foreground ? 1 : 0, RunModes) == 1;
 
             var first = c.Problems.FirstIncompleteStep();
@@ -45,7 +47,7 @@ namespace NerfDatasetCreator.Editor
 
             var result = capture.LastResult;
             if (result == null) return foreground;
-            var type = result.Succeeded ? MessageType.Info : result.Cancelled ? MessageType.Warning : MessageType.Error;
+            var type = result.Succeeded ? (result.CheckFailed ? MessageType.Warning : MessageType.Info) : result.Cancelled ? MessageType.Warning : MessageType.Error;
             EditorGUILayout.HelpBox(result.Message, type);
             var folder = result.Succeeded ? result.DatasetFolder : result.PartialFolder;
             if (!string.IsNullOrEmpty(folder) && Directory.Exists(folder) && GUILayout.Button(RevealLabel(result.Succeeded)))

@@ -31,9 +31,13 @@ namespace NerfDatasetCreator.Editor
         FieldProblems problems = FieldProblems.None;
         TargetInfo targetInfo;
         string pickNotice;
-        string checkedKey;
-        bool checkNeeded = true;
+        string seenKey;
+        // Re-checks run half a second after the last change, never at the 10 Hz tick, and ignore the scene events of
+        // their own copies (review S3-2; Core RecheckSchedule).
+        readonly RecheckSchedule recheck = new RecheckSchedule();
         double lastTick;
+
+        static double Now => EditorApplication.timeSinceStartup;
 
         /// <summary>How often the window follows the target and re-checks: Unity's own inspector rate (10 per second).</summary>
         const double TickSeconds = 0.1;
@@ -63,7 +67,7 @@ namespace NerfDatasetCreator.Editor
             EditorApplication.hierarchyChanged += OnHierarchyChanged;
             EditorApplication.update += OnEditorUpdate;
             FollowSceneObjects();
-            checkNeeded = true;
+            recheck.Changed(Now);
         }
 
         void OnDisable()
@@ -78,12 +82,14 @@ namespace NerfDatasetCreator.Editor
         }
 
         // The disk may have changed while the window was in the background (a dataset deleted or created).
-        void OnFocus() => checkNeeded = true;
+        void OnFocus() => recheck.Changed(Now);
 
         void OnHierarchyChanged()
         {
+            // A check's own preview-scene copies may raise this (synchronously or on the next update): not an edit.
+            if (DatasetCapture.IsPreparing) return;
             FollowSceneObjects();
-            checkNeeded = true;
+            recheck.SceneChanged(Now);
         }
 
         void OnUndoRedo()
@@ -91,13 +97,13 @@ namespace NerfDatasetCreator.Editor
             // Raised for every undo and redo in the editor; only one that changed the plugin's settings is saved.
             Store.SaveIfChanged();
             ResolveSceneObjects();
-            checkNeeded = true;
+            recheck.Changed(Now);
             Repaint();
         }
 
         /// <summary>
-        /// Ten times a second: follows the target's transform and size, rebuilds the preview when the plan changed,
-        /// and re-validates when anything validation reads changed.
+        /// Ten times a second: follows the target's transform and size, rebuilds the preview when the plan changed, and
+        /// re-validates half a second after anything validation reads stopped changing.
         /// </summary>
         void OnEditorUpdate()
         {
@@ -114,7 +120,12 @@ namespace NerfDatasetCreator.Editor
                 return;
             }
             var key = CheckKey(settings);
-            if (checkNeeded || key != checkedKey) Check(settings, key);
+            if (key != seenKey)
+            {
+                seenKey = key;
+                recheck.Changed(now);
+            }
+            if (recheck.Due(now)) Check(settings);
         }
 
         string CheckKey(DatasetSettings settings)
@@ -125,10 +136,9 @@ namespace NerfDatasetCreator.Editor
         }
 
         /// <summary>Runs the capture's own checks (settings, output folder, target, environment) so the window shows exactly what Create would refuse.</summary>
-        void Check(DatasetSettings settings, string key)
+        void Check(DatasetSettings settings)
         {
-            checkedKey = key;
-            checkNeeded = false;
+            recheck.Starting();
             var warnings = new List<ValidationProblem>();
             List<ValidationProblem> errors;
             try
@@ -140,6 +150,10 @@ namespace NerfDatasetCreator.Editor
             catch (Exception e)
             {
                 errors = new List<ValidationProblem> { new ValidationProblem("capture", e.GetType().Name, e.Message, "Report this with the console log.") };
+            }
+            finally
+            {
+                recheck.Finished(Now);
             }
             var targetPath = SceneObjectPath.Check(WindowFields.Target, target);
             if (targetPath != null) warnings.Add(targetPath);
@@ -191,7 +205,7 @@ namespace NerfDatasetCreator.Editor
         {
             if (DatasetSettingsJson.Write(edited) == DatasetSettingsJson.Write(Store.Settings)) return;
             Store.Apply(edited, undoName);
-            checkNeeded = true;
+            recheck.Changed(Now);
             Repaint();
         }
 

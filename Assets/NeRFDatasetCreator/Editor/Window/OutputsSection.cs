@@ -29,6 +29,10 @@ namespace NerfDatasetCreator.Editor
                 }
             }
             DrawScene(c);
+            // "preflight" in config files (Documentation~/settings.md).
+            c.Settings.Preflight = EditorGUILayout.Toggle(new GUIContent("Preflight check",
+                "Before a capture of more than " + PreflightCheck.MinViews + " views, capture about " + PreflightCheck.Views +
+                " of its views at low resolution into a temporary folder, check them and stop if the check fails."), c.Settings.Preflight);
         }
 
         /// <summary>Scale and centring of the output world, and the initial point cloud for Gaussian Splatting.</summary>

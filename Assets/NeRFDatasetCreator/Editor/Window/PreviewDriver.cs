@@ -13,6 +13,8 @@ namespace NerfDatasetCreator.Editor
     sealed class PreviewDriver : IDisposable
     {
         readonly RigPreview _preview = new RigPreview();
+        const string StaleNote = "The animated camera's poses are from the window's last check; they follow half a second after the scene stops changing.";
+
         PreviewPlanKey _key;
         Bounds _bounds;
         bool _enabled;
@@ -61,10 +63,16 @@ namespace NerfDatasetCreator.Editor
                 return;
             }
             settings = settings.Clone();
-            SceneCameraSources.Resolve(settings); // moving a scene camera changes the key (PreviewPlanKey)
+            // Moving a scene camera changes the key (PreviewPlanKey). Animated cameras are never sampled here (ten times a
+            // second): the rig shows the window's last check's samples, marked stale until the next check (review S3-2).
+            var stale = SceneCameraSources.Resolve(settings, sampleAnimations: false);
             var key = PreviewPlanKey.Of(settings, target.Measure);
             // The plan ignores the target's rotation, but its renderers' box turns with it: compare that too.
-            if (key.Equals(_key) && target.Bounds == _bounds) return;
+            if (key.Equals(_key) && target.Bounds == _bounds)
+            {
+                if (Status.Length == 0 || Status == StaleNote) Status = stale ? StaleNote : "";
+                return;
+            }
             _key = key;
             _bounds = target.Bounds;
 
@@ -83,7 +91,7 @@ namespace NerfDatasetCreator.Editor
             _preview.SetPlan(poses[0], poses[1], poses[2], plan.Settings.Camera.VerticalFovDegrees, (double)plan.Settings.Width / plan.Settings.Height,
                 new Vector3d(bounds.center.x, bounds.center.y, bounds.center.z), new Vector3d(bounds.size.x, bounds.size.y, bounds.size.z),
                 CameraSourcePlanning.AnyFormation(plan.Settings) ? plan.Distance : 0, VolumePlanning.Boxes(plan));
-            Status = "";
+            Status = stale ? StaleNote : "";
         }
 
         void Clear(string status)

@@ -1,0 +1,119 @@
+using System;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Threading;
+using System.Threading.Tasks;
+using UnityEditor;
+
+namespace NerfDatasetCreator.Editor
+{
+    /// <summary>
+    /// The self-check after every capture (issue 21): Core's <see cref="DatasetCheck.Run"/> — the checks of
+    /// <c>nerf-dataset check</c> — on the dataset just written, on a worker thread (it only reads files), with its
+    /// report written into the dataset as <see cref="DatasetCheck.ReportFileName"/>. Progress goes to Unity's Background
+    /// Tasks: <c>Progress.Start/Report/Finish</c> are bound thread-safe (UnityCsReference 2022.3 and 6000.0
+    /// <c>Editor/Mono/Progress/Progress.bindings.cs:99-102, 126-150</c>), so the worker reports directly.
+    /// </summary>
+    public static class PostCaptureCheck
+    {
+        const string Title = "NeRF dataset check";
+
+        /// <summary>True while a background check runs (the window says so under Create).</summary>
+        public static bool IsRunning => s_running > 0;
+
+        static int s_running;
+
+        /// <summary>
+        /// Checks <paramref name="datasetFolder"/> on a worker thread and calls <paramref name="done"/> on the main thread
+        /// (from <c>EditorApplication.update</c>) with the report; Cancel in Background Tasks stops it (the report then
+        /// says so). The editor stays usable.
+        /// </summary>
+        public static void StartInBackground(string datasetFolder, Action<DatasetCheckReport> done)
+        {
+            var id = Progress.Start(Title, Path.GetFileName(datasetFolder));
+            var cancel = new CancellationTokenSource();
+            Progress.RegisterCancelCallback(id, () =>
+            {
+                cancel.Cancel();
+                return true;
+            });
+            Interlocked.Increment(ref s_running);
+            var task = Task.Run(() => CheckAndWrite(datasetFolder, (doneSteps, total) => Progress.Report(id, doneSteps, Math.Max(1, total)), cancel.Token));
+            EditorApplication.CallbackFunction poll = null;
+            poll = () =>
+            {
+                if (!task.IsCompleted) return;
+                EditorApplication.update -= poll;
+                Interlocked.Decrement(ref s_running);
+                var report = Result(task, datasetFolder);
+                Progress.Finish(id, report.Cancelled ? Progress.Status.Canceled : report.Failed ? Progress.Status.Failed : Progress.Status.Succeeded);
+                cancel.Dispose();
+                done?.Invoke(report);
+            };
+            EditorApplication.update += poll;
+        }
+
+        /// <summary>
+        /// Checks <paramref name="datasetFolder"/> on a worker thread while this (main) thread waits, calling
+        /// <paramref name="progress"/> here with (steps done, steps total) about ten times a second: batch mode, the
+        /// window's foreground capture, the preflight and the tests.
+        /// </summary>
+        public static DatasetCheckReport RunBlocking(string datasetFolder, Action<int, int> progress = null)
+        {
+            int doneSteps = 0, totalSteps = 1;
+            var task = Task.Run(() => CheckAndWrite(datasetFolder, (d, t) =>
+            {
+                Volatile.Write(ref totalSteps, Math.Max(1, t));
+                Volatile.Write(ref doneSteps, d);
+            }, CancellationToken.None));
+            try
+            {
+                while (!task.Wait(100)) progress?.Invoke(Volatile.Read(ref doneSteps), Volatile.Read(ref totalSteps));
+            }
+            catch (AggregateException)
+            {
+                // The check itself crashed: Result words it as a failed report.
+            }
+            return Result(task, datasetFolder);
+        }
+
+        /// <summary>The check, and its report written into the dataset (the dataset is the capture's own, just written).</summary>
+        static DatasetCheckReport CheckAndWrite(string datasetFolder, Action<int, int> progress, CancellationToken cancel)
+        {
+            var report = DatasetCheck.Run(datasetFolder, new DatasetCheckOptions(), progress, cancel);
+            if (!report.Cancelled && Directory.Exists(datasetFolder))
+                File.WriteAllText(Path.Combine(datasetFolder, DatasetCheck.ReportFileName), report.ToJson());
+            return report;
+        }
+
+        /// <summary>The task's report; a crash of the check itself (a bug, or the folder deleted under it) becomes a failed report naming it.</summary>
+        static DatasetCheckReport Result(Task<DatasetCheckReport> task, string datasetFolder)
+        {
+            if (task.Status == TaskStatus.RanToCompletion) return task.Result;
+            var error = task.Exception?.GetBaseException();
+            var report = new DatasetCheckReport(datasetFolder);
+            report.Add(new DatasetCheckProblem("check", datasetFolder, -1,
+                "could not be checked: " + (error?.Message ?? "the check did not finish") + ". Run `nerf-dataset check " + datasetFolder + "` to see why."));
+            return report;
+        }
+
+        /// <summary>
+        /// The report in a few lines for the log and the window: the verdict, each check's summary line, and the first
+        /// problems (all of them are in <see cref="DatasetCheck.ReportFileName"/>).
+        /// </summary>
+        public static string Summary(DatasetCheckReport report, int maxProblems = 10)
+        {
+            var verdict = report.Cancelled ? "was cancelled"
+                : report.Failed ? "FAILED: " + report.Problems.Count.ToString(CultureInfo.InvariantCulture) + " problem(s)"
+                : "passed";
+            var text = string.Format(CultureInfo.InvariantCulture, "Self-check of {0} views {1} ({2:0.0} s; {3} in the dataset):",
+                report.ViewsChecked, verdict, report.TotalSeconds, DatasetCheck.ReportFileName);
+            foreach (var line in report.SummaryLines) text += "\n  " + line;
+            foreach (var problem in report.Problems.Take(maxProblems)) text += "\n  problem: " + problem;
+            if (report.Problems.Count > maxProblems)
+                text += "\n  … and " + (report.Problems.Count - maxProblems).ToString(CultureInfo.InvariantCulture) + " more.";
+            return text;
+        }
+    }
+}
