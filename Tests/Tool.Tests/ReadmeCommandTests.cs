@@ -12,7 +12,8 @@ namespace NerfDatasetCreator.Tool.Tests
     /// The README's headless commands run as written, with the installed <c>nerf-dataset</c> command: every line of a
     /// README code block that starts with <c>nerf-dataset </c> and has no placeholder (<c>&lt;…&gt;</c>, <c>[…]</c>,
     /// <c>a|b</c>) runs, in order, in a folder laid out like the repository root (the sample's configs under
-    /// Assets/Samples/NeRFSample/) with a nerf_synthetic-style <c>nerf_synthetic/lego</c> beside it, and exits 0.
+    /// Assets/Samples/NeRFSample/) with a nerf_synthetic-style <c>nerf_synthetic/lego</c> beside it (the real lego cameras, analytic RGBA images that
+    /// <c>check</c> can pass), and exits 0.
     /// </summary>
     [TestFixture]
     public class ReadmeCommandTests
@@ -61,7 +62,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Directory.CreateDirectory(samples);
             foreach (var config in Directory.GetFiles(Path.Combine(InstalledTool.RepositoryRoot, "Assets", "Samples", "NeRFSample"), "*.json"))
                 File.Copy(config, Path.Combine(samples, Path.GetFileName(config)));
-            TestDatasets.Lego(scratch.PathOf("nerf_synthetic", "lego"));
+            AnalyticLego.Write(scratch.PathOf("nerf_synthetic", "lego"), 64, "train", "val", "test");
 
             var lines = RunnableToolLines(Readme);
             Assert.That(lines, Is.Not.Empty);
