@@ -80,9 +80,9 @@ namespace NerfDatasetCreator
 
         /// <summary>
         /// Whether this run writes the geometry pack (<c>geometry/target_mesh.ply</c>, <see cref="TargetMeshPly"/>): a
-        /// whole dataset only, as merge carries no per-shard extras.
+        /// whole dataset only, as merge carries no per-shard extras, and only while the settings' <c>geometryPack</c> is on.
         /// </summary>
-        public bool WritesGeometryPack => IsValid && Shard.Count == 1;
+        public bool WritesGeometryPack => IsValid && Shard.Count == 1 && FullPlan.Settings.GeometryPack;
 
         /// <summary>
         /// Writes <c>points3d.ply</c> when <paramref name="pointCloud"/> has points (output world, e.g. from

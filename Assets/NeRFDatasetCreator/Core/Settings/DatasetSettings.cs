@@ -109,6 +109,13 @@ namespace NerfDatasetCreator
         /// </summary>
         public bool Preflight = true;
 
+        /// <summary>
+        /// The geometry pack: a whole-dataset capture of a target with meshes writes its triangle mesh in the output frame,
+        /// <c>geometry/target_mesh.ply</c> (<see cref="TargetMeshPly"/>), recorded under <c>geometry</c> in
+        /// dataset_config.json. On by default; off, no meshes are collected for it and neither is written.
+        /// </summary>
+        public bool GeometryPack = true;
+
         /// <summary>Dynamic capture: what drives time, its range and steps, and how cameras meet it (static by default).</summary>
         public TimeSettings Time = new TimeSettings();
 

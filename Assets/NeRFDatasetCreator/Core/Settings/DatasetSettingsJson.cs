@@ -69,6 +69,11 @@ namespace NerfDatasetCreator
                 w.WritePropertyName("preflight");
                 w.WriteValue(false);
             }
+            if (!s.GeometryPack)
+            {
+                w.WritePropertyName("geometryPack");
+                w.WriteValue(false);
+            }
             if (s.Time != null && s.Time.Enabled)
             {
                 w.WritePropertyName(TimeSettingsJson.Key);
@@ -270,6 +275,7 @@ namespace NerfDatasetCreator
                 ["pointCloudPoints"] = (t, p) => s.PointCloudPoints = reader.Int(t, p),
                 ["pointCloudRadius"] = (t, p) => s.PointCloudRadius = reader.Double(t, p),
                 ["preflight"] = (t, p) => s.Preflight = reader.Bool(t, p),
+                ["geometryPack"] = (t, p) => s.GeometryPack = reader.Bool(t, p),
                 [TimeSettingsJson.Key] = (t, p) => TimeSettingsJson.Read(reader, t, p, s.Time),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),

@@ -375,8 +375,9 @@ namespace NerfDatasetCreator.Editor
 
         /// <summary>
         /// Whether the capture writes <c>geometry/target_mesh.ply</c>: a whole dataset (Core's
-        /// <see cref="DatasetRun.WritesGeometryPack"/>) of a target, not an environment's whole scene. The meshes are the
-        /// ones ReadSurface collects for points3d.ply — the same renderers, LOD, skinning pose and (dynamic) start time.
+        /// <see cref="DatasetRun.WritesGeometryPack"/>, false with <c>"geometryPack": false</c>) of a target, not an
+        /// environment's whole scene. The meshes are the ones ReadSurface collects for points3d.ply — the same renderers,
+        /// LOD, skinning pose and (dynamic) start time; with the pack off and no points3d.ply, none are collected.
         /// </summary>
         static bool WritesGeometryPack(PreparedCapture prepared) =>
             prepared.Run.WritesGeometryPack && prepared.Options.Isolation != CaptureIsolation.WholeScene;

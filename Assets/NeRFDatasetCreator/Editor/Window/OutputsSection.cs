@@ -33,6 +33,11 @@ namespace NerfDatasetCreator.Editor
             c.Settings.Preflight = EditorGUILayout.Toggle(new GUIContent("Preflight check",
                 "Before a capture of more than " + PreflightCheck.MinViews + " views, capture about " + PreflightCheck.Views +
                 " of its views at low resolution into a temporary folder, check them and stop if the check fails."), c.Settings.Preflight);
+            // "geometryPack" in config files (Documentation~/settings.md).
+            c.Settings.GeometryPack = EditorGUILayout.Toggle(new GUIContent("Geometry pack",
+                "Write the target's triangle mesh in the output frame, " + TargetMeshPly.RelativePath +
+                " (ground truth for Chamfer / F-score and nerf-dataset evaluate --geometry). A whole dataset of a target with meshes only; " +
+                "a dynamic capture's mesh is the one at its start time."), c.Settings.GeometryPack);
         }
 
         /// <summary>Scale and centring of the output world, and the initial point cloud for Gaussian Splatting.</summary>

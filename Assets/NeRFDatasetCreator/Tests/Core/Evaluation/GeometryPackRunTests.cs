@@ -84,5 +84,45 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(JObject.Parse(File.ReadAllText(Path.Combine(run.DatasetFolder, "dataset_config.json")))["geometry"], Is.Null);
             }
         }
+
+        [Test]
+        public void TurnedOffARunWritesNoPackEvenWithMeshes()
+        {
+            using (var temp = new TempFolder())
+            {
+                var settings = HalfScale();
+                settings.GeometryPack = false;
+                var run = DatasetRun.Prepare(settings, Target, temp.Path);
+                Assert.That(run.WritesGeometryPack, Is.False);
+                var session = run.Begin();
+                var writer = new ViewFileWriter(run.Plan, session, SyntheticViews.FakeExr);
+                foreach (var view in run.Plan.Views) writer.Write(view, SyntheticViews.Colour(), SyntheticViews.Data());
+                run.Finish(session, new Provenance(DateTime.UtcNow), null, new[] { Square() });
+                Assert.That(Directory.Exists(Path.Combine(run.DatasetFolder, "geometry")), Is.False);
+                var config = JObject.Parse(File.ReadAllText(Path.Combine(run.DatasetFolder, "dataset_config.json")));
+                Assert.That(config["geometry"], Is.Null);
+                Assert.That(GeometryPackRecord.RecordedFile(config), Is.Null);
+                Assert.That((bool)config["settings"]["geometryPack"], Is.False, "the config says why there is no pack");
+                Assert.That(OwnDataset.WhyNotOurs(run.DatasetFolder), Is.Null);
+                Assert.That(DatasetValidator.Validate(run.DatasetFolder).Problems, Is.Empty);
+            }
+        }
+
+        [Test]
+        public void TheSettingIsWrittenOnlyWhenOffAndReadBack()
+        {
+            var s = new DatasetSettings();
+            Assert.That(s.GeometryPack, Is.True, "on by default");
+            Assert.That(DatasetSettingsJson.Write(s), Does.Not.Contain("geometryPack"), "existing configs keep their keys");
+            s.GeometryPack = false;
+            var text = DatasetSettingsJson.Write(s);
+            Assert.That(text, Does.Contain("\"geometryPack\": false"));
+            Assert.That(DatasetSettingsJson.Read(text).Settings.GeometryPack, Is.False);
+            Assert.That(DatasetSettingsJson.Read("{\"geometryPack\": true}").Settings.GeometryPack, Is.True);
+            Assert.That(DatasetSettingsJson.Read("{}").Settings.GeometryPack, Is.True);
+            Assert.That(s.Clone().GeometryPack, Is.False);
+            var error = Assert.Throws<SettingsFormatException>(() => DatasetSettingsJson.Read("{\"geometryPack\": \"no\"}"));
+            Assert.That(error.Message, Does.Contain("geometryPack").And.Contain("must be true or false"));
+        }
     }
 }

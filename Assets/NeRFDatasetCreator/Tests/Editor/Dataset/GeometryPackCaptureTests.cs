@@ -12,7 +12,8 @@ namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
     /// A capture writes <c>geometry/target_mesh.ply</c>: the target's cube in the output frame and units, lined up with
-    /// the capture's own depth maps (Core's ObservedPoints marks its visible corners' faces as seen).
+    /// the capture's own depth maps (Core's ObservedPoints marks its visible corners' faces as seen); with
+    /// <c>"geometryPack": false</c> it writes neither the file nor its record.
     /// </summary>
     [TestFixture]
     public class GeometryPackCaptureTests
@@ -71,6 +72,22 @@ namespace NerfDatasetCreator.Editor.Tests
                 ObservedPoints.Mark(points, observed, frame.CameraToWorld, depth, 64, 64, train.Focal(64), 32, 32, 0.01);
             }
             Assert.That(observed.Count(o => o), Is.GreaterThan(observed.Length / 3), "at least the faces towards the cameras");
+        }
+
+        [Test]
+        [Category("GPU")]
+        public void TurnedOffTheCaptureWritesNoPackAndNoRecord()
+        {
+            TestScene.RequireRendering();
+            var settings = new DatasetSettings { Name = "nopack", Width = 32, Height = 32, Supersampling = 1, Distance = 4, Seed = 1, GeometryPack = false };
+            settings.Train.Count = 1;
+            settings.Val.Count = 0;
+            settings.Test.Count = 1;
+            var result = DatasetCapture.RunBlocking(DatasetCapture.Prepare(settings, _cube, _project), new SilentProgress());
+            Assert.That(result.Succeeded, Is.True, result.Message);
+            Assert.That(Directory.Exists(Path.Combine(result.DatasetFolder, TargetMeshPly.Folder)), Is.False);
+            var config = JObject.Parse(File.ReadAllText(Path.Combine(result.DatasetFolder, DatasetLayout.ConfigFileName)));
+            Assert.That(config[GeometryPackRecord.Key], Is.Null);
         }
 
         sealed class SilentProgress : ICaptureProgress
