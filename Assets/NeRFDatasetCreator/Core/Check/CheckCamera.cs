@@ -15,7 +15,6 @@ namespace NerfDatasetCreator
 
         public CheckCamera(Matrix4x4d cameraToWorld, int width, int height, double focal, double cx, double cy)
         {
-            CameraToWorld = cameraToWorld;
             Width = width;
             Height = height;
             Focal = focal;
@@ -26,14 +25,11 @@ namespace NerfDatasetCreator
             r20 = cameraToWorld[2, 0]; r21 = cameraToWorld[2, 1]; r22 = cameraToWorld[2, 2]; tz = cameraToWorld[2, 3];
         }
 
-        public Matrix4x4d CameraToWorld { get; }
         public int Width { get; }
         public int Height { get; }
         public double Focal { get; }
         public double Cx { get; }
         public double Cy { get; }
-
-        public Vector3d Centre => new Vector3d(tx, ty, tz);
 
         /// <summary>The viewing direction in the world (the camera's −Z).</summary>
         public Vector3d Forward => new Vector3d(-r02, -r12, -r22);

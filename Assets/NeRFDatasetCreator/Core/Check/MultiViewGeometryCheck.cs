@@ -154,9 +154,6 @@ namespace NerfDatasetCreator
                 ". A wrong pose (handedness, axis sign, Y/Z swap), field of view, depth scale or depth along the ray instead of z."));
         }
 
-        static double Nearest(int s00, int s10, int s01, int s11, double ax, double ay) =>
-            ay < 0.5 ? (ax < 0.5 ? s00 : s10) : (ax < 0.5 ? s01 : s11);
-
         static string Px(double value) => double.IsNaN(value) ? "n/a" : double.IsInfinity(value) ? "∞ px" : DatasetCheckResult.Number(value, "0.###") + " px";
 
         public DatasetCheckResult Finish(string skipReason)

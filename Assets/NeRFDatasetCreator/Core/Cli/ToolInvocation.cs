@@ -14,7 +14,7 @@ namespace NerfDatasetCreator
         public const string CheckCommand = "check";
         public const string HelpCommand = "help";
 
-        /// <summary>"plan", "validate", "merge", "convert", "clean" or "help".</summary>
+        /// <summary>"plan", "validate", "merge", "convert", "clean", "check", "evaluate" or "help".</summary>
         public string Command { get; internal set; }
 
         /// <summary><c>plan --config &lt;file&gt;</c>.</summary>

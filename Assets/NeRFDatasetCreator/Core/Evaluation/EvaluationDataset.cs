@@ -63,7 +63,7 @@ namespace NerfDatasetCreator
             if (doc.Frames.Count == 0) throw Problem(DatasetLayout.TransformsFileName(split), jsonPath, "lists no frames, so there is nothing to evaluate.", "Pick a split with views: --split test (or train, val).");
 
             var result = new EvaluationDataset { Root = root, Split = split, CameraAngleX = doc.CameraAngleX.Value, DepthScale = doc.IntegerDepthScale ?? doc.DepthUnitScaleFactor ?? 0.001 };
-            var json = JObject.Parse(File.ReadAllText(jsonPath));
+            var json = JObject.Parse(FileOps.ReadText(jsonPath));
             if (JsonValues.TryNumber(json["cx"], out var cx) && JsonValues.TryNumber(json["cy"], out var cy)) { result.Cx = cx; result.Cy = cy; }
             var frames = new List<EvaluationFrame>();
             foreach (var f in doc.Frames)
@@ -88,7 +88,7 @@ namespace NerfDatasetCreator
             var configPath = Path.Combine(root, DatasetLayout.ConfigFileName);
             if (File.Exists(configPath))
             {
-                try { result.Config = JObject.Parse(File.ReadAllText(configPath)); }
+                try { result.Config = JObject.Parse(FileOps.ReadText(configPath)); }
                 catch (JsonException) { result.Config = null; }
             }
             return result;

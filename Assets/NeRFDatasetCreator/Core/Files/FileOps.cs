@@ -57,17 +57,17 @@ namespace NerfDatasetCreator
         });
 
         /// <summary>Writes a binary file as <paramref name="write"/> streams it (creating or truncating it): for files too large to hold in memory.</summary>
-        public static void WriteStream(string path, Action<Stream> write)
+        public static void WriteStream(string path, Action<Stream> write) => Run("write", path, () =>
         {
-            Step("write", path);
             using (var file = new FileStream(path, FileMode.Create, FileAccess.Write, FileShare.None, 1 << 16)) write(file);
-        }
+        });
 
         /// <summary>Opens a text file to read as a stream (UTF-8, or as its byte-order mark says): for files too large to read as one string.</summary>
         public static TextReader OpenText(string path)
         {
-            Step("read", path);
-            return new StreamReader(path, new UTF8Encoding(false), true, 1 << 16);
+            TextReader reader = null;
+            Run("read", path, () => reader = new StreamReader(path, new UTF8Encoding(false), true, 1 << 16));
+            return reader;
         }
 
         /// <summary>Writes UTF-8 text into a file that must not exist yet (never overwrites).</summary>

@@ -57,25 +57,6 @@ namespace NerfDatasetCreator
                 : null;
         }
 
-        /// <summary>
-        /// Whether the dataset in <paramref name="folder"/> (a write session's working folder) holds rendered images:
-        /// false only when its <c>dataset_config.json</c> says <c>"imagesRendered": false</c>, as a plan's does.
-        /// </summary>
-        public static bool RendersImages(string folder)
-        {
-            try
-            {
-                var path = Path.Combine(folder, DatasetLayout.ConfigFileName);
-                if (!File.Exists(path)) return true;
-                var rendered = (JToken.Parse(FileOps.ReadText(path)) as JObject)?["imagesRendered"];
-                return !(rendered?.Type == JTokenType.Boolean && !(bool)rendered);
-            }
-            catch (Exception e) when (e is JsonException || e is IOException || e is UnauthorizedAccessException)
-            {
-                return true; // unreadable: assume the strictest case for the replace it decides
-            }
-        }
-
         /// <summary>Why <paramref name="folder"/> counts as rendered (its config says so, or a split folder holds an image); null when it does not.</summary>
         static string WhyRendered(string folder)
         {

@@ -100,7 +100,6 @@ namespace NerfDatasetCreator
             // than the file's image data can inflate to is refused before its buffer is allocated.
             if ((stride + 1) * height > MaxDeflateRatio * (idat.Length + 1))
                 throw Bad(name, "claims " + width + "×" + height + " pixels, more than its " + idat.Length + " bytes of image data can hold (deflate expands at most " + MaxDeflateRatio + ":1); it is truncated or its header is wrong.");
-            var raw = new byte[(stride + 1) * height];
             idat.Position = 2; // zlib header (RFC 1950); DeflateStream reads the raw deflate data after it
             var pixels = new byte[stride * height];
             using (var inflater = new DeflateStream(idat, CompressionMode.Decompress))

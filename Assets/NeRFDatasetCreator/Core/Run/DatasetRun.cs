@@ -98,9 +98,10 @@ namespace NerfDatasetCreator
             IReadOnlyList<SurfaceMesh> targetMeshes = null)
         {
             Newtonsoft.Json.Linq.JObject geometry = null;
-            if (WritesGeometryPack && targetMeshes != null && targetMeshes.Any(m => m.TriangleCount > 0))
+            var meshes = WritesGeometryPack ? targetMeshes?.Where(m => m.TriangleCount > 0).ToList() : null;
+            if (meshes != null && meshes.Count > 0)
             {
-                var outputMeshes = TargetMeshPly.FromUnityWorld(targetMeshes.Where(m => m.TriangleCount > 0).ToList(), Plan.Normalisation);
+                var outputMeshes = TargetMeshPly.FromUnityWorld(meshes, Plan.Normalisation);
                 var path = session.PathOf(TargetMeshPly.RelativePath);
                 FileOps.CreateDirectory(System.IO.Path.GetDirectoryName(path));
                 TargetMeshPly.Write(path, outputMeshes);

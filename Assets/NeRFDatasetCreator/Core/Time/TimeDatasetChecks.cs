@@ -46,7 +46,7 @@ namespace NerfDatasetCreator
             if (!File.Exists(path)) return false;
             try
             {
-                return JObject.Parse(File.ReadAllText(path))[TimeRecord.Key] is JObject;
+                return JObject.Parse(FileOps.ReadText(path))[TimeRecord.Key] is JObject;
             }
             catch (Exception e) when (e is JsonException || e is IOException || e is UnauthorizedAccessException)
             {

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using System.Reflection;
 using UnityEditor;
 using UnityEngine;
@@ -72,7 +73,7 @@ namespace NerfDatasetCreator.Editor
                     sampledByBrain = CinemachineCameraSampler.Sample(camera, brain, source, width, height, field, out problem);
                     if (problem != null) return null;
                     CinemachineCache[cmKey] = sampledByBrain;
-                    Last[cmKey] = (sampledByBrain.Cameras, sampledByBrain.Warnings);
+                    Remember(camera, cmKey, sampledByBrain.Cameras, sampledByBrain.Warnings);
                 }
                 warnings = sampledByBrain.Warnings;
                 return sampledByBrain.Cameras;
@@ -105,9 +106,17 @@ namespace NerfDatasetCreator.Editor
             if (problem == null)
             {
                 Cache[key] = sampled;
-                Last[key] = (sampled, Array.Empty<ValidationProblem>());
+                Remember(camera, key, sampled, Array.Empty<ValidationProblem>());
             }
             return sampled;
+        }
+
+        /// <summary>Keeps one entry per camera in <see cref="Last"/>: the preview reads only the current key, so older keys of the same camera would only grow the dictionary.</summary>
+        static void Remember(Camera camera, string key, List<SceneCamera> cameras, IReadOnlyList<ValidationProblem> warnings)
+        {
+            var prefix = camera.GetInstanceID() + "|";
+            foreach (var old in Last.Keys.Where(k => k.StartsWith(prefix, StringComparison.Ordinal) && k != key).ToList()) Last.Remove(old);
+            Last[key] = (cameras, warnings);
         }
 
         static string Key(Camera camera, CameraSourceSettings source, int width, int height) =>

@@ -140,7 +140,8 @@ namespace NerfDatasetCreator.Editor
         public static DatasetCaptureResult RunBlocking(PreparedCapture prepared, ICaptureProgress progress = null, string tool = "unity-editor")
         {
             if (!prepared.IsValid) return Refused(prepared.Problems);
-            if (ActiveCapture.IsRunning) return Busy();
+            // A self-check still reading the last dataset counts as busy: a replace under the same name would swap the folder under it.
+            if (ActiveCapture.IsRunning || PostCaptureCheck.IsRunning) return Busy();
             var preflight = PreflightCapture.Run(prepared);
             if (preflight != null) return preflight;
             var unreadable = ReadSurface(prepared);
@@ -206,7 +207,7 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         public static CaptureSession StartInBackground(PreparedCapture prepared, Action<DatasetCaptureResult> done, string tool = "unity-editor")
         {
-            var refused = !prepared.IsValid ? Refused(prepared.Problems) : ActiveCapture.IsRunning ? Busy() : PreflightCapture.Run(prepared) ?? ReadSurface(prepared);
+            var refused = !prepared.IsValid ? Refused(prepared.Problems) : ActiveCapture.IsRunning || PostCaptureCheck.IsRunning ? Busy() : PreflightCapture.Run(prepared) ?? ReadSurface(prepared);
             if (refused != null)
             {
                 Log(refused);
@@ -335,9 +336,10 @@ namespace NerfDatasetCreator.Editor
             return new DatasetCaptureResult(false, cancelled, null, session?.PartialFolder, "NeRF Dataset Creator: " + what + where, written, 0);
         }
 
-        /// <summary>A second capture while one runs: refused before anything (a working folder) is created.</summary>
+        /// <summary>A second capture while one (or its self-check) runs: refused before anything (a working folder) is created.</summary>
         static DatasetCaptureResult Busy() => new DatasetCaptureResult(false, false, null, null,
-            "NeRF Dataset Creator: nothing was captured — " + ActiveCapture.BusyMessage, 0, 0);
+            "NeRF Dataset Creator: nothing was captured — " + (ActiveCapture.IsRunning ? ActiveCapture.BusyMessage
+                : "the self-check of the last capture is still running; wait for it or cancel it in Window ▸ General ▸ Background Tasks."), 0, 0);
 
         /// <summary>What Begin found of earlier runs on this output (Core's Recovery): interrupted ones it finished or rolled back, leftovers.</summary>
         static void LogEarlierRuns(DatasetWriteSession session)

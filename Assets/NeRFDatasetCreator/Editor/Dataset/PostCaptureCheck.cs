@@ -39,12 +39,17 @@ namespace NerfDatasetCreator.Editor
                 return true;
             });
             Interlocked.Increment(ref s_running);
+            // A script reload would drop the static poll below and cut the worker off mid-write; hold it until the check
+            // ends, as DatasetToolRunner does (EditorApplication.LockReloadAssemblies, UnityCsReference 2022.3
+            // Editor/Mono/EditorApplication.bindings.cs:154/158, 6000.0 :148/152).
+            EditorApplication.LockReloadAssemblies();
             var task = Task.Run(() => CheckAndWrite(datasetFolder, (doneSteps, total) => Progress.Report(id, doneSteps, Math.Max(1, total)), cancel.Token));
             EditorApplication.CallbackFunction poll = null;
             poll = () =>
             {
                 if (!task.IsCompleted) return;
                 EditorApplication.update -= poll;
+                EditorApplication.UnlockReloadAssemblies();
                 Interlocked.Decrement(ref s_running);
                 var report = Result(task, datasetFolder);
                 Progress.Finish(id, report.Cancelled ? Progress.Status.Canceled : report.Failed ? Progress.Status.Failed : Progress.Status.Succeeded);

@@ -22,7 +22,6 @@ namespace NerfDatasetCreator
             Poses = poses ?? throw new ArgumentNullException(nameof(poses));
             Points = points ?? Array.Empty<CloudPoint>();
             if (poses.Count != names.Count) throw new ArgumentException("One pose per image name is needed.", nameof(poses));
-            HasTracks = observations != null;
             Observations = observations ?? new int[names.Count][];
             if (Observations.Length != names.Count) throw new ArgumentException("One observation list per image is needed.", nameof(observations));
             for (var i = 0; i < Observations.Length; i++) Observations[i] = Observations[i] ?? Array.Empty<int>();
@@ -57,9 +56,6 @@ namespace NerfDatasetCreator
         public IReadOnlyList<ColmapPose> Poses { get; }
         public IReadOnlyList<CloudPoint> Points { get; }
 
-        /// <summary>Whether visibility was computed; false: every image has no 2D points, every track is empty.</summary>
-        public bool HasTracks { get; }
-
         /// <summary>Per image (0-based), the indices of the points it sees, ascending: its POINTS2D in order.</summary>
         public int[][] Observations { get; }
 
@@ -74,10 +70,6 @@ namespace NerfDatasetCreator
         public int ObservationCount { get; }
 
         public int TrackLength(int point) => TrackStart[point + 1] - TrackStart[point];
-
-        /// <summary>Image <paramref name="image"/>'s <paramref name="k"/>-th 2D point, in COLMAP pixels.</summary>
-        public void Point2D(int image, int k, out double x, out double y) =>
-            Poses[image].Project(Points[Observations[image][k]].Position, Camera, out x, out y);
 
         /// <summary>
         /// COLMAP's ERROR of a point: the mean reprojection error over its track

@@ -15,7 +15,7 @@ namespace NerfDatasetCreator
     {
         /// <param name="surface">True when <paramref name="points"/> is the target's surface sample (ours); false for a stand-in cloud, which gets no tracks.</param>
         public static ColmapModel Build(ExportScene scene, IReadOnlyList<string> names, IReadOnlyList<CloudPoint> points, bool surface,
-            ColmapOptions options, ICollection<ValidationProblem> warnings, ColmapVisibility.Timings timings = null)
+            ColmapOptions options, ICollection<ValidationProblem> warnings)
         {
             options = options ?? ColmapOptions.Default;
             var poses = scene.Frames.Select(f => ColmapPose.FromCameraToWorld(f.CameraToWorld)).ToList();
@@ -41,7 +41,7 @@ namespace NerfDatasetCreator
                 return new ColmapModel(scene.Intrinsics, names, poses, points);
             }
 
-            var observations = ColmapVisibility.Compute(scene, points, timings);
+            var observations = ColmapVisibility.Compute(scene, points);
             var model = KeepTracked(scene.Intrinsics, names, poses, points, observations, options.MinTrackLength);
             var untracked = Enumerable.Range(0, names.Count).Where(i => model.Observations[i].Length == 0).Select(i => names[i]).ToList();
             if (untracked.Count > 0)

@@ -40,12 +40,6 @@ namespace NerfDatasetCreator
             R10 * p.X + R11 * p.Y + R12 * p.Z + Translation.Y,
             R20 * p.X + R21 * p.Y + R22 * p.Z + Translation.Z);
 
-        /// <summary>A world direction (e.g. a normal) in COLMAP's camera frame.</summary>
-        public Vector3d RotateToCamera(Vector3d d) => new Vector3d(
-            R00 * d.X + R01 * d.Y + R02 * d.Z,
-            R10 * d.X + R11 * d.Y + R12 * d.Z,
-            R20 * d.X + R21 * d.Y + R22 * d.Z);
-
         /// <summary>The pixel position of world point <paramref name="p"/> (meaningful only in front of the camera, Z &gt; 0).</summary>
         public void Project(Vector3d p, CameraIntrinsics k, out double x, out double y)
         {

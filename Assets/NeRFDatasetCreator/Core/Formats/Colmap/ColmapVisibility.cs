@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Diagnostics;
 using System.IO;
 
 namespace NerfDatasetCreator
@@ -47,13 +46,6 @@ namespace NerfDatasetCreator
         /// <summary>The mask value of full target coverage; edge coverage (1–254) and background (0) refuse.</summary>
         public const byte Foreground = 255;
 
-        /// <summary>Time spent decoding depth maps and masks, and projecting points, in the last <see cref="Compute"/>.</summary>
-        public sealed class Timings
-        {
-            public TimeSpan Decoding;
-            public TimeSpan Projection;
-        }
-
         /// <summary>Point positions and normals as flat arrays, built once and walked by every view in order.</summary>
         public sealed class PointArrays
         {
@@ -78,7 +70,7 @@ namespace NerfDatasetCreator
         /// Per frame of <paramref name="scene"/> (which must have depth for every frame), the indices of the points
         /// it observes, ascending. Each depth map and mask is decoded once, then every point is projected into that view.
         /// </summary>
-        public static int[][] Compute(ExportScene scene, IReadOnlyList<CloudPoint> points, Timings timings = null)
+        public static int[][] Compute(ExportScene scene, IReadOnlyList<CloudPoint> points)
         {
             if (!scene.HasDepth) throw new ArgumentException("Visibility needs a depth map for every frame.", nameof(scene));
             var arrays = new PointArrays(points);
@@ -86,18 +78,13 @@ namespace NerfDatasetCreator
             var masks = scene.HasMasks;
             var result = new int[scene.Frames.Count][];
             var visible = new List<int>();
-            var clock = new Stopwatch();
             for (var v = 0; v < scene.Frames.Count; v++)
             {
                 var frame = scene.Frames[v];
-                clock.Restart();
                 var depth = ReadDepth(Path.Combine(scene.RootDirectory, frame.DepthPath), k);
                 var mask = masks ? ReadMask(Path.Combine(scene.RootDirectory, frame.MaskPath), k) : null;
-                if (timings != null) timings.Decoding += clock.Elapsed;
-                clock.Restart();
                 Observe(ColmapPose.FromCameraToWorld(frame.CameraToWorld), k, depth, mask, scene.DepthUnitScale, arrays, visible);
                 result[v] = visible.ToArray();
-                if (timings != null) timings.Projection += clock.Elapsed;
             }
             return result;
         }

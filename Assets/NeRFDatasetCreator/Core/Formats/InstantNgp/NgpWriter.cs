@@ -26,7 +26,8 @@ namespace NerfDatasetCreator
         public static void AddLens(JObject json, LensDistortion lens)
         {
             if (lens == null) return;
-            if (Refusal(lens) != null) throw new InvalidParameterException(new[] { Refusal(lens) });
+            var refusal = Refusal(lens);
+            if (refusal != null) throw new InvalidParameterException(new[] { refusal });
             json["k1"] = lens.K1;
             json["k2"] = lens.K2;
             if (lens.Model == LensModel.OpenCvFisheye)
