@@ -66,6 +66,7 @@ namespace NerfDatasetCreator
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 stderr.WriteLine("error: " + e.Message);
+                session.End();
                 stderr.WriteLine("note: " + session.DescribeAbandoned());
                 return ToolExitCodes.Failure;
             }

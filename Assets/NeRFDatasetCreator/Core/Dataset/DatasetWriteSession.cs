@@ -65,6 +65,8 @@ namespace NerfDatasetCreator
             FileOps.CreateDirectory(parent);
             var working = WorkingFolders.NewPartial(full, now ?? DateTime.UtcNow);
             FileOps.CreateDirectory(working);
+            // Registered before the journal names this process, so that no recovery here takes it for an ended run.
+            OperationOwner.Register(working);
             new OperationJournal { Operation = "write", Output = full }.Save(working);
             return new DatasetWriteSession(full, working, policy, rendersImages) { Recovered = recovered, Leftovers = Leftover.Of(full, working) };
         }
@@ -132,20 +134,39 @@ namespace NerfDatasetCreator
                 aside = WorkingFolders.NewReplaced(FinalFolder);
             }
             new OperationJournal { Operation = "write", Output = FinalFolder, State = OperationJournal.Committing, Aside = aside }.Save(WorkingFolder);
-            if (aside != null) FileOps.MoveDirectory(FinalFolder, aside);
+            // Once moved, the journal is in the final folder until the clean-up below is done: still this run's.
+            OperationOwner.Register(FinalFolder);
             try
             {
-                FileOps.MoveDirectory(WorkingFolder, FinalFolder);
+                if (aside != null) FileOps.MoveDirectory(FinalFolder, aside);
+                try
+                {
+                    FileOps.MoveDirectory(WorkingFolder, FinalFolder);
+                }
+                catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+                {
+                    if (aside != null && !Directory.Exists(FinalFolder)) FileOps.MoveDirectory(aside, FinalFolder);
+                    new OperationJournal { Operation = "write", Output = FinalFolder }.Save(WorkingFolder);
+                    throw;
+                }
+                _committed = true;
+                if (aside != null) FileOps.DeleteDirectory(aside);
+                OperationJournal.Delete(FinalFolder);
             }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            finally
             {
-                if (aside != null && !Directory.Exists(FinalFolder)) FileOps.MoveDirectory(aside, FinalFolder);
-                new OperationJournal { Operation = "write", Output = FinalFolder }.Save(WorkingFolder);
-                throw;
+                OperationOwner.Release(FinalFolder);
+                if (_committed) OperationOwner.Release(WorkingFolder);
             }
-            _committed = true;
-            if (aside != null) FileOps.DeleteDirectory(aside);
-            OperationJournal.Delete(FinalFolder);
+        }
+
+        /// <summary>
+        /// The run ended without <see cref="Commit"/> (failed or cancelled): its partial folder stays, and from now on it
+        /// is a leftover that recovery reports and <c>nerf-dataset clean</c> may remove, not a run in progress.
+        /// </summary>
+        public void End()
+        {
+            if (!_committed) OperationOwner.Release(WorkingFolder);
         }
 
         /// <summary>A sentence for a cancelled or failed run's log: where its partial files are.</summary>
@@ -157,6 +178,7 @@ namespace NerfDatasetCreator
         public void DiscardPartialFiles()
         {
             if (!_committed && Directory.Exists(WorkingFolder)) FileOps.DeleteDirectory(WorkingFolder);
+            End();
         }
     }
 }

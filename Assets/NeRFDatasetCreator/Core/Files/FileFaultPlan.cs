@@ -66,6 +66,8 @@ namespace NerfDatasetCreator
             if (_stop)
             {
                 _stopped = true;
+                // A killed process takes its runs with it: none of them is in progress any more (OperationOwner).
+                OperationOwner.EndAllHere();
                 throw new SimulatedStopException(operation, path);
             }
             if (_fault != null) throw _fault(operation, path);

@@ -39,7 +39,8 @@ namespace NerfDatasetCreator
             {
                 if (!dryRun)
                     foreach (var note in Recovery.Run(output))
-                        (note.Refused ? result.Refused : result.Recovered).Add(note.Text);
+                        if (!note.Running) // a run still writing is listed once, below, as kept
+                            (note.Refused ? result.Refused : result.Recovered).Add(note.Text);
                 foreach (var leftover in Leftover.All(output))
                 {
                     seen.Add(leftover.Path);

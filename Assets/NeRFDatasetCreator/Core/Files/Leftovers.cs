@@ -36,11 +36,15 @@ namespace NerfDatasetCreator
         /// <summary>Why recovery refused the folder's journal (<see cref="JournalPaths"/>), or null.</summary>
         public string Refused;
 
+        /// <summary>Why the run that writes the folder may still be running (<see cref="OperationOwner"/>), or null: such a folder is no leftover, and clean keeps it.</summary>
+        public string Running;
+
         public string What
         {
             get
             {
                 if (NotOurs != null) return NotOurs;
+                if (Running != null) return "the working folder of a " + Kind + " into " + Output + " that is not over: " + Running;
                 if (Refused != null) return "the working folder of an interrupted " + Kind + " into " + Output + ", kept: recovery refused it because " + Refused;
                 if (Complete) return "a complete dataset for " + Output + " that could not be moved into place because something else is under that name (rename one of the two yourself)";
                 switch (Kind)
@@ -58,7 +62,7 @@ namespace NerfDatasetCreator
         public override string ToString() => Path + " (" + Size + "): " + What + ".";
 
         /// <summary>The leftovers of <paramref name="output"/> the tool wrote, except <paramref name="exclude"/> (the running operation's own folder).</summary>
-        public static IReadOnlyList<Leftover> Of(string output, string exclude = null) => All(output, exclude).Where(l => l.NotOurs == null).ToList();
+        public static IReadOnlyList<Leftover> Of(string output, string exclude = null) => All(output, exclude).Where(l => l.NotOurs == null && l.Running == null).ToList();
 
         /// <summary>Every folder named as a working folder of <paramref name="output"/>, each with whether the tool can prove it wrote it (<see cref="NotOurs"/>).</summary>
         public static IReadOnlyList<Leftover> All(string output, string exclude = null)
@@ -93,7 +97,8 @@ namespace NerfDatasetCreator
             if (journal == null)
             {
                 // Killed between creating the folder and writing its journal: no file in it, nothing to lose.
-                if (WorkingFolders.HoldsNoFile(dir)) leftover.Removable = true;
+                if (OperationOwner.IsRunningHere(dir)) leftover.Running = "this process is still writing it";
+                else if (WorkingFolders.HoldsNoFile(dir)) leftover.Removable = true;
                 else if (leftover.Kind == "merge") leftover.Removable = false; // an older merge's: kept, with what to do
                 else leftover.NotOurs = "it holds no journal (" + OperationJournal.FileName + ") the tool wrote";
                 return;
@@ -103,6 +108,8 @@ namespace NerfDatasetCreator
                 leftover.NotOurs = "its journal " + OperationJournal.PathIn(dir) + " is not a " + leftover.Kind + " into " + leftover.Output;
                 return;
             }
+            leftover.Running = OperationOwner.WhyMayBeRunning(journal.Owner, dir);
+            if (leftover.Running != null) return; // not removable: another run (or this one) is writing it
             leftover.Refused = JournalPaths.WhyRefused(dir, journal, leftover.Output);
             // A complete dataset recovery could not move into place (something else took its name) may be the only copy of a capture.
             leftover.Complete = leftover.Kind == "write" && journal.State == OperationJournal.Committing;

@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
@@ -11,7 +12,8 @@ namespace NerfDatasetCreator
     /// the next run on the same output can finish it or roll it back (<see cref="Recovery"/>):
     /// <code>
     /// { "format": "nerf-dataset-creator/operation", "version": 1, "operation": "write", "output": "/abs/lego",
-    ///   "state": "writing", "aside": null, "shards": [], "moves": [], "files": [] }
+    ///   "state": "writing", "aside": null, "shards": [], "moves": [], "files": [],
+    ///   "owner": { "host": "studio-7", "pid": 4242, "started": "2026-11-27T11:54:01.0000000Z" } }
     /// </code>
     /// <see cref="State"/> is <see cref="Writing"/> while files are being produced (the output is untouched: roll
     /// back) and <see cref="Committing"/> once everything is complete in the working folder (finish). Rewritten through
@@ -52,6 +54,13 @@ namespace NerfDatasetCreator
         /// <summary>convert: the output folder did not exist and was created by the operation (removed again on roll-back when empty).</summary>
         public bool CreatedOutput;
 
+        /// <summary>
+        /// The run writing the operation (this process, for a journal made here): recovery and clean leave the folder of
+        /// a run that may still be writing alone (<see cref="OperationOwner.WhyMayBeRunning"/>). Null in journals from
+        /// before owners were recorded.
+        /// </summary>
+        public OperationOwner Owner = OperationOwner.Current;
+
         public static string PathIn(string folder) => Path.Combine(folder, FileName);
 
         public void Save(string folder)
@@ -69,6 +78,13 @@ namespace NerfDatasetCreator
                 ["moves"] = new JArray(Moves.Select(m => new JObject { ["from"] = m.Key, ["to"] = m.Value })),
                 ["files"] = new JArray(Files.Cast<object>().ToArray()),
             };
+            if (Owner != null)
+                json["owner"] = new JObject
+                {
+                    ["host"] = Owner.Host,
+                    ["pid"] = Owner.ProcessId,
+                    ["started"] = Owner.ProcessStart?.ToString("o", System.Globalization.CultureInfo.InvariantCulture),
+                };
             var temp = Path.Combine(folder, TempName);
             var path = PathIn(folder);
             FileOps.WriteText(temp, json.ToString(Formatting.Indented) + "\n");
@@ -116,6 +132,7 @@ namespace NerfDatasetCreator
                 State = (string)o["state"] ?? Writing,
                 Aside = (string)o["aside"],
                 CreatedOutput = o["createdOutput"]?.Type == JTokenType.Boolean && (bool)o["createdOutput"],
+                Owner = OwnerOf(o["owner"] as JObject),
             };
             if (o["moves"] is JArray moves)
                 foreach (var m in moves.OfType<JObject>())
@@ -126,6 +143,19 @@ namespace NerfDatasetCreator
             if (o["files"] is JArray files)
                 journal.Files.AddRange(files.Where(f => f.Type == JTokenType.String).Select(f => (string)f));
             return journal;
+        }
+
+        static OperationOwner OwnerOf(JObject owner)
+        {
+            // An owner that cannot be read is treated as none: the journal then behaves as one from before owners existed.
+            if (owner == null || owner["pid"]?.Type != JTokenType.Integer || !(owner["pid"] is JValue pid) || !(pid.Value is long id) || id < 0 || id > int.MaxValue) return null;
+            DateTime? started = null;
+            if (owner["started"]?.Type == JTokenType.String &&
+                DateTime.TryParse((string)owner["started"], System.Globalization.CultureInfo.InvariantCulture,
+                    System.Globalization.DateTimeStyles.AdjustToUniversal | System.Globalization.DateTimeStyles.AssumeUniversal, out var parsed))
+                started = parsed;
+            else if (owner["started"]?.Type == JTokenType.Date) started = ((DateTime)owner["started"]).ToUniversalTime();
+            return new OperationOwner(owner["host"]?.Type == JTokenType.String ? (string)owner["host"] : "", (int)id, started);
         }
     }
 }

@@ -10,7 +10,8 @@ namespace NerfDatasetCreator
     /// files were all complete (<see cref="OperationJournal.Committing"/>) is finished; one that was still producing
     /// them is rolled back — merge moves the shards' files back, convert removes its partial files — except a
     /// plan or capture's partial folder, which is kept (it may hold hours of rendering) and reported as a leftover.
-    /// Returns one sentence per operation, saying which it did.
+    /// Returns one sentence per operation, saying which it did. The folders of runs that may still be writing (another
+    /// process, or this one: <see cref="OperationOwner"/>) are left alone, with a sentence saying so.
     /// </summary>
     public static class Recovery
     {
@@ -19,7 +20,10 @@ namespace NerfDatasetCreator
             output = Path.GetFullPath(output).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
             var notes = new List<RecoveryNote>();
             var own = Directory.Exists(output) ? OperationJournal.Load(output) : null;
-            if (own != null && own.State == OperationJournal.Committing && WorkingFolders.SamePath(own.Output, output))
+            var ownRunning = own == null ? null : OperationOwner.WhyMayBeRunning(own.Owner, output);
+            if (own != null && own.State == OperationJournal.Committing && WorkingFolders.SamePath(own.Output, output) && ownRunning != null)
+                notes.Add(Running(own.Operation, output, output, ownRunning));
+            else if (own != null && own.State == OperationJournal.Committing && WorkingFolders.SamePath(own.Output, output))
             {
                 var refused = JournalPaths.WhyRefused(output, own, output, asideOnly: true);
                 if (refused != null) notes.Add(Refusal(own.Operation, output, refused));
@@ -39,7 +43,7 @@ namespace NerfDatasetCreator
             foreach (var working in WorkingFolders.Of(output))
             {
                 var journal = OperationJournal.Load(working);
-                if (journal == null && WorkingFolders.KindOf(Path.GetFileName(working)) != "replaced" && WorkingFolders.HoldsNoFile(working))
+                if (journal == null && WorkingFolders.KindOf(Path.GetFileName(working)) != "replaced" && WorkingFolders.HoldsNoFile(working) && !OperationOwner.IsRunningHere(working))
                 {
                     // Killed between creating the folder and writing its journal: nothing to finish, nothing to keep.
                     FileOps.DeleteDirectory(working);
@@ -47,6 +51,13 @@ namespace NerfDatasetCreator
                 }
                 // Act only on a journal whose operation is the one the folder's name says and whose output is this one.
                 if (journal == null || journal.Operation != WorkingFolders.KindOf(Path.GetFileName(working)) || !WorkingFolders.SamePath(journal.Output, output)) continue;
+                // Another run may be writing this folder right now (a capture while a convert starts): its files are not ours to touch.
+                var running = OperationOwner.WhyMayBeRunning(journal.Owner, working);
+                if (running != null)
+                {
+                    notes.Add(Running(journal.Operation, output, working, running));
+                    continue;
+                }
                 // A journal is a file anyone can edit: act on none of its paths unless all lie inside what the operation owns.
                 var refused = JournalPaths.WhyRefused(working, journal, output);
                 if (refused != null)
@@ -75,6 +86,9 @@ namespace NerfDatasetCreator
             }
             return notes;
         }
+
+        static RecoveryNote Running(string operation, string output, string folder, string why) =>
+            new RecoveryNote(operation, false, "left " + folder + " alone: " + why + "; it is the " + (operation ?? "operation") + " of " + output + ", and nothing of it was changed.", running: true);
 
         static RecoveryNote Refusal(string operation, string output, string why) =>
             new RecoveryNote(operation, false, "refused to recover the interrupted " + (operation ?? "operation") + " of " + output + ": " + why +

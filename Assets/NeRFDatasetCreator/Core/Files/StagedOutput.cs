@@ -39,6 +39,7 @@ namespace NerfDatasetCreator
             var working = WorkingFolders.NewConvert(output, now ?? DateTime.UtcNow);
             var journal = new OperationJournal { Operation = operation, Output = output, CreatedOutput = created };
             FileOps.CreateDirectory(working);
+            OperationOwner.Register(working); // before the journal names this process: no recovery here takes it for an ended run
             journal.Save(working);
             return new StagedOutput(output, working, journal);
         }
@@ -74,32 +75,72 @@ namespace NerfDatasetCreator
             foreach (var file in _files)
             {
                 var to = Path.Combine(Output, file.Replace('/', Path.DirectorySeparatorChar));
-                if (File.Exists(to) || Directory.Exists(to))
-                    throw new InvalidParameterException(new[]
-                    {
-                        new ValidationProblem("outDir", to, "appeared while this convert was writing (another convert into the same output finished first); convert never overwrites, so this run placed nothing and removed its own working folder.",
-                            "Use the files already there, or delete them and run convert again."),
-                    });
+                if (File.Exists(to) || Directory.Exists(to)) throw Appeared(to);
             }
             _journal.Files.AddRange(_files);
             _journal.State = OperationJournal.Committing;
             _journal.Save(Working);
             Placing = true;
-            foreach (var file in _files)
+            OperationOwner.Register(Output); // the journal moves there below, still this run's
+            try
             {
-                var to = Path.Combine(Output, file.Replace('/', Path.DirectorySeparatorChar));
-                if (File.Exists(to) || Directory.Exists(to)) throw new IOException(to + " appeared while convert was writing; convert never overwrites. The remaining files are in " + Working + ".");
-                FileOps.CreateDirectory(Path.GetDirectoryName(to));
-                FileOps.MoveFile(Path.Combine(Working, file.Replace('/', Path.DirectorySeparatorChar)), to);
+                var placed = 0;
+                foreach (var file in _files)
+                {
+                    var to = Path.Combine(Output, file.Replace('/', Path.DirectorySeparatorChar));
+                    if (File.Exists(to) || Directory.Exists(to))
+                    {
+                        // Another convert into the same output ran to its end between the check above and here (it leaves
+                        // a running run's folder alone, OperationOwner): with nothing of this run placed, this run is
+                        // abandoned whole, like one that found the conflict before placing.
+                        if (placed == 0)
+                        {
+                            Placing = false;
+                            throw Appeared(to);
+                        }
+                        throw new IOException(to + " appeared while convert was writing; convert never overwrites. The remaining files are in " + Working + ".");
+                    }
+                    FileOps.CreateDirectory(Path.GetDirectoryName(to));
+                    try
+                    {
+                        FileOps.MoveFile(Path.Combine(Working, file.Replace('/', Path.DirectorySeparatorChar)), to);
+                    }
+                    catch (IOException) when (placed == 0 && (File.Exists(to) || Directory.Exists(to)))
+                    {
+                        Placing = false; // the other convert won between the check and the move: nothing of this run is placed
+                        throw Appeared(to);
+                    }
+                    placed++;
+                }
+                // Everything is in place. The journal moves out to the output first, so that a run killed while the emptied
+                // working folder is being deleted (the journal possibly unlinked already) still leaves a record saying the
+                // convert was complete: the next run finishes it (Recovery's own-journal case) instead of refusing to
+                // overwrite the files this run placed.
+                FileOps.MoveFile(OperationJournal.PathIn(Working), OperationJournal.PathIn(Output));
+                try
+                {
+                    FileOps.DeleteDirectory(Working);
+                }
+                catch (DirectoryNotFoundException)
+                {
+                    // Emptied and without its journal, it may already have been removed by another run's recovery (as a
+                    // folder killed before its journal was written): what was to be done is done.
+                }
+                OperationJournal.Delete(Output);
             }
-            // Everything is in place. The journal moves out to the output first, so that a run killed while the emptied
-            // working folder is being deleted (the journal possibly unlinked already) still leaves a record saying the
-            // convert was complete: the next run finishes it (Recovery's own-journal case) instead of refusing to
-            // overwrite the files this run placed.
-            FileOps.MoveFile(OperationJournal.PathIn(Working), OperationJournal.PathIn(Output));
-            FileOps.DeleteDirectory(Working);
-            OperationJournal.Delete(Output);
+            finally
+            {
+                // Finished, or failed while placing: either way this run is over, and the next run on the output finishes it.
+                OperationOwner.Release(Output);
+                OperationOwner.Release(Working);
+            }
         }
+
+        static InvalidParameterException Appeared(string path) => new InvalidParameterException(new[]
+        {
+            new ValidationProblem("outDir", path, "appeared while this convert was writing (another convert into the same output finished first); convert never overwrites, so this run placed nothing and removed its own working folder.",
+                "Use the files already there, or delete them and run convert again."),
+        });
 
         /// <summary>Undoes an operation that failed before <see cref="Commit"/>: the working folder goes, and the output if this created it and it is empty.</summary>
         public void Abandon()
@@ -112,6 +153,10 @@ namespace NerfDatasetCreator
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 // Left with its journal: the next run on this output rolls it back.
+            }
+            finally
+            {
+                OperationOwner.Release(Working);
             }
         }
     }

@@ -26,6 +26,9 @@ namespace NerfDatasetCreator
             if (move) journal.Moves.AddRange(transfers.Select(t => new KeyValuePair<string, string>(t.Source, t.Relative)));
             var moved = new List<MergeTransfer>();
             var inPlace = false;
+            // This run's until it returns, in the staging folder and then (renamed) in the output: no recovery here touches it.
+            OperationOwner.Register(staging);
+            OperationOwner.Register(output);
             try
             {
                 FileOps.CreateDirectory(staging);
@@ -72,6 +75,11 @@ namespace NerfDatasetCreator
                 return new ValidationProblem("output", output, "could not be written: " + e.Message,
                     undone ? "Nothing was changed; fix the cause (disk space, permissions, a folder created meanwhile) and merge again."
                            : "Some moved files could not be put back; they are in " + staging + " under the same relative paths. Merge into the same --out again to move them back.");
+            }
+            finally
+            {
+                OperationOwner.Release(staging);
+                OperationOwner.Release(output);
             }
         }
 

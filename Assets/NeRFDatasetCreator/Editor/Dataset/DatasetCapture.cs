@@ -332,6 +332,8 @@ namespace NerfDatasetCreator.Editor
             var what = interruption != null ? "The capture was stopped after " + written + " written views because " + interruption + "."
                 : cancelled ? "The capture was cancelled after " + written + " written views."
                 : "The capture failed: " + Describe(error);
+            // The run is over: its partial folder is now a leftover that clean may remove, no longer a capture in progress.
+            session?.End();
             var where = session == null ? "" : " " + session.DescribeAbandoned();
             return new DatasetCaptureResult(false, cancelled, null, session?.PartialFolder, "NeRF Dataset Creator: " + what + where, written, 0);
         }
