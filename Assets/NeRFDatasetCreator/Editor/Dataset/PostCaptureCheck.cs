@@ -12,8 +12,7 @@ namespace NerfDatasetCreator.Editor
     /// The self-check after every capture (issue 21): Core's <see cref="DatasetCheck.Run"/> — the checks of
     /// <c>nerf-dataset check</c> — on the dataset just written, on a worker thread (it only reads files), with its
     /// report written into the dataset as <see cref="DatasetCheck.ReportFileName"/>. Progress goes to Unity's Background
-    /// Tasks: <c>Progress.Start/Report/Finish</c> are bound thread-safe (UnityCsReference 2022.3 and 6000.0
-    /// <c>Editor/Mono/Progress/Progress.bindings.cs:99-102, 126-150</c>), so the worker reports directly.
+    /// Tasks (<see cref="BackgroundJob"/>).
     /// </summary>
     public static class PostCaptureCheck
     {
@@ -31,32 +30,15 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         public static void StartInBackground(string datasetFolder, Action<DatasetCheckReport> done)
         {
-            var id = Progress.Start(Title, Path.GetFileName(datasetFolder));
-            var cancel = new CancellationTokenSource();
-            Progress.RegisterCancelCallback(id, () =>
-            {
-                cancel.Cancel();
-                return true;
-            });
             Interlocked.Increment(ref s_running);
-            // A script reload would drop the static poll below and cut the worker off mid-write; hold it until the check
-            // ends, as DatasetToolRunner does (EditorApplication.LockReloadAssemblies, UnityCsReference 2022.3
-            // Editor/Mono/EditorApplication.bindings.cs:154/158, 6000.0 :148/152).
-            EditorApplication.LockReloadAssemblies();
-            var task = Task.Run(() => CheckAndWrite(datasetFolder, (doneSteps, total) => Progress.Report(id, doneSteps, Math.Max(1, total)), cancel.Token));
-            EditorApplication.CallbackFunction poll = null;
-            poll = () =>
-            {
-                if (!task.IsCompleted) return;
-                EditorApplication.update -= poll;
-                EditorApplication.UnlockReloadAssemblies();
-                Interlocked.Decrement(ref s_running);
-                var report = Result(task, datasetFolder);
-                Progress.Finish(id, report.Cancelled ? Progress.Status.Canceled : report.Failed ? Progress.Status.Failed : Progress.Status.Succeeded);
-                cancel.Dispose();
-                done?.Invoke(report);
-            };
-            EditorApplication.update += poll;
+            BackgroundJob.Start(Title, Path.GetFileName(datasetFolder), reportsSteps: true, cancellable: true,
+                (report, cancel) => CheckAndWrite(datasetFolder, report, cancel), task =>
+                {
+                    Interlocked.Decrement(ref s_running);
+                    var result = Result(task, datasetFolder);
+                    done?.Invoke(result);
+                    return result.Cancelled ? Progress.Status.Canceled : result.Failed ? Progress.Status.Failed : Progress.Status.Succeeded;
+                });
         }
 
         /// <summary>

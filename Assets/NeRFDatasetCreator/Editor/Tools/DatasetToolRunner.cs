@@ -8,24 +8,21 @@ namespace NerfDatasetCreator.Editor
     /// <summary>
     /// Runs one <c>nerf-dataset</c> command line inside the editor — validate, convert, merge or clean, through Core's
     /// <see cref="ToolTranscript"/>, so no .NET SDK is needed and the messages are the tool's own — on a worker
-    /// thread, with a task in Unity's Background Tasks window and status bar (Progress API:
-    /// https://docs.unity3d.com/2022.3/Documentation/ScriptReference/Progress.html; Progress.Options.Indefinite because
-    /// a command does not know its length in advance). The editor stays usable; one command runs at a time.
-    /// Script reloading waits until the command ends (EditorApplication.LockReloadAssemblies), so a command is never cut
+    /// thread, with a task in Unity's Background Tasks window and status bar (<see cref="BackgroundJob"/>). The editor
+    /// stays usable; one command runs at a time. Script reloading waits until the command ends, so a command is never cut
     /// off by a recompile; its lines go to the Console as one entry headed by the equivalent terminal command.
     /// There is no Cancel: every command finishes in one step or is finished or rolled back by the next run
     /// (Documentation~/reliability.md), which a stop in the middle would only postpone.
     /// </summary>
     public static class DatasetToolRunner
     {
-        static Task<ToolTranscript> _task;
-        static int _progressId = -1;
+        static bool _running;
         static string _title;
 
         /// <summary>Raised on the main thread when a command starts and when it ends.</summary>
         public static event Action Changed;
 
-        public static bool IsRunning => _task != null;
+        public static bool IsRunning => _running;
 
         /// <summary>What the running command is ("convert to colmap"), or null.</summary>
         public static string RunningTitle => IsRunning ? _title : null;
@@ -39,31 +36,23 @@ namespace NerfDatasetCreator.Editor
             if (arguments == null) throw new ArgumentNullException(nameof(arguments));
             if (IsRunning) return false;
             _title = title;
-            _progressId = Progress.Start("NeRF dataset: " + title, ToolTranscript.DescribeCommandLine(arguments), Progress.Options.Indefinite);
-            EditorApplication.LockReloadAssemblies();
+            _running = true;
             // Core only (no Unity API) runs on the worker; ToolCommands turns anything unexpected into an error line.
-            _task = Task.Run(() => ToolTranscript.Run(arguments));
-            EditorApplication.update += Poll;
+            // Progress.Options.Indefinite: a command does not know its length in advance.
+            BackgroundJob.Start("NeRF dataset: " + title, ToolTranscript.DescribeCommandLine(arguments), reportsSteps: false, cancellable: false,
+                (report, cancel) => ToolTranscript.Run(arguments), Finished);
             Changed?.Invoke();
             return true;
         }
 
-        static void Poll()
+        static Progress.Status Finished(Task<ToolTranscript> task)
         {
-            if (_task == null || !_task.IsCompleted) return;
-            EditorApplication.update -= Poll;
-            var task = _task;
-            _task = null;
-            EditorApplication.UnlockReloadAssemblies();
-            Last = task.Status == TaskStatus.RanToCompletion
-                ? task.Result
-                : null;
-            if (Progress.Exists(_progressId))
-                Progress.Finish(_progressId, Last != null && Last.Succeeded ? Progress.Status.Succeeded : Progress.Status.Failed);
-            _progressId = -1;
+            _running = false;
+            Last = task.Status == TaskStatus.RanToCompletion ? task.Result : null;
             if (Last != null) Log(Last);
             else Debug.LogError("NeRF Dataset Creator: " + _title + " stopped: " + task.Exception?.GetBaseException().Message);
             Changed?.Invoke();
+            return Last != null && Last.Succeeded ? Progress.Status.Succeeded : Progress.Status.Failed;
         }
 
         /// <summary>One Console entry: the terminal command, then every line the command printed.</summary>
