@@ -33,6 +33,12 @@ namespace NerfDatasetCreator.Tests
             /// <summary>Instance and semantic maps with labels.json (<see cref="LabelObjects"/>: renderers are objects, classes from tags).</summary>
             public bool Labels { get; set; }
 
+            /// <summary>One shard of a sharded capture (default: the whole dataset).</summary>
+            public ShardSpec Shard { get; set; }
+
+            /// <summary>The dataset folder relative to the project (batch mode's -nerfOut), so that shards of one config land apart; null for NeRFDatasets/&lt;name&gt;.</summary>
+            public string DatasetFolder { get; set; }
+
             /// <summary>A planted fault: the instance maps are the mean of each pixel's sample ids (a filtered downsample), not their majority.</summary>
             public bool BlendIds { get; set; }
         }
@@ -76,7 +82,7 @@ namespace NerfDatasetCreator.Tests
                 settings.Time.EndSeconds = 1;
             }
             if (options.Labels) settings.Labels = new LabelSettings { Enabled = true, Instances = InstanceRule.Renderer, ClassFrom = ClassSource.Tag };
-            var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project);
+            var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project, options.Shard, options.DatasetFolder);
             Assert.That(run.Problems, Is.Empty, "the test dataset's settings");
             var session = run.Begin();
             var writer = new ViewFileWriter(run.Plan, session, null);
