@@ -15,5 +15,9 @@ namespace NerfDatasetCreator
         NormalExr,
         /// <summary>8-bit grey PNG, 255 = target, 0 = background (coverage in between): <c>r_7_mask_0000.png</c>.</summary>
         MaskPng,
+        /// <summary>16-bit grey PNG, the instance id of the object covering most of the pixel's samples, 0 = background: <c>r_7_instance_0000.png</c>.</summary>
+        InstancePng,
+        /// <summary>16-bit grey PNG, the class id of the class covering most of the pixel's samples, 0 = background or unclassed: <c>r_7_semantic_0000.png</c>.</summary>
+        SemanticPng,
     }
 }

@@ -15,6 +15,12 @@ namespace NerfDatasetCreator
         public const string ConfigFileName = "dataset_config.json";
         public const string RigPreviewFileName = "rig_preview.ply";
 
+        /// <summary>The label table of a capture with instance/semantic maps (Documentation~/labels.md).</summary>
+        public const string LabelsFileName = "labels.json";
+
+        /// <summary>A split's colour-coded label preview, for looking at, not for training: <c>labels_preview_train.png</c>.</summary>
+        public static string LabelsPreviewFileName(string splitName) => "labels_preview_" + splitName + ".png";
+
         public static string TransformsFileName(DatasetSplit split) => TransformsFileName(DatasetSplits.Name(split));
 
         /// <summary><c>transforms_&lt;split&gt;.json</c> for a split name as the files spell it ("train").</summary>
@@ -47,12 +53,17 @@ namespace NerfDatasetCreator
                 case DatasetFileKind.NormalPng: return "_normal_0000.png";
                 case DatasetFileKind.NormalExr: return "_normal_0000.exr";
                 case DatasetFileKind.MaskPng: return "_mask_0000.png";
+                case DatasetFileKind.InstancePng: return "_instance_0000.png";
+                case DatasetFileKind.SemanticPng: return "_semantic_0000.png";
                 default: throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a dataset file kind");
             }
         }
 
         /// <summary>The files every view of a split with these settings produces, colour first.</summary>
-        public static IReadOnlyList<DatasetFileKind> FileKinds(SplitSettings split)
+        public static IReadOnlyList<DatasetFileKind> FileKinds(SplitSettings split) => FileKinds(split, null);
+
+        /// <summary>The files every view of a split produces, with the id maps when <paramref name="labels"/> are on (every split writes them).</summary>
+        public static IReadOnlyList<DatasetFileKind> FileKinds(SplitSettings split, LabelSettings labels)
         {
             var kinds = new List<DatasetFileKind> { DatasetFileKind.Color };
             if (ExtraOutputs.HasPng(split.Depth)) kinds.Add(DatasetFileKind.DepthPng);
@@ -60,6 +71,11 @@ namespace NerfDatasetCreator
             if (ExtraOutputs.HasPng(split.Normal)) kinds.Add(DatasetFileKind.NormalPng);
             if (ExtraOutputs.HasExr(split.Normal)) kinds.Add(DatasetFileKind.NormalExr);
             if (split.Mask) kinds.Add(DatasetFileKind.MaskPng);
+            if (labels != null && labels.Enabled)
+            {
+                kinds.Add(DatasetFileKind.InstancePng);
+                kinds.Add(DatasetFileKind.SemanticPng);
+            }
             return kinds;
         }
     }

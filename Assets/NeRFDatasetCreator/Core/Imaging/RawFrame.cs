@@ -95,6 +95,14 @@ namespace NerfDatasetCreator
         /// <summary>4 for an <c>R16G16B16A16_SFloat</c>/<c>R32G32B32A32_SFloat</c> normal texture (w ignored), 3 for packed xyz.</summary>
         public int NormalFloatsPerPixel { get; set; } = 4;
 
+        /// <summary>
+        /// Instance ids from the id pass, one per sample (<c>R16_UInt</c>, or an id packed in two bytes of an RGBA8 texture
+        /// and unpacked by the Unity layer): the <see cref="LabelTable"/> id of the object that covers the sample, 0 (the
+        /// clear value) where none does. Rendered with the mask pass's cull and alpha-clip rules; never filtered or blended.
+        /// <see cref="IdMajority"/> turns a k×k block into one output pixel (Documentation~/labels.md).
+        /// </summary>
+        public ushort[] InstanceIds { get; set; }
+
         /// <summary>Every problem with the sizes and arrays at once; empty when the frame is usable.</summary>
         public List<ValidationProblem> Validate()
         {
@@ -133,6 +141,7 @@ namespace NerfDatasetCreator
             CheckLength(problems, "frame.ColorOverWhite", ColorOverWhite?.Length, pixels * 4, "4 halves (RGBA) per pixel");
             CheckLength(problems, "frame.Mask", Mask?.Length, pixels * MaskBytesPerPixel, $"{Text(MaskBytesPerPixel)} byte(s) per pixel");
             CheckLength(problems, "frame.Depth", Depth?.Length, pixels, "1 float per pixel");
+            CheckLength(problems, "frame.InstanceIds", InstanceIds?.Length, pixels, "1 id (ushort) per pixel");
             CheckLength(problems, "frame.Normals", Normals?.Length, pixels * NormalFloatsPerPixel, $"{Text(NormalFloatsPerPixel)} floats per pixel");
             return problems;
         }

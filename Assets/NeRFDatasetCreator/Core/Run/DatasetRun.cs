@@ -94,9 +94,18 @@ namespace NerfDatasetCreator
         /// <see cref="WritesGeometryPack"/>, also the geometry pack <c>geometry/target_mesh.ply</c> in the output frame,
         /// recorded under <c>geometry</c> in dataset_config.json (<see cref="GeometryPackRecord"/>).
         /// </summary>
+        /// <param name="labels">
+        /// The capture's label table when its settings write id maps (<c>labels</c>): writes <c>labels.json</c> and the
+        /// splits' previews (<see cref="LabelFiles"/>). Every shard writes the whole table; merge checks they agree.
+        /// </param>
         public void Finish(DatasetWriteSession session, Provenance provenance, IReadOnlyList<CloudPoint> pointCloud = null,
-            IReadOnlyList<SurfaceMesh> targetMeshes = null)
+            IReadOnlyList<SurfaceMesh> targetMeshes = null, LabelTable labels = null)
         {
+            if (FullPlan.Settings.Labels != null && FullPlan.Settings.Labels.Enabled)
+            {
+                if (labels == null) throw new InvalidOperationException("This capture writes instance/semantic maps; pass its label table to Finish so labels.json is written.");
+                LabelFiles.Write(session, Plan, labels);
+            }
             Newtonsoft.Json.Linq.JObject geometry = null;
             var meshes = WritesGeometryPack ? targetMeshes?.Where(m => m.TriangleCount > 0).ToList() : null;
             if (meshes != null && meshes.Count > 0)

@@ -31,7 +31,7 @@ namespace NerfDatasetCreator
         sealed class Scratch
         {
             public byte[] Rgba = new byte[0], Mask = new byte[0], Rgb = new byte[0];
-            public ushort[] Millimetres = new ushort[0];
+            public ushort[] Millimetres = new ushort[0], Ids = new ushort[0];
         }
 
         [ThreadStatic] static Scratch scratch;
@@ -60,6 +60,13 @@ namespace NerfDatasetCreator
         /// per-view threshold (<see cref="MattingDiagnostics"/>; Documentation~/capture.md, "Matting diagnostics").
         /// </summary>
         public MattingTally Matting => _matting;
+
+        /// <summary>
+        /// The capture's label table, needed when the plan writes id maps (settings <c>labels</c>): the semantic map is
+        /// the instance ids mapped through <see cref="LabelTable.ClassOfInstance"/>. A dynamic capture may add objects to
+        /// the table between time steps (<see cref="LabelTable.AddAppearing"/>), never while views are being written.
+        /// </summary>
+        public LabelTable Labels { get; set; }
 
         /// <summary>Views written so far, by all threads.</summary>
         public int ViewsWritten => Volatile.Read(ref _viewsWritten);
@@ -121,9 +128,39 @@ namespace NerfDatasetCreator
                 NormalEncoding.ToFloats(data, normals, RowDirection.BottomRowFirst);
                 Save(view, DatasetFileKind.NormalExr, Exr(normals, width, height, 4));
             }
+            if (view.Writes(DatasetFileKind.InstancePng) || view.Writes(DatasetFileKind.SemanticPng))
+                encoding += WriteIds(view, colour, data, s);
             Interlocked.Add(ref _encodeTicks, encoding);
             Interlocked.Add(ref _writeTicks, Stopwatch.GetTimestamp() - started);
             Interlocked.Increment(ref _viewsWritten);
+        }
+
+        /// <summary>The instance and semantic maps (<see cref="IdMajority"/>) from whichever frame carries the id pass; returns the encoding ticks.</summary>
+        long WriteIds(PlannedView view, RawFrame colour, RawFrame data, Scratch s)
+        {
+            var frame = colour.InstanceIds != null ? colour : data;
+            if (frame.InstanceIds == null)
+                throw new InvalidOperationException("This run writes instance/semantic maps but the view's frames carry no id pass (RawFrame.InstanceIds).");
+            var labels = Labels ?? throw new InvalidOperationException("This run writes instance/semantic maps but no label table was given (ViewFileWriter.Labels).");
+            var ids = Exact(ref s.Ids, frame.OutputWidth * frame.OutputHeight);
+            long encoding = 0;
+            if (view.Writes(DatasetFileKind.InstancePng))
+            {
+                IdMajority.Resolve(frame, ids);
+                long before = Stopwatch.GetTimestamp();
+                var png = PngWriter.EncodeGray16(ids, frame.OutputWidth, frame.OutputHeight);
+                encoding += Stopwatch.GetTimestamp() - before;
+                Save(view, DatasetFileKind.InstancePng, png);
+            }
+            if (view.Writes(DatasetFileKind.SemanticPng))
+            {
+                IdMajority.Resolve(frame, ids, labels.ClassOfInstance);
+                long before = Stopwatch.GetTimestamp();
+                var png = PngWriter.EncodeGray16(ids, frame.OutputWidth, frame.OutputHeight);
+                encoding += Stopwatch.GetTimestamp() - before;
+                Save(view, DatasetFileKind.SemanticPng, png);
+            }
+            return encoding;
         }
 
         static byte[] Png(byte[] pixels, int width, int height, PngPixelFormat format, ref long encoding)

@@ -119,6 +119,9 @@ namespace NerfDatasetCreator
         /// <summary>Dynamic capture: what drives time, its range and steps, and how cameras meet it (static by default).</summary>
         public TimeSettings Time = new TimeSettings();
 
+        /// <summary>Instance and semantic id maps with labels.json (<see cref="LabelSettings"/>; off by default).</summary>
+        public LabelSettings Labels = new LabelSettings();
+
         public SplitSettings Split(DatasetSplit split)
         {
             switch (split)
@@ -140,6 +143,7 @@ namespace NerfDatasetCreator
             copy.Test = Test?.Clone();
             copy.Background = Background?.Clone();
             copy.Time = Time?.Clone();
+            copy.Labels = Labels?.Clone();
             return copy;
         }
 

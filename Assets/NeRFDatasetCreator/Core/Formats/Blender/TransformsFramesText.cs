@@ -122,6 +122,16 @@ namespace NerfDatasetCreator
                 Key("mask_path");
                 FilePath(v.Split, v.Index, DatasetFileKind.MaskPng);
             }
+            if (v.Writes(DatasetFileKind.InstancePng))
+            {
+                Key(LabelFrameKeys.Instance);
+                FilePath(v.Split, v.Index, DatasetFileKind.InstancePng);
+            }
+            if (v.Writes(DatasetFileKind.SemanticPng))
+            {
+                Key(LabelFrameKeys.Semantic);
+                FilePath(v.Split, v.Index, DatasetFileKind.SemanticPng);
+            }
             Raw("\n        }");
         }
 

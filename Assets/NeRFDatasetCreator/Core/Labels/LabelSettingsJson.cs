@@ -1,0 +1,79 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using Newtonsoft.Json;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// The config-file form of <see cref="LabelSettings"/>, the <c>"labels"</c> object of a settings file
+    /// (Documentation~/labels.md). Its presence turns labels on; written only when they are on, so other configs keep
+    /// their shape. <c>{"instances": "prefab", "classFrom": "tag", "classes": [{"match": "Car*", "class": "car"}], "otherClass": ""}</c>
+    /// </summary>
+    public static class LabelSettingsJson
+    {
+        public const string Key = "labels";
+
+        public static void WriteObject(JsonWriter w, LabelSettings labels)
+        {
+            w.WriteStartObject();
+            w.WritePropertyName("instances"); w.WriteValue(InstanceRules.Name(labels.Instances));
+            w.WritePropertyName("classFrom"); w.WriteValue(ClassSources.Name(labels.ClassFrom));
+            w.WritePropertyName("classes");
+            w.WriteStartArray();
+            foreach (var rule in labels.Classes ?? new List<ClassRule>())
+            {
+                w.WriteStartObject();
+                w.WritePropertyName("match"); w.WriteValue(rule?.Match ?? "");
+                w.WritePropertyName("class"); w.WriteValue(rule?.Class ?? "");
+                w.WriteEndObject();
+            }
+            w.WriteEndArray();
+            w.WritePropertyName("otherClass"); w.WriteValue(labels.OtherClass ?? "");
+            w.WriteEndObject();
+        }
+
+        internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, LabelSettings labels)
+        {
+            labels.Enabled = true;
+            reader.Object(token, path, new Dictionary<string, Action<JToken, string>>
+            {
+                ["instances"] = (v, p) =>
+                {
+                    if (!InstanceRules.TryParse(reader.String(v, p), out var rule))
+                        throw reader.Error(v, p, "must be one of " + InstanceRules.NameList() + "." +
+                            SpellingSuggestion.Sentence((string)v, InstanceRules.All.Select(InstanceRules.Name)));
+                    labels.Instances = rule;
+                },
+                ["classFrom"] = (v, p) =>
+                {
+                    if (!ClassSources.TryParse(reader.String(v, p), out var source))
+                        throw reader.Error(v, p, "must be one of " + ClassSources.NameList() + "." +
+                            SpellingSuggestion.Sentence((string)v, ClassSources.All.Select(ClassSources.Name)));
+                    labels.ClassFrom = source;
+                },
+                ["classes"] = (v, p) =>
+                {
+                    if (v.Type != JTokenType.Array)
+                        throw reader.Error(v, p, "must be a list such as [{\"match\": \"Car*\", \"class\": \"car\"}].");
+                    var rules = new List<ClassRule>();
+                    var index = 0;
+                    foreach (var item in (JArray)v)
+                    {
+                        var itemPath = p + "[" + (index++).ToString(System.Globalization.CultureInfo.InvariantCulture) + "]";
+                        var rule = new ClassRule();
+                        reader.Object(item, itemPath, new Dictionary<string, Action<JToken, string>>
+                        {
+                            ["match"] = (m, mp) => rule.Match = reader.String(m, mp),
+                            ["class"] = (c, cp) => rule.Class = reader.String(c, cp),
+                        });
+                        rules.Add(rule);
+                    }
+                    labels.Classes = rules;
+                },
+                ["otherClass"] = (v, p) => labels.OtherClass = reader.String(v, p),
+            });
+        }
+    }
+}
