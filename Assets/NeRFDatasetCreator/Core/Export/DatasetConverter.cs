@@ -88,6 +88,8 @@ namespace NerfDatasetCreator
             // A lens the target cannot hold is refused before anything is written (LensExports).
             InvalidParameterException.ThrowIfAny(LensExports.Refusal(scene.Lens, target, depths));
             var output = OutputFolder(scene.RootDirectory, target, outDir);
+            // Label exports need labels.json and every instance map: refused before the output folder is made.
+            var labelled = target == ExportTarget.GaussianGrouping ? LabelledDataset.Load(scene, GaussianGroupingExport.What) : null;
             // Everything is written into a working folder inside the output and moved into place when complete (StagedOutput).
             var staged = StagedOutput.Begin(output, "convert");
             try
@@ -99,7 +101,7 @@ namespace NerfDatasetCreator
                     case ExportTarget.Ngp: result = ToNgp(scene, output, sceneRadius, warnings, staged); break;
                     case ExportTarget.Colmap: result = ToColmap(scene, output, points, warnings, depths, colmap ?? ColmapOptions.Default, staged); break;
                     case ExportTarget.Dynamic3dgs: result = Dynamic3DGaussiansExport.Write(scene, output, warnings, staged); break;
-                    case ExportTarget.GaussianGrouping: result = GaussianGroupingExport.Write(scene, output, points, warnings, colmap, staged); break;
+                    case ExportTarget.GaussianGrouping: result = GaussianGroupingExport.Write(scene, labelled, output, points, warnings, colmap, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 staged.Commit();

@@ -18,11 +18,11 @@ namespace NerfDatasetCreator
     {
         public const string What = "--to gaussian-grouping";
 
-        public static ConversionResult Write(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings,
+        /// <param name="labelled">The dataset's labels, loaded (<see cref="LabelledDataset.Load"/>) before anything is written.</param>
+        public static ConversionResult Write(ExportScene scene, LabelledDataset labelled, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings,
             ColmapOptions colmap, StagedOutput staged)
         {
             outDir = Path.GetFullPath(outDir);
-            var labelled = LabelledDataset.Load(scene, What);
             var names = ColmapTextWriter.ImageNames(scene.Frames);
             var masks = names.Select(n => Path.Combine(outDir, GaussianGrouping.MaskPath(n))).ToList();
             // The loader keeps a name up to its first dot: two images that agree up to there would share one mask.
