@@ -90,6 +90,8 @@ namespace NerfDatasetCreator
                     DepthFile = Extra(root, frame, "depth_path") ?? Extra(root, frame, "depth_file_path"),
                     NormalFile = Extra(root, frame, "normal_path"),
                     MaskFile = Extra(root, frame, "mask_path"),
+                    InstanceFile = Extra(root, frame, LabelFrameKeys.Instance),
+                    SemanticFile = Extra(root, frame, LabelFrameKeys.Semantic),
                 };
                 if (JsonValues.TryNumber(frame[TimeKeys.Time], out var t)) view.Time = t;
                 result.Views.Add(view);

@@ -16,6 +16,9 @@ namespace NerfDatasetCreator
         public byte[] Alpha, Mask, Normals;
         public ushort[] Depth;
 
+        /// <summary>The 16-bit instance and semantic id maps (labels.md), 0 = background; null when the frame names none.</summary>
+        public ushort[] Instance, Semantic;
+
         /// <summary>Why a file named by the frame was not used (wrong format or size, unreadable), one line each.</summary>
         public readonly System.Collections.Generic.List<DatasetCheckProblem> Notes = new System.Collections.Generic.List<DatasetCheckProblem>();
 
@@ -24,7 +27,7 @@ namespace NerfDatasetCreator
 
         /// <summary>
         /// Decodes <paramref name="view"/>'s files. Returns null (and a note) when the colour image itself cannot be decoded.
-        /// With <paramref name="depthOnly"/> only the depth file is read (the multi-view pass).
+        /// With <paramref name="depthOnly"/> only the depth and instance files are read (the multi-view pass).
         /// </summary>
         public static CheckImages Load(string root, CheckView view, bool depthOnly = false)
         {
@@ -42,6 +45,8 @@ namespace NerfDatasetCreator
                     else if (colour.BitDepth == 16 && (colour.Channels == 4 || colour.Channels == 2)) images.Alpha = HighBytes(colour, colour.Channels - 1);
                     images.Mask = Plane(root, view.MaskFile, view, images, 8, 1, "mask", "8-bit grey")?.Samples;
                     images.Normals = Plane(root, view.NormalFile, view, images, 8, 3, "normal", "8-bit RGB")?.Samples;
+                    var semantic = Plane(root, view.SemanticFile, view, images, 16, 1, "semantic", "16-bit grey");
+                    if (semantic != null) images.Semantic = Gray16(semantic.Samples);
                 }
                 else if (view.Camera != null)
                 {
@@ -50,6 +55,9 @@ namespace NerfDatasetCreator
                 }
                 var depth = Plane(root, view.DepthFile, view, images, 16, 1, "depth", "16-bit grey");
                 if (depth != null) images.Depth = Gray16(depth.Samples);
+                // The multi-view pass reads the instance map too (InstanceReprojectionCheck).
+                var instance = Plane(root, view.InstanceFile, view, images, 16, 1, "instance", "16-bit grey");
+                if (instance != null) images.Instance = Gray16(instance.Samples);
             }
             finally
             {

@@ -12,6 +12,9 @@ namespace NerfDatasetCreator
         public string ColourFile;
         public string DepthFile, NormalFile, MaskFile;
 
+        /// <summary>The id maps named by <c>instance_path</c> / <c>semantic_path</c> (Documentation~/labels.md), or null.</summary>
+        public string InstanceFile, SemanticFile;
+
         /// <summary>Set once the colour image's size is known.</summary>
         public CheckCamera Camera;
 

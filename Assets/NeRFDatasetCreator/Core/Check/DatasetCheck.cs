@@ -52,9 +52,12 @@ namespace NerfDatasetCreator
                 new DepthNormalsCheck(),
                 PointCloud(root, dynamic),
                 new ColourGeometryCheck(),
+                InstanceMaskCheck(root, views),
             };
             var multiView = new MultiViewGeometryCheck();
+            var reprojection = new InstanceReprojectionCheck();
             var cache = new DepthCache(DepthCacheBytes);
+            var idCache = new DepthCache(DepthCacheBytes);
             long decodeTicks = 0;
             var intrinsicsReported = new HashSet<string>();
             var total = views.Count * (views.Any(v => v.DepthFile != null) ? 2 : 1);
@@ -81,6 +84,8 @@ namespace NerfDatasetCreator
                     foreach (var p in found) report.Add(p);
                     if (images.Depth != null) cache.Put(view.Number, images.Depth);
                     else view.DepthFile = null; // unusable: leave it out of the multi-view pass
+                    if (images.Instance != null) idCache.Put(view.Number, images.Instance);
+                    else view.InstanceFile = null;
                 }
                 progress?.Invoke(++done, total);
             }
@@ -97,13 +102,19 @@ namespace NerfDatasetCreator
                 foreach (var group in byView)
                 {
                     if (cancel.IsCancellationRequested) { report.Cancelled = true; multiSkip = "cancelled"; break; }
-                    var a = Depth(root, views[group.Key], cache, ref decodeTicks);
+                    var a = Depth(root, views[group.Key], cache, idCache, ref decodeTicks);
                     foreach (var pair in group)
                     {
-                        var b = Depth(root, views[pair.Value], cache, ref decodeTicks);
+                        var b = Depth(root, views[pair.Value], cache, idCache, ref decodeTicks);
                         var before = Stopwatch.GetTimestamp();
                         if (a != null && b != null) multiView.Pair(views[pair.Key], a, views[pair.Value], b, found);
                         Time(report, MultiViewGeometryCheck.CheckName, before);
+                        if (a == null || b == null || views[pair.Key].InstanceFile == null || views[pair.Value].InstanceFile == null) continue;
+                        var ia = Ids(root, views[pair.Key], cache, idCache, ref decodeTicks);
+                        var ib = Ids(root, views[pair.Value], cache, idCache, ref decodeTicks);
+                        before = Stopwatch.GetTimestamp();
+                        if (ia != null && ib != null) reprojection.Pair(views[pair.Key], a, ia, views[pair.Value], b, ib, found);
+                        Time(report, InstanceReprojectionCheck.CheckName, before);
                     }
                     progress?.Invoke(++done, total);
                 }
@@ -118,6 +129,7 @@ namespace NerfDatasetCreator
             foreach (var check in checks.Take(3)) report.Add(check.Finish());
             report.Add(multiView.Finish(multiSkip));
             foreach (var check in checks.Skip(3)) report.Add(check.Finish());
+            report.Add(reprojection.Finish(multiSkip ?? (views.Any(v => v.InstanceFile != null) ? null : "no view has an instance map (a capture without labels)")));
             report.ViewsChecked = decoded;
             report.DecodeSeconds = decodeTicks / (double)Stopwatch.Frequency;
             report.TotalSeconds = (Stopwatch.GetTimestamp() - started) / (double)Stopwatch.Frequency;
@@ -130,14 +142,44 @@ namespace NerfDatasetCreator
             report.CheckSeconds[check] = seconds + (Stopwatch.GetTimestamp() - since) / (double)Stopwatch.Frequency;
         }
 
-        static ushort[] Depth(string root, CheckView view, DepthCache cache, ref long decodeTicks)
+        static ushort[] Depth(string root, CheckView view, DepthCache cache, DepthCache idCache, ref long decodeTicks)
         {
             var depth = cache.Get(view.Number);
             if (depth != null) return depth;
+            return Decode(root, view, cache, idCache, ref decodeTicks).Depth;
+        }
+
+        /// <summary>The view's instance map, from the cache or decoded again (with its depth).</summary>
+        static ushort[] Ids(string root, CheckView view, DepthCache cache, DepthCache idCache, ref long decodeTicks)
+        {
+            var ids = idCache.Get(view.Number);
+            if (ids != null) return ids;
+            return Decode(root, view, cache, idCache, ref decodeTicks).Instance;
+        }
+
+        static CheckImages Decode(string root, CheckView view, DepthCache cache, DepthCache idCache, ref long decodeTicks)
+        {
             var images = CheckImages.Load(root, view, depthOnly: true);
             decodeTicks += images.DecodeTicks;
             if (images.Depth != null) cache.Put(view.Number, images.Depth);
-            return images.Depth;
+            if (images.Instance != null) idCache.Put(view.Number, images.Instance);
+            return images;
+        }
+
+        /// <summary>The instance-map check with the dataset's labels.json (read only when a frame names an instance map).</summary>
+        static InstanceMaskCheck InstanceMaskCheck(string root, IReadOnlyList<CheckView> views)
+        {
+            if (!views.Any(v => v.InstanceFile != null)) return new InstanceMaskCheck(null, null);
+            var path = Path.Combine(root, DatasetLayout.LabelsFileName);
+            if (!File.Exists(path)) return new InstanceMaskCheck(null, "is missing, but frames name instance maps.");
+            try
+            {
+                return new InstanceMaskCheck(LabelsJson.ReadFile(path), null);
+            }
+            catch (InvalidParameterException e)
+            {
+                return new InstanceMaskCheck(null, "cannot be read: " + e.Problems[0].Field + " " + e.Problems[0].Value + " " + e.Problems[0].Reason);
+            }
         }
 
         static IViewCheck PointCloud(string root, bool dynamic)

@@ -38,6 +38,7 @@ namespace NerfDatasetCreator
             var cameraCentres = new List<Vector3d>();
             var timeRecord = TimeDatasetChecks.HasTimeRecord(folder);
             var timeFramesBySplit = new Dictionary<DatasetSplit, List<JObject>>();
+            var labelMaps = false;
             foreach (var split in DatasetSplits.All)
             {
                 var file = DatasetLayout.TransformsFileName(split);
@@ -74,6 +75,7 @@ namespace NerfDatasetCreator
                         if (frame.TransformMatrix.HasValue && frame.TransformMatrix.Value.IsFinite) cameraCentres.Add(frame.TransformMatrix.Value.Translation);
                         CheckFrame(folder, file, frame, state, report);
                         if (frame.ExtraFiles.ContainsKey("depth_path")) needsDepthScale = true;
+                        if (frame.ExtraFiles.ContainsKey(LabelFrameKeys.Instance) || frame.ExtraFiles.ContainsKey(LabelFrameKeys.Semantic)) labelMaps = true;
                         timeFrames.Add(TimeDatasetChecks.Keep(json, keepEveryTimeFrame));
                     });
                 }
@@ -147,6 +149,7 @@ namespace NerfDatasetCreator
                 report.Warnings.Add(new DatasetProblem("transforms_*.json", -1, null,
                     "(object size unknown here: the target is taken as a point at the origin) " + range));
             TimeDatasetChecks.Check(folder, report, timeFramesBySplit);
+            if (labelMaps && !state.SkipFiles) LabelsValidation.Check(folder, report);
             return report;
         }
 
@@ -394,6 +397,8 @@ namespace NerfDatasetCreator
                 case "depth_path":
                 case "depth_file_path": return new Format { BitDepth = 16, ColorType = PngInfo.ColorTypeGray };
                 case "normal_path": return new Format { BitDepth = 8, ColorType = PngInfo.ColorTypeRgb };
+                case LabelFrameKeys.Instance:
+                case LabelFrameKeys.Semantic: return new Format { BitDepth = 16, ColorType = PngInfo.ColorTypeGray };
                 default: return new Format { BitDepth = 8, ColorType = PngInfo.ColorTypeGray };
             }
         }

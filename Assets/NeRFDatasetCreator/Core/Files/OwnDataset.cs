@@ -16,12 +16,13 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class OwnDataset
     {
-        static readonly Regex ViewFile = new Regex(@"^r_\d+(\.png|_depth_0000\.png|_depth_0000\.exr|_normal_0000\.png|_normal_0000\.exr|_mask_0000\.png)$", RegexOptions.CultureInvariant);
-        static readonly string[] RootFiles =
+        static readonly Regex ViewFile = new Regex(@"^r_\d+(\.png|_depth_0000\.png|_depth_0000\.exr|_normal_0000\.png|_normal_0000\.exr|_mask_0000\.png|_instance_0000\.png|_semantic_0000\.png)$", RegexOptions.CultureInvariant);
+        static readonly string[] RootFiles = new[]
         {
             DatasetLayout.ConfigFileName, DatasetLayout.RigPreviewFileName, RigPreviewPicture.FileName, TargetPointCloud.FileName, ShardManifest.FileName,
             NerfstudioWriter.FileName, OperationJournal.FileName, OperationJournal.FileName + ".tmp", DatasetCheck.ReportFileName,
-        };
+            DatasetLayout.LabelsFileName,
+        }.Concat(DatasetSplits.Names.Select(DatasetLayout.LabelsPreviewFileName)).ToArray();
         static readonly string[] ColmapSparseFiles = { "cameras.txt", "images.txt", "points3D.txt", "points3D.ply", "test.txt", GaussianSplattingDepths.ParamsFileName };
 
         // The export folders convert writes into a dataset by default, as trees of the names each may hold.

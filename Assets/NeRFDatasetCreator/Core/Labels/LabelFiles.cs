@@ -42,5 +42,42 @@ namespace NerfDatasetCreator
                 session.WriteBytes(DatasetLayout.LabelsPreviewFileName(DatasetSplits.Name(split)), s => s.Write(png, 0, png.Length));
             }
         }
+
+        /// <summary>
+        /// Writes the previews of a finished dataset folder from its split folders' instance maps (the first
+        /// <see cref="LabelPreview.MaxViews"/> by view index): merge makes them anew for the merged splits.
+        /// </summary>
+        public static void WritePreviews(string folder)
+        {
+            foreach (var split in DatasetSplits.Names)
+            {
+                var dir = Path.Combine(folder, split);
+                if (!Directory.Exists(dir)) continue;
+                var files = Directory.GetFiles(dir, "r_*" + DatasetLayout.Suffix(DatasetFileKind.InstancePng))
+                    .Select(f => new { File = f, Index = IndexOf(Path.GetFileName(f)) })
+                    .Where(f => f.Index >= 0).OrderBy(f => f.Index).Take(LabelPreview.MaxViews).ToList();
+                var maps = new List<ushort[]>();
+                int width = 0, height = 0;
+                foreach (var f in files)
+                {
+                    var map = PngGray16Reader.Read(f.File, out var w, out var h);
+                    if (maps.Count == 0)
+                    {
+                        width = w;
+                        height = h;
+                    }
+                    if (w == width && h == height) maps.Add(map);
+                }
+                if (maps.Count == 0) continue;
+                var png = LabelPreview.Encode(maps, width, height);
+                FileOps.WriteNewBytes(Path.Combine(folder, DatasetLayout.LabelsPreviewFileName(split)), png);
+            }
+        }
+
+        static int IndexOf(string name)
+        {
+            var digits = name.Substring(2, name.Length - 2 - DatasetLayout.Suffix(DatasetFileKind.InstancePng).Length);
+            return int.TryParse(digits, System.Globalization.NumberStyles.None, System.Globalization.CultureInfo.InvariantCulture, out var index) ? index : -1;
+        }
     }
 }

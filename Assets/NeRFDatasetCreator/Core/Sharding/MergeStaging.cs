@@ -18,7 +18,8 @@ namespace NerfDatasetCreator
         /// undoing everything. Its journal lists every planned move first, so that a merge killed anywhere is rolled
         /// back (files moved back into the shards) or finished by the next merge into the same output (<see cref="Recovery"/>).
         /// </summary>
-        public static ValidationProblem Write(List<ShardFolder> shards, List<MergeFrame> frames, List<MergeTransfer> transfers, string output, bool move)
+        /// <param name="labels">The shards' common labels.json (<see cref="MergeLabels"/>), copied (never moved) with new previews; null for none.</param>
+        public static ValidationProblem Write(List<ShardFolder> shards, List<MergeFrame> frames, List<MergeTransfer> transfers, string output, bool move, string labels = null)
         {
             var staging = WorkingFolders.NewMerging(output);
             var journal = new OperationJournal { Operation = "merge", Output = output };
@@ -52,6 +53,11 @@ namespace NerfDatasetCreator
                             : property.Value.DeepClone();
                     if (merged["frames"] == null) merged["frames"] = new JArray(frames.Where(f => f.Split == split).Select(f => f.Json.DeepClone()));
                     WriteJson(Path.Combine(staging, ShardMerger.TransformsFileName(split)), merged);
+                }
+                if (labels != null)
+                {
+                    FileOps.CopyFile(labels, Path.Combine(staging, DatasetLayout.LabelsFileName));
+                    LabelFiles.WritePreviews(staging);
                 }
                 var config = shards.FirstOrDefault(s => s.Config != null);
                 if (config != null) WriteJson(Path.Combine(staging, ShardMerger.ConfigFileName), MergedConfig(config.Config, shards));

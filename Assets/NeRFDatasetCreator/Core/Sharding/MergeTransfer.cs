@@ -123,7 +123,8 @@ namespace NerfDatasetCreator
             foreach (var leftover in byView.Values.SelectMany(v => v))
                 warnings.Add(leftover + " belongs to no frame of its shard's transforms and was left in place.");
 
-            var known = new HashSet<string>(ViewCounts.SplitNames.Concat(ViewCounts.SplitNames.Select(ShardMerger.TransformsFileName)).Concat(new[] { ShardManifest.FileName, ShardMerger.ConfigFileName }), StringComparer.Ordinal);
+            var known = new HashSet<string>(ViewCounts.SplitNames.Concat(ViewCounts.SplitNames.Select(ShardMerger.TransformsFileName)).Concat(new[] { ShardManifest.FileName, ShardMerger.ConfigFileName, DatasetLayout.LabelsFileName })
+                .Concat(ViewCounts.SplitNames.Select(DatasetLayout.LabelsPreviewFileName)), StringComparer.Ordinal);
             foreach (var shard in shards)
                 foreach (var entry in Directory.EnumerateFileSystemEntries(shard.Folder).OrderBy(p => p, StringComparer.Ordinal))
                     if (!known.Contains(Path.GetFileName(entry)) && !claimed.Contains(entry))

@@ -13,7 +13,7 @@ namespace NerfDatasetCreator
     public static class TransformsReader
     {
         /// <summary>The per-frame file keys this plugin writes and checks (see Documentation~/output-format.md).</summary>
-        public static readonly string[] ExtraFileKeys = { "depth_path", "depth_file_path", "normal_path", "mask_path" };
+        public static readonly string[] ExtraFileKeys = { "depth_path", "depth_file_path", "normal_path", "mask_path", LabelFrameKeys.Instance, LabelFrameKeys.Semantic };
 
         public static TransformsDocument ReadFile(string path) => Read(FileOps.ReadText(path), Path.GetFileName(path));
 

@@ -29,6 +29,34 @@ namespace NerfDatasetCreator.Tests
 
             /// <summary>A planted fault: the depth pass holds the distance along each pixel's ray instead of z.</summary>
             public bool DepthAlongRay { get; set; }
+
+            /// <summary>Instance and semantic maps with labels.json (<see cref="LabelObjects"/>: renderers are objects, classes from tags).</summary>
+            public bool Labels { get; set; }
+
+            /// <summary>One shard of a sharded capture (default: the whole dataset).</summary>
+            public ShardSpec Shard { get; set; }
+
+            /// <summary>The dataset folder relative to the project (batch mode's -nerfOut), so that shards of one config land apart; null for NeRFDatasets/&lt;name&gt;.</summary>
+            public string DatasetFolder { get; set; }
+
+            /// <summary>A planted fault: the instance maps are the mean of each pixel's sample ids (a filtered downsample), not their majority.</summary>
+            public bool BlendIds { get; set; }
+        }
+
+        /// <summary>
+        /// The layout's objects as the Unity layer would describe them: the target "Analytic" holds Ball (the opaque
+        /// sphere, tag Sphere), Glass (tag Sphere) and Slab (tag Ground), in the order <see cref="AnalyticScene"/>'s ids
+        /// follow; listed here in another order, since ids must not depend on it.
+        /// </summary>
+        public static SceneObjectInfo[] LabelObjects()
+        {
+            var target = new SceneNode("Analytic", 0);
+            return new[]
+            {
+                new SceneObjectInfo(new[] { target, new SceneNode("Slab", 2, "Ground", "Default") }, 1),
+                new SceneObjectInfo(new[] { target, new SceneNode("Ball", 0, "Sphere", "Default") }, 1),
+                new SceneObjectInfo(new[] { target, new SceneNode("Glass", 1, "Sphere", "TransparentFX") }, 1),
+            };
         }
 
         static readonly Vector3d Centre = new Vector3d(1, 2, 3);
@@ -53,10 +81,13 @@ namespace NerfDatasetCreator.Tests
                 settings.Time.StartSeconds = 0;
                 settings.Time.EndSeconds = 1;
             }
-            var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project);
+            if (options.Labels) settings.Labels = new LabelSettings { Enabled = true, Instances = InstanceRule.Renderer, ClassFrom = ClassSource.Tag };
+            var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project, options.Shard, options.DatasetFolder);
             Assert.That(run.Problems, Is.Empty, "the test dataset's settings");
             var session = run.Begin();
             var writer = new ViewFileWriter(run.Plan, session, null);
+            var labels = options.Labels ? LabelTable.Build(settings.Labels, LabelObjects()) : null;
+            writer.Labels = labels;
             var scenes = new Dictionary<double, AnalyticScene>();
             foreach (var view in run.Plan.Views)
             {
@@ -65,9 +96,10 @@ namespace NerfDatasetCreator.Tests
                 var frame = Render(scene, view.TransformMatrix, run.Plan.Intrinsics, options, run.Plan.Normalisation.Scale, options.Supersampling);
                 var data = options.DataAtOutputSize && options.Supersampling > 1 ? Render(scene, view.TransformMatrix, run.Plan.Intrinsics, options, run.Plan.Normalisation.Scale, 1) : frame;
                 writer.Write(view, frame, data);
+                if (options.BlendIds) WriteBlendedIds(session, view, frame);
             }
             var cloud = options.PointCloud > 0 ? AnalyticScene.Layout(run.Plan.Normalisation, Centre).Surface(options.PointCloud) : null;
-            run.Finish(session, new Provenance(new DateTime(2026, 11, 27, 10, 0, 0, DateTimeKind.Utc)), cloud);
+            run.Finish(session, new Provenance(new DateTime(2026, 11, 27, 10, 0, 0, DateTimeKind.Utc)), cloud, labels: labels);
             return run.DatasetFolder;
         }
 
@@ -79,6 +111,7 @@ namespace NerfDatasetCreator.Tests
             {
                 ColorOverBlack = new ushort[w * h * 4], ColorOverWhite = new ushort[w * h * 4], Mask = new byte[w * h], MaskBytesPerPixel = 1,
                 Depth = new float[w * h], Normals = new float[w * h * 4], NormalsInUnityWorld = false,
+                InstanceIds = options.Labels ? new ushort[w * h] : null,
             };
             var rows = c2w.ToRows();
             var light = new Vector3d(0.3, -0.5, 0.8).Normalized();
@@ -100,6 +133,7 @@ namespace NerfDatasetCreator.Tests
                     }
                     if (double.IsInfinity(first)) continue;
                     frame.Mask[p] = 255;
+                    if (frame.InstanceIds != null && scene.Trace(o, d, 0, out _, out _, out _, out _, out var id)) frame.InstanceIds[p] = (ushort)id;
                     // The ray's camera-space z component is −1, so its parameter is the z-depth (output units).
                     var depth = options.DepthAlongRay ? first * d.Length : first;
                     frame.Depth[p] = (float)(depth / scale);
@@ -131,6 +165,23 @@ namespace NerfDatasetCreator.Tests
                 black[c] = alpha * surface + (1 - alpha) * behindBlack[c];
                 white[c] = alpha * surface + (1 - alpha) * behindWhite[c];
             }
+        }
+
+        /// <summary>The planted blend: each instance pixel the rounded mean of its k×k sample ids (background 0 included), as a filtered downsample gives.</summary>
+        static void WriteBlendedIds(DatasetWriteSession session, PlannedView view, RawFrame frame)
+        {
+            int k = frame.Supersampling, ow = frame.OutputWidth, oh = frame.OutputHeight;
+            var ids = new ushort[ow * oh];
+            for (var oy = 0; oy < oh; oy++)
+                for (var ox = 0; ox < ow; ox++)
+                {
+                    var sum = 0;
+                    var first = RowOrder.SourceBlockRow(oy, oh, k) * frame.Width + ox * k;
+                    for (var dy = 0; dy < k; dy++)
+                        for (var dx = 0; dx < k; dx++) sum += frame.InstanceIds[first + dy * frame.Width + dx];
+                    ids[oy * ow + ox] = (ushort)Math.Round(sum / (double)(k * k));
+                }
+            System.IO.File.WriteAllBytes(session.PathOf(DatasetLayout.RelativePath(view.Split, view.Index, DatasetFileKind.InstancePng)), PngWriter.EncodeGray16(ids, ow, oh));
         }
 
         /// <summary>The nearest half float to a value in [0, 1] (the colour renders' format).</summary>

@@ -51,14 +51,26 @@ namespace NerfDatasetCreator.Tests
         }
 
         /// <summary>The nearest hit along o + t·d (t &gt; 0) beyond <paramref name="after"/>: its t, normal, colour and alpha.</summary>
-        public bool Trace(Vector3d o, Vector3d d, double after, out double t, out Vector3d normal, out double[] colour, out double alpha)
+        public bool Trace(Vector3d o, Vector3d d, double after, out double t, out Vector3d normal, out double[] colour, out double alpha) =>
+            Trace(o, d, after, out t, out normal, out colour, out alpha, out _);
+
+        /// <summary>
+        /// The objects' instance ids, as a capture with labels numbers them: spheres 1, 2…, then boxes (the layout's
+        /// hierarchy order, <see cref="AnalyticDataset.LabelObjects"/>).
+        /// </summary>
+        public int ObjectCount => Spheres.Count + Boxes.Count;
+
+        /// <summary><see cref="Trace(Vector3d, Vector3d, double, out double, out Vector3d, out double[], out double)"/> that also gives the hit object's instance id (0 for none).</summary>
+        public bool Trace(Vector3d o, Vector3d d, double after, out double t, out Vector3d normal, out double[] colour, out double alpha, out int objectId)
         {
+            objectId = 0;
             t = double.PositiveInfinity;
             normal = Vector3d.Zero;
             colour = null;
             alpha = 0;
-            foreach (var s in Spheres)
+            for (var index = 0; index < Spheres.Count; index++)
             {
+                var s = Spheres[index];
                 var oc = o - s.Centre;
                 double a = Vector3d.Dot(d, d), b = Vector3d.Dot(oc, d), c = Vector3d.Dot(oc, oc) - s.Radius * s.Radius;
                 var disc = b * b - a * c;
@@ -71,11 +83,13 @@ namespace NerfDatasetCreator.Tests
                     normal = (o + d * hit - s.Centre).Normalized();
                     colour = s.Colour;
                     alpha = s.Alpha;
+                    objectId = index + 1;
                     break;
                 }
             }
-            foreach (var box in Boxes)
+            for (var index = 0; index < Boxes.Count; index++)
             {
+                var box = Boxes[index];
                 if (!Slab(o, d, box, out var near, out var far, out var axis, out var sign)) continue;
                 var hit = near > after ? near : far;
                 if (hit <= after || hit >= t) continue;
@@ -84,6 +98,7 @@ namespace NerfDatasetCreator.Tests
                 if (hit == far) normal = -normal; // inside the box (never for the test cameras)
                 colour = box.Colour;
                 alpha = 1;
+                objectId = Spheres.Count + index + 1;
             }
             // Geometry normals face the camera (two-sided surfaces are turned towards it: pixels.md §1).
             if (colour != null && Vector3d.Dot(normal, d) > 0) normal = -normal;
