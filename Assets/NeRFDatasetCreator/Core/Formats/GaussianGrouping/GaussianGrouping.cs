@@ -67,7 +67,7 @@ namespace NerfDatasetCreator
                 {
                     new ValidationProblem("--to gaussian-grouping", instanceIds.Count + " objects",
                         "is more than the " + MaxObjects + " objects an 8-bit Gaussian Grouping mask can name (its loader reads the mask as 8-bit class indices).",
-                        "Capture with coarser instances (labels.instances \"prefabInstance\" or \"targetChild\"), or a smaller part of the scene."),
+                        "Capture with coarser instances (labels.instances \"prefab\" or \"child\"), or a smaller part of the scene."),
                 });
             var values = new Dictionary<int, byte>();
             var sorted = new List<int>(instanceIds);
