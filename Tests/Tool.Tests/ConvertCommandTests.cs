@@ -203,7 +203,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(Centres(json).Take(100), Is.EqualTo(Centres(Json(Path.Combine(lego, "transforms_train.json")))).Within(1e-9));
         }
 
-        [TestCase(new[] { "convert", "ds", "--to", "blender" }, "--to = blender: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs.")]
+        [TestCase(new[] { "convert", "ds", "--to", "blender" }, "--to = blender: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping.")]
         [TestCase(new[] { "convert", "ds" }, "convert needs --to nerfstudio|colmap|ngp")]
         [TestCase(new[] { "convert", "--to", "ngp" }, "convert needs exactly one dataset folder")]
         public void UsageErrorsExitTwo(string[] args, string error)

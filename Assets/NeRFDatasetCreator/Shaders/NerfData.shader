@@ -1,6 +1,7 @@
 // The mask, depth and normal passes of a capture, drawn by DataPassRenderer with CommandBuffer.DrawRenderer outside
 // any camera's render loop (no pipeline pass, prepass or renderer feature is involved; see
-// Documentation~/capture.md, "The data passes"). Pass 0 = mask, 1 = depth, 2 = normal.
+// Documentation~/capture.md, "The data passes"). Pass 0 = mask, 1 = depth, 2 = normal, 3 = labels (instance and
+// class ids, Documentation~/maintainers/labels-capture.md).
 //
 // One material of this shader stands in for each source material, with the source's cull mode and alpha clipping
 // copied in by the Editor from Core's DataPassRules: `Cull [_NerfCull]` (UnityEngine.Rendering.CullMode numbers),
@@ -25,6 +26,12 @@ Shader "Hidden/NerfDatasetCreator/Data"
     float _NerfClip;
     float _NerfCutoff;
     float _NerfColorAlpha;
+    // The ids of the renderer being drawn, set by DataPassRenderer with CommandBuffer.SetGlobalVector before its draws:
+    // (instance low byte, instance high byte, class low byte, class high byte), each byte b as b / 255. Deliberately
+    // not in the Properties block: "Global properties are used if a shader needs them but the material does not have
+    // them defined (for example, if the shader does not expose them in Properties block)" (Scripting API
+    // Shader.SetGlobalVector), so the one data material per source material serves every renderer that shares it.
+    float4 _NerfLabelIds;
 
     struct appdata
     {
@@ -137,6 +144,30 @@ Shader "Hidden/NerfDatasetCreator/Data"
                 float3 viewNormal = mul((float3x3)UNITY_MATRIX_V, worldNormal);
                 if (dot(viewNormal, towardsCamera) < 0) worldNormal = -worldNormal;
                 return float4(worldNormal, 1);
+            }
+            ENDCG
+        }
+
+        // Labels: the drawn renderer's instance and class ids as exact integers in an R8G8B8A8_UNorm target (no sRGB,
+        // no MSAA, no blending): R, G = instance id low and high byte, B, A = class id low and high byte; the clear
+        // (0, 0, 0, 0) is id 0, the background. b / 255 written to an 8-bit UNORM channel is stored as b (float to
+        // UNORM rounds to the nearest step), so the readback gives the bytes back exactly. The same vertex code, cull
+        // mode, clip and depth test as the other passes, so the ids cover exactly the mask's samples.
+        Pass
+        {
+            Name "Labels"
+            Cull [_NerfCull]
+            ZWrite On
+            ZTest LEqual
+            Blend Off
+
+            CGPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            float4 frag(v2f i) : SV_Target
+            {
+                ClipLikeTheSource(i.uv);
+                return _NerfLabelIds;
             }
             ENDCG
         }

@@ -126,7 +126,7 @@ namespace NerfDatasetCreator
 
         static void Convert(ToolInvocation result, Dictionary<string, string> options, List<string> positionals)
         {
-            RefuseUnknownOptions(result, options, "to", "out", "depths", "binary", "points", "min-track");
+            RefuseUnknownOptions(result, options, "to", "out", "depths", "binary", "points", "min-track", "object");
             ColmapModelOptions(result, options);
             if (options.TryGetValue("depths", out var depths))
             {
@@ -142,6 +142,13 @@ namespace NerfDatasetCreator
                 if (problem != null) result.Errors.Add(problem.ToString()); // ValidationProblem formats its numbers with the invariant culture
                 else if (result.Depths && result.Target != ExportTarget.Colmap)
                     result.Errors.Add("--depths writes 3D Gaussian Splatting's inverse-depth maps, which read a COLMAP source: use it with --to colmap (nerfstudio and ngp exports carry depth on their own).");
+            }
+            if (options.TryGetValue("object", out var objectName))
+            {
+                if (string.IsNullOrWhiteSpace(objectName)) result.Errors.Add("--object is empty: give a labelled object's name, hierarchy path or instance id (labels.json).");
+                else if (result.Target.HasValue && result.Target != ExportTarget.Nerfstudio)
+                    result.Errors.Add("--object writes nerfstudio's per-frame mask_path: use it with --to nerfstudio (--to gaussian-grouping writes masks of every object).");
+                else result.ObjectName = objectName;
             }
             if (options.TryGetValue("out", out var output))
             {

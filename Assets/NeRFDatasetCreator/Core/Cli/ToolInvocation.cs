@@ -41,6 +41,9 @@ namespace NerfDatasetCreator
         /// <summary><c>convert --to nerfstudio|colmap|ngp|dynamic3dgs</c>.</summary>
         public ExportTarget? Target { get; internal set; }
 
+        /// <summary><c>convert --to nerfstudio --object &lt;name|id&gt;</c>: mask every frame to this labelled object; null for none.</summary>
+        public string ObjectName { get; internal set; }
+
         /// <summary><c>convert --to colmap --depths</c>: also write 3DGS's inverse-depth maps and depth_params.json.</summary>
         public bool Depths { get; internal set; }
 
@@ -79,7 +82,7 @@ namespace NerfDatasetCreator
             "  plan --config <settings.json> --out <dir>               the JSON files and a rig preview, no images\n" +
             "  validate <dir>                                          check a Blender-format dataset\n" +
             "  merge --out <dir> [--files copy|move] <shard-dir>...    join the folders of a sharded capture\n" +
-            "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs [--out <dir>] [--depths] [--binary] [--points N] [--min-track N]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures)\n" +
+            "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping [--out <dir>] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object)\n" +
             "  clean <dir> [--dry-run]                                 finish or roll back interrupted runs, remove their leftover folders\n" +
             "  check <dir> [--split S] [--json FILE] [--max-views N]   decode the images and check that alpha, masks, depth, normals, poses and point cloud agree\n" +
             "  evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj> [--gt-mesh <mesh>] [--threshold <units>]]  score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html\n" +

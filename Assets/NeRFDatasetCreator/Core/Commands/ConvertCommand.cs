@@ -14,7 +14,8 @@ namespace NerfDatasetCreator
         /// <summary>A folder with more written files than this is summarised as a count (COLMAP's image copies).</summary>
         const int FilesListedPerFolder = 5;
 
-        public static int Run(string datasetFolder, ExportTarget target, string outputFolder, TextWriter stdout, TextWriter stderr, bool depths = false, ColmapOptions colmap = null)
+        public static int Run(string datasetFolder, ExportTarget target, string outputFolder, TextWriter stdout, TextWriter stderr, bool depths = false, ColmapOptions colmap = null,
+            string objectName = null)
         {
             ConversionResult result;
             try
@@ -22,7 +23,9 @@ namespace NerfDatasetCreator
                 // An earlier convert into the same output that was killed is finished or rolled back first.
                 if (Directory.Exists(datasetFolder))
                 {
-                    var output = DatasetConverter.OutputFolder(Path.GetFullPath(datasetFolder), target, outputFolder);
+                    var output = objectName != null
+                        ? DatasetConverter.ObjectOutputFolder(Path.GetFullPath(datasetFolder), objectName, outputFolder)
+                        : DatasetConverter.OutputFolder(Path.GetFullPath(datasetFolder), target, outputFolder);
                     var recovered = Recovery.Run(output);
                     foreach (var note in recovered) stderr.WriteLine("note: " + note);
                     if (recovered.Any(n => n.Operation == "convert" && n.Finished))
@@ -31,7 +34,7 @@ namespace NerfDatasetCreator
                         return ToolExitCodes.Success;
                     }
                 }
-                result = DatasetConverter.Convert(datasetFolder, target, outputFolder, depths, colmap);
+                result = DatasetConverter.Convert(datasetFolder, target, outputFolder, depths, colmap, objectName);
             }
             catch (InvalidParameterException e)
             {

@@ -21,11 +21,12 @@ namespace NerfDatasetCreator
             new[] { ToolInvocation.EvaluateCommand, Required(datasetFolder), "--renders", Required(rendersFolder) };
 
         /// <summary><c>convert &lt;dataset&gt; --to &lt;target&gt; [--out &lt;folder&gt;] [--depths]</c>; an empty <paramref name="outputFolder"/> is the format's default place in the dataset.</summary>
-        public static string[] Convert(string datasetFolder, ExportTarget target, string outputFolder = null, bool depths = false)
+        public static string[] Convert(string datasetFolder, ExportTarget target, string outputFolder = null, bool depths = false, string objectName = null)
         {
             var args = new List<string> { ToolInvocation.ConvertCommand, Required(datasetFolder), "--to", ExportTargets.Name(target) };
             if (!string.IsNullOrWhiteSpace(outputFolder)) args.AddRange(new[] { "--out", outputFolder });
             if (depths) args.Add("--depths");
+            if (!string.IsNullOrWhiteSpace(objectName)) args.AddRange(new[] { "--object", objectName.Trim() });
             return args.ToArray();
         }
 

@@ -40,7 +40,7 @@ namespace NerfDatasetCreator
                 case ToolInvocation.PlanCommand: return PlanCommand.Run(invocation.ConfigPath, invocation.OutputFolder, stdout, stderr);
                 case ToolInvocation.ValidateCommand: return ValidateCommand.Run(invocation.DatasetFolder, stdout, stderr);
                 case ToolInvocation.MergeCommand: return MergeCommand.Run(invocation.ShardFolders, invocation.OutputFolder, invocation.MoveFiles, stdout, stderr);
-                case ToolInvocation.ConvertCommand: return ConvertCommand.Run(invocation.DatasetFolder, invocation.Target.Value, invocation.OutputFolder, stdout, stderr, invocation.Depths, invocation.ColmapModelOptions);
+                case ToolInvocation.ConvertCommand: return ConvertCommand.Run(invocation.DatasetFolder, invocation.Target.Value, invocation.OutputFolder, stdout, stderr, invocation.Depths, invocation.ColmapModelOptions, invocation.ObjectName);
                 case ToolInvocation.CleanCommand: return CleanCommand.Run(invocation.DatasetFolder, invocation.DryRun, stdout, stderr);
                 case ToolInvocation.EvaluateCommand: return EvaluateCommand.Run(invocation.Evaluation, stdout, stderr);
                 case ToolInvocation.CheckCommand: return CheckCommand.Run(invocation, stdout, stderr);

@@ -21,14 +21,54 @@ namespace NerfDatasetCreator
         /// <summary>Loads the Blender-format dataset in <paramref name="datasetDir"/> and exports it (see <see cref="Export"/>).</summary>
         /// <param name="depths">COLMAP only: also write 3DGS's inverse-depth maps and depth_params.json (<see cref="GaussianSplattingDepths"/>).</param>
         /// <param name="colmap">COLMAP only: binary or text, how many points, the minimum track length (null: the defaults).</param>
-        public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null, bool depths = false, ColmapOptions colmap = null)
+        /// <param name="objectNameOrId">nerfstudio only: mask every frame to this labelled object (<see cref="ObjectMaskExport"/>); null for none.</param>
+        public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null, bool depths = false, ColmapOptions colmap = null,
+            string objectNameOrId = null)
         {
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
             var time = target == ExportTarget.Dynamic3dgs ? null : TimeDatasetChecks.ConversionWarning(datasetDir);
             if (time != null) warnings.Add(time);
+            if (objectNameOrId != null) return ExportObject(scene, target, objectNameOrId, outDir, warnings);
             return Export(scene, target, outDir, null, null, warnings, depths, colmap);
+        }
+
+        /// <summary>Where <c>--object</c> writes: <paramref name="outDir"/>, or <c>&lt;dir&gt;/object_&lt;id&gt;</c> of the object named (resolved from labels.json).</summary>
+        public static string ObjectOutputFolder(string root, string objectNameOrId, string outDir = null)
+        {
+            if (outDir != null) return Path.GetFullPath(outDir);
+            var labels = Path.Combine(root, DatasetLayout.LabelsFileName);
+            if (!File.Exists(labels)) return ObjectMaskExport.DefaultFolder(root, 0); // Convert refuses it with the reason
+            return ObjectMaskExport.DefaultFolder(root, ObjectSelection.Find(LabelsJson.ReadFile(labels), objectNameOrId).Id);
+        }
+
+        /// <summary><c>--object</c>: a nerfstudio export whose masks keep one labelled object (<see cref="ObjectMaskExport"/>).</summary>
+        static ConversionResult ExportObject(ExportScene scene, ExportTarget target, string objectNameOrId, string outDir, List<ValidationProblem> warnings)
+        {
+            if (target != ExportTarget.Nerfstudio)
+                throw new InvalidParameterException(new[]
+                {
+                    new ValidationProblem(ObjectSelection.Option, objectNameOrId, "writes nerfstudio's per-frame mask_path, which --to " + ExportTargets.Name(target) + " has no place for.",
+                        "Use --to nerfstudio --object …, or --to gaussian-grouping for masks of every object."),
+                });
+            var labelled = LabelledDataset.Load(scene, ObjectSelection.Option);
+            var label = ObjectSelection.Find(labelled.Table, objectNameOrId);
+            var output = outDir != null ? Path.GetFullPath(outDir) : ObjectMaskExport.DefaultFolder(scene.RootDirectory, label.Id);
+            var staged = StagedOutput.Begin(output, "convert");
+            try
+            {
+                var masks = new List<string>();
+                var masked = ObjectMaskExport.WriteMasks(scene, labelled, label, output, warnings, staged, masks);
+                var result = ToNerfstudio(masked, output, warnings, staged);
+                staged.Commit();
+                return new ConversionResult(result.OutputDirectory, result.MainFile, result.WrittenFiles.Concat(masks).ToList(), result.Warnings, result.TrainCommands);
+            }
+            catch (Exception e) when (!staged.Placing && !(e is SimulatedStopException))
+            {
+                staged.Abandon();
+                throw;
+            }
         }
 
         /// <summary>
@@ -43,11 +83,13 @@ namespace NerfDatasetCreator
             warnings = warnings ?? new List<ValidationProblem>();
             if (depths && target != ExportTarget.Colmap)
                 throw new InvalidParameterException(new[] { new ValidationProblem("--depths", ExportTargets.Name(target), "is for --to colmap (3DGS reads depth maps for COLMAP sources).", "Drop --depths, or convert to colmap.") });
-            if (colmap != null && target != ExportTarget.Colmap)
+            if (colmap != null && target != ExportTarget.Colmap && target != ExportTarget.GaussianGrouping)
                 throw new InvalidParameterException(new[] { new ValidationProblem("--binary, --points, --min-track", ExportTargets.Name(target), "shape the COLMAP model only.", "Drop them, or convert to colmap.") });
             // A lens the target cannot hold is refused before anything is written (LensExports).
             InvalidParameterException.ThrowIfAny(LensExports.Refusal(scene.Lens, target, depths));
             var output = OutputFolder(scene.RootDirectory, target, outDir);
+            // Label exports need labels.json and every instance map: refused before the output folder is made.
+            var labelled = target == ExportTarget.GaussianGrouping ? LabelledDataset.Load(scene, GaussianGroupingExport.What) : null;
             // Everything is written into a working folder inside the output and moved into place when complete (StagedOutput).
             var staged = StagedOutput.Begin(output, "convert");
             try
@@ -59,6 +101,7 @@ namespace NerfDatasetCreator
                     case ExportTarget.Ngp: result = ToNgp(scene, output, sceneRadius, warnings, staged); break;
                     case ExportTarget.Colmap: result = ToColmap(scene, output, points, warnings, depths, colmap ?? ColmapOptions.Default, staged); break;
                     case ExportTarget.Dynamic3dgs: result = Dynamic3DGaussiansExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.GaussianGrouping: result = GaussianGroupingExport.Write(scene, labelled, output, points, warnings, colmap, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 staged.Commit();
@@ -80,11 +123,12 @@ namespace NerfDatasetCreator
                 case ExportTarget.Ngp: return Path.GetFullPath(Path.Combine(root, NgpWriter.FolderName));
                 case ExportTarget.Colmap: return Path.GetFullPath(Path.Combine(root, ColmapFolderName));
                 case ExportTarget.Dynamic3dgs: return Path.GetFullPath(Path.Combine(root, Dynamic3DGaussians.FolderName));
+                case ExportTarget.GaussianGrouping: return Path.GetFullPath(Path.Combine(root, GaussianGrouping.FolderName));
                 default: return Path.GetFullPath(root);
             }
         }
 
-        static ConversionResult ToNerfstudio(ExportScene scene, string outDir, List<ValidationProblem> warnings, StagedOutput staged)
+        internal static ConversionResult ToNerfstudio(ExportScene scene, string outDir, List<ValidationProblem> warnings, StagedOutput staged)
         {
             outDir = Path.GetFullPath(outDir);
             var file = Path.Combine(outDir, NerfstudioWriter.FileName);
@@ -112,7 +156,7 @@ namespace NerfDatasetCreator
             return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Ngp, warnings, staged)).ToList(), warnings);
         }
 
-        static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths, ColmapOptions options, StagedOutput staged)
+        internal static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths, ColmapOptions options, StagedOutput staged)
         {
             outDir = Path.GetFullPath(outDir);
             var sparse = Path.Combine(outDir, "sparse", "0");

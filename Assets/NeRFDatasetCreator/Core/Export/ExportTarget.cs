@@ -12,11 +12,14 @@ namespace NerfDatasetCreator
 
         /// <summary>Dynamic 3D Gaussians' per-time-step multi-view layout (<see cref="Dynamic3DGaussiansExport"/>).</summary>
         Dynamic3dgs,
+
+        /// <summary>Gaussian Grouping's COLMAP layout with per-image object masks (<see cref="GaussianGroupingExport"/>).</summary>
+        GaussianGrouping,
     }
 
     public static class ExportTargets
     {
-        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs" };
+        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping" };
 
         public static string Name(ExportTarget target) => Names[(int)target];
 

@@ -24,6 +24,10 @@ namespace NerfDatasetCreator
                         "Undistort the images to a pinhole first, or convert to nerfstudio, ngp or colmap, which carry the lens.");
                 case ExportTarget.Ngp:
                     return NgpWriter.Refusal(lens);
+                case ExportTarget.GaussianGrouping:
+                    return new ValidationProblem("--to", "gaussian-grouping",
+                        "cannot hold lens distortion: Gaussian Grouping's COLMAP reader accepts only PINHOLE and SIMPLE_PINHOLE cameras (scene/dataset_readers.py:83-93), and this dataset's images were taken through " + lens.Describe() + ".",
+                        "Undistort the images to a pinhole first, or convert to nerfstudio or colmap, which carry the lens.");
                 case ExportTarget.Colmap when depths:
                     return new ValidationProblem("--depths", lens.ColmapModelName,
                         "writes depth maps for 3DGS, whose COLMAP reader accepts only PINHOLE and SIMPLE_PINHOLE cameras, and this dataset's lens is " + lens.Describe() + ".",

@@ -27,6 +27,9 @@ namespace NerfDatasetCreator
         public const string Overwrite = "overwrite";
         public const string Loaders = "loaders";
         public const string Normalisation = "normalisation";
+
+        /// <summary>The <c>"labels"</c> section (Core/Labels): shown in step 5, Outputs.</summary>
+        public const string Labels = "labels";
         public const string NormalisedTargetRadius = "normalisedTargetRadius";
         public const string PointCloudPoints = "pointCloudPoints";
         public const string PointCloudRadius = "pointCloudRadius";
@@ -67,6 +70,9 @@ namespace NerfDatasetCreator
                 fields.Add(SplitField(split, "normal"));
                 fields.Add(SplitField(split, "mask"));
             }
+            // The Labels controls of step 5 (Editor LabelsSection); each class rule's problems sit under its row.
+            if (settings.Labels != null && settings.Labels.Enabled)
+                fields.AddRange(new[] { Labels + ".instances", Labels + ".classFrom", Labels + ".classes", Labels + ".otherClass" });
             return fields;
         }
 
@@ -100,6 +106,7 @@ namespace NerfDatasetCreator
                 return WindowStep.OutputFolder;
             if (Covers(Normalisation, field) || Covers(NormalisedTargetRadius, field) || Covers(PointCloudPoints, field) || Covers(PointCloudRadius, field))
                 return WindowStep.Outputs;
+            if (Covers(Labels, field)) return WindowStep.Outputs;
             foreach (var split in DatasetSplits.All)
             {
                 if (Covers(SplitField(split, "depth"), field) || Covers(SplitField(split, "normal"), field) || Covers(SplitField(split, "mask"), field))

@@ -50,6 +50,13 @@ namespace NerfDatasetCreator.Editor.Capture
         public const GraphicsFormat DepthFormat = GraphicsFormat.R32_SFloat;
         public const GraphicsFormat NormalFormat = GraphicsFormat.R32G32B32A32_SFloat;
 
+        /// <summary>
+        /// The labels pass's format: 8-bit UNORM RGBA holding two 16-bit ids as bytes (<see cref="CapturePasses.Labels"/>).
+        /// Not an _SRGB format, so the GPU stores the bytes the shader writes with no encoding; every GPU renders to it and
+        /// reads it back (the mask's own fallback format).
+        /// </summary>
+        public const GraphicsFormat LabelFormat = GraphicsFormat.R8G8B8A8_UNorm;
+
         /// <summary>R8_UNorm where it can be rendered to (1 byte per sample), else RGBA8 (the red channel is read).</summary>
         public static GraphicsFormat MaskFormat =>
             CanRenderTo(GraphicsFormat.R8_UNorm) ? GraphicsFormat.R8_UNorm : GraphicsFormat.R8G8B8A8_UNorm;
@@ -128,6 +135,7 @@ namespace NerfDatasetCreator.Editor.Capture
             Require(MaskFormat, "mask", passes, CapturePasses.Mask);
             Require(DepthFormat, "depth", passes, CapturePasses.Depth);
             Require(NormalFormat, "normal", passes, CapturePasses.Normal);
+            Require(LabelFormat, "labels", passes, CapturePasses.Labels);
         }
 
         static void Require(GraphicsFormat format, string pass, CapturePasses passes, CapturePasses needing)

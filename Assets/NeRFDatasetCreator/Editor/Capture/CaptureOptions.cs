@@ -71,6 +71,13 @@ namespace NerfDatasetCreator.Editor.Capture
         /// </summary>
         public System.Action<GameObject, int> BeforeView;
 
+        /// <summary>
+        /// The instance and class ids of the scene's renderers (the user's objects, not the capture's copies): with it the
+        /// capture draws the labels pass (<see cref="CapturePasses.Labels"/>), each copy with its source's ids. Null: no
+        /// labels pass. Filled by <c>SceneLabels</c> from Core's label table.
+        /// </summary>
+        public IReadOnlyDictionary<Renderer, RendererLabelIds> Labels;
+
         public int SupersampledWidth => Width * Supersampling;
         public int SupersampledHeight => Height * Supersampling;
         public int DataWidth => DepthAndNormalAtOutputSize ? Width : SupersampledWidth;
@@ -118,8 +125,9 @@ namespace NerfDatasetCreator.Editor.Capture
 
         /// <summary>
         /// The passes rendered. Colour no longer needs the mask: its alpha comes from rendering it over black and over
-        /// white (difference matting), so the mask pass runs only when mask images are asked for.
+        /// white (difference matting), so the mask pass runs only when mask images are asked for. The labels pass runs
+        /// exactly when <see cref="Labels"/> is given.
         /// </summary>
-        public CapturePasses EffectivePasses => Passes;
+        public CapturePasses EffectivePasses => Labels != null ? Passes | CapturePasses.Labels : Passes & ~CapturePasses.Labels;
     }
 }

@@ -18,6 +18,12 @@ namespace NerfDatasetCreator.Editor.Capture
         Depth = 1 << 2,
         /// <summary>Unit geometry normals in Unity's world frame, 32-bit float RGBA, (0,0,0,0) = no geometry.</summary>
         Normal = 1 << 3,
+        /// <summary>
+        /// Instance and class ids of the renderer covering each sample, at the colour resolution: 4 bytes per sample
+        /// (instance id low, high byte; class id low, high byte), 0 = background. Drawn only when the capture is given
+        /// ids (<see cref="CaptureOptions.Labels"/>); not part of <see cref="All"/>.
+        /// </summary>
+        Labels = 1 << 4,
         All = Color | Mask | Depth | Normal,
     }
 }

@@ -14,6 +14,7 @@ namespace NerfDatasetCreator.Editor.Capture
             Mask = new ExactArrayPool<byte>(samples, retained);
             Depth = new ExactArrayPool<float>(data, retained);
             Normal = new ExactArrayPool<float>(data * 4, retained);
+            Labels = new ExactArrayPool<byte>(samples * 4, retained);
         }
 
         /// <summary>RGBA half floats (R16G16B16A16_SFloat), one array per colour render.</summary>
@@ -21,6 +22,9 @@ namespace NerfDatasetCreator.Editor.Capture
         public ExactArrayPool<byte> Mask { get; }
         public ExactArrayPool<float> Depth { get; }
         public ExactArrayPool<float> Normal { get; }
+
+        /// <summary>4 bytes per sample (<see cref="CapturePasses.Labels"/>).</summary>
+        public ExactArrayPool<byte> Labels { get; }
 
         /// <summary>The release callback of a <see cref="CapturedView"/>: returns its arrays. Runs on any thread.</summary>
         public void Return(CapturedView view)
@@ -30,6 +34,7 @@ namespace NerfDatasetCreator.Editor.Capture
             Mask.Return(view.Mask);
             Depth.Return(view.Depth);
             Normal.Return(view.Normal);
+            Labels.Return(view.Labels);
         }
 
         public Action<CapturedView> ReturnCallback => Return;

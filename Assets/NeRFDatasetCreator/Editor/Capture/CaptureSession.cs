@@ -172,7 +172,8 @@ namespace NerfDatasetCreator.Editor.Capture
             _editorState.CompileShadersSynchronously();
 
             _stage = new CaptureStage(_target, _options);
-            _dataPasses = new DataPassRenderer(_stage.DataPassRenderers, _stage.Camera.cullingMask);
+            _dataPasses = new DataPassRenderer(_stage.DataPassRenderers, _stage.Camera.cullingMask,
+                (_passes & CapturePasses.Labels) != 0 ? _stage.CopyLabels : null);
             VerticalFieldOfViewDegrees = _stage.Camera.fieldOfView;
 
             UsesAsyncReadback = SystemInfo.supportsAsyncGPUReadback && !_options.ForceSynchronousReadback;
@@ -272,10 +273,11 @@ namespace NerfDatasetCreator.Editor.Capture
             }
             // The data passes draw outside the camera's render loop, so no pipeline setting can change them. What they
             // draw is decided per view, as the camera's culling decides it: BeforeView may have switched renderers.
-            if (targets.Mask != null || targets.Depth != null || targets.Normal != null) _dataPasses.PrepareView();
+            if (targets.Mask != null || targets.Depth != null || targets.Normal != null || targets.Labels != null) _dataPasses.PrepareView();
             if (targets.Mask != null) _dataPasses.Render(camera, targets.Mask, DataPassRenderer.MaskPass);
             if (targets.Depth != null) _dataPasses.Render(camera, targets.Depth, DataPassRenderer.DepthPass);
             if (targets.Normal != null) _dataPasses.Render(camera, targets.Normal, DataPassRenderer.NormalPass);
+            if (targets.Labels != null) _dataPasses.Render(camera, targets.Labels, DataPassRenderer.LabelPass);
 
             if (UsesAsyncReadback)
             {

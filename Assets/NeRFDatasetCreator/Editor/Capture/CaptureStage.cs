@@ -17,6 +17,7 @@ namespace NerfDatasetCreator.Editor.Capture
     sealed class CaptureStage : IDisposable
     {
         readonly List<Renderer> _dataPassRenderers = new List<Renderer>();
+        readonly Dictionary<Renderer, RendererLabelIds> _copyLabels = new Dictionary<Renderer, RendererLabelIds>();
         Scene _scene;
         GameObject _root;
         GameObject _cameraObject;
@@ -26,6 +27,9 @@ namespace NerfDatasetCreator.Editor.Capture
 
         /// <summary>The copies' mesh and skinned-mesh renderers the mask, depth and normal passes draw (LOD 0 only).</summary>
         public IReadOnlyList<Renderer> DataPassRenderers => _dataPassRenderers;
+
+        /// <summary>The ids of the copies' renderers, taken from their sources' (<see cref="CaptureOptions.Labels"/>); empty without labels.</summary>
+        public IReadOnlyDictionary<Renderer, RendererLabelIds> CopyLabels => _copyLabels;
 
         /// <summary>The parent of every copy in the preview scene.</summary>
         public GameObject Root => _root;
@@ -61,6 +65,7 @@ namespace NerfDatasetCreator.Editor.Capture
                     LodZero.Apply(source, copy);
                     RenderAsPosed(copy);
                     if (options.Isolation == CaptureIsolation.WholeScene) DisableProbesWithoutCubemap(copy);
+                    if (options.Labels != null) CopyLabelsOf(source, copy, options.Labels);
                 }
                 if (options.Isolation == CaptureIsolation.TargetOnly && options.CopySceneLights)
                     CopySceneLights(target);
@@ -270,6 +275,29 @@ namespace NerfDatasetCreator.Editor.Capture
 
         const string TerrainTypeName = "UnityEngine.Terrain";
 
+        /// <summary>
+        /// Gives each renderer of <paramref name="copy"/> the ids of the renderer it was copied from. <c>Object.Instantiate</c>
+        /// clones the whole hierarchy with its components (Scripting API Object.Instantiate, 2022.3: "When you clone a
+        /// GameObject or Component, all child objects and components are also cloned"), and nothing here adds or removes a renderer, so the n-th renderer of the
+        /// copy in <c>GetComponentsInChildren</c> order is the n-th of the source (as <see cref="CopyParticles"/> relies on);
+        /// the names are compared too, and a mismatch stops the capture rather than label an object with another's id.
+        /// </summary>
+        void CopyLabelsOf(GameObject source, GameObject copy, IReadOnlyDictionary<Renderer, RendererLabelIds> labels)
+        {
+            var from = source.GetComponentsInChildren<Renderer>(true);
+            var to = copy.GetComponentsInChildren<Renderer>(true);
+            if (from.Length != to.Length)
+                throw new CaptureException("The copy of '" + source.name + "' has " + to.Length + " renderers where the original has " +
+                    from.Length + ", so the labels cannot be matched to them. Please report this with your Unity version.");
+            for (var i = 0; i < from.Length; i++)
+            {
+                if (from[i].name != to[i].name || from[i].GetType() != to[i].GetType())
+                    throw new CaptureException("The copy's renderer '" + to[i].name + "' does not match the original's '" + from[i].name +
+                        "', so the labels cannot be matched to them. Please report this with your Unity version.");
+                if (labels.TryGetValue(from[i], out var ids)) _copyLabels[to[i]] = ids;
+            }
+        }
+
         static void ConfigureCamera(Camera camera, CaptureOptions options, Scene scene)
         {
             camera.enabled = false; // renders only when Render() is called
@@ -339,6 +367,7 @@ namespace NerfDatasetCreator.Editor.Capture
             if (_root != null) Object.DestroyImmediate(_root);
             if (_cameraObject != null) Object.DestroyImmediate(_cameraObject);
             _dataPassRenderers.Clear();
+            _copyLabels.Clear();
             Camera = null;
             _root = null;
             _cameraObject = null;

@@ -72,6 +72,13 @@ namespace NerfDatasetCreator.Editor.Capture
         /// </summary>
         public float[] Normal { get; internal set; }
 
+        /// <summary>
+        /// The labels pass at <see cref="Width"/> × <see cref="Height"/>, 4 bytes per sample: instance id (low byte, high
+        /// byte), class id (low byte, high byte) of the renderer covering the sample, all 0 where none does. Null when the
+        /// pass is off (<see cref="CapturePasses.Labels"/>).
+        /// </summary>
+        public byte[] Labels { get; internal set; }
+
         /// <summary>Gives the arrays back to the capture's pools. Safe to call more than once and from any thread.</summary>
         public void Release()
         {
@@ -83,6 +90,7 @@ namespace NerfDatasetCreator.Editor.Capture
             Mask = null;
             Depth = null;
             Normal = null;
+            Labels = null;
         }
     }
 }

@@ -6,7 +6,7 @@ using UnityEngine.Rendering;
 namespace NerfDatasetCreator.Editor.Capture
 {
     /// <summary>
-    /// Draws the mask, depth and normal passes of a view into the capture's render textures with a command buffer
+    /// Draws the mask, depth, normal and labels passes of a view into the capture's render textures with a command buffer
     /// executed at once (<see cref="Graphics.ExecuteCommandBuffer"/>), outside any camera's render loop: no render
     /// pipeline is involved, so URP's depth priming, depth/normal prepasses, MSAA, SSAO and other renderer features,
     /// Forward+ and Deferred cannot change them, and Built-in and URP draw them the same way. The reasoning and the
@@ -17,6 +17,9 @@ namespace NerfDatasetCreator.Editor.Capture
         public const int MaskPass = 0;
         public const int DepthPass = 1;
         public const int NormalPass = 2;
+        public const int LabelPass = 3;
+
+        static readonly int LabelIdsId = Shader.PropertyToID("_NerfLabelIds");
 
         readonly struct Draw
         {
@@ -35,16 +38,22 @@ namespace NerfDatasetCreator.Editor.Capture
         readonly List<Renderer> _renderers = new List<Renderer>();
         readonly int _cullingMask;
         readonly List<Draw> _draws = new List<Draw>();
+        readonly IReadOnlyDictionary<Renderer, RendererLabelIds> _labels;
         DataPassMaterials _materials;
         CommandBuffer _commands;
 
         /// <param name="renderers">The mesh and skinned-mesh renderers of the capture's copies, enabled or not.</param>
         /// <param name="cullingMask">The capture camera's culling mask: a renderer on a layer it excludes is in no pass.</param>
-        public DataPassRenderer(IEnumerable<Renderer> renderers, int cullingMask)
+        /// <param name="labels">
+        /// The ids each of <paramref name="renderers"/> is drawn with in the labels pass; a renderer without an entry is
+        /// drawn with id 0 (it still hides what is behind it). Null when the capture has no labels pass.
+        /// </param>
+        public DataPassRenderer(IEnumerable<Renderer> renderers, int cullingMask, IReadOnlyDictionary<Renderer, RendererLabelIds> labels = null)
         {
             try
             {
                 _cullingMask = cullingMask;
+                _labels = labels;
                 _materials = new DataPassMaterials();
                 _commands = new CommandBuffer { name = "NeRF Dataset Creator data pass" };
                 foreach (var renderer in renderers)
@@ -120,11 +129,26 @@ namespace NerfDatasetCreator.Editor.Capture
             // The non-GPU projection: Unity converts it for the graphics API and the render target, as URP relies on
             // (URP 14.0.8 ScriptableRenderer.cs:158-163). worldToCameraMatrix is the OpenGL-convention view matrix.
             _commands.SetViewProjectionMatrices(camera.worldToCameraMatrix, camera.projectionMatrix);
+            Renderer idsSetFor = null;
             foreach (var draw in _draws)
-                if (draw.Renderer != null)
-                    _commands.DrawRenderer(draw.Renderer, draw.Material, draw.Submesh, pass);
+            {
+                if (draw.Renderer == null) continue;
+                if (pass == LabelPass && draw.Renderer != idsSetFor)
+                {
+                    // A global, set in the buffer before this renderer's draws: commands run in order, and the data
+                    // materials do not declare _NerfLabelIds, so the global is what the shader reads (Scripting API
+                    // Shader.SetGlobalVector; CommandBuffer.SetGlobalVector, UCR 2022.3
+                    // Runtime/Export/Graphics/RenderingCommandBuffer.bindings.cs:771, 6000.0 :825).
+                    _commands.SetGlobalVector(LabelIdsId, IdsOf(draw.Renderer).Encoded);
+                    idsSetFor = draw.Renderer;
+                }
+                _commands.DrawRenderer(draw.Renderer, draw.Material, draw.Submesh, pass);
+            }
             Graphics.ExecuteCommandBuffer(_commands);
         }
+
+        RendererLabelIds IdsOf(Renderer renderer) =>
+            _labels != null && _labels.TryGetValue(renderer, out var ids) ? ids : default;
 
         public void Dispose()
         {

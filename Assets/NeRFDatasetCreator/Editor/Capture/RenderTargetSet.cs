@@ -18,6 +18,9 @@ namespace NerfDatasetCreator.Editor.Capture
         public RenderTexture Depth { get; private set; }
         public RenderTexture Normal { get; private set; }
 
+        /// <summary>The labels pass (<see cref="CapturePasses.Labels"/>), at the colour's supersampled size: one id pair per sample.</summary>
+        public RenderTexture Labels { get; private set; }
+
         public RenderTargetSet(CaptureOptions options, CapturePasses passes, int index)
         {
             try
@@ -36,6 +39,8 @@ namespace NerfDatasetCreator.Editor.Capture
                     Depth = Create(dw, dh, CaptureEnvironment.DepthFormat, "NeRF depth" + suffix);
                 if ((passes & CapturePasses.Normal) != 0)
                     Normal = Create(dw, dh, CaptureEnvironment.NormalFormat, "NeRF normal" + suffix);
+                if ((passes & CapturePasses.Labels) != 0)
+                    Labels = Create(w, h, CaptureEnvironment.LabelFormat, "NeRF labels" + suffix);
             }
             catch
             {
@@ -71,7 +76,8 @@ namespace NerfDatasetCreator.Editor.Capture
             Destroy(Mask);
             Destroy(Depth);
             Destroy(Normal);
-            ColorOverBlack = ColorOverWhite = Mask = Depth = Normal = null;
+            Destroy(Labels);
+            ColorOverBlack = ColorOverWhite = Mask = Depth = Normal = Labels = null;
         }
 
         static void Destroy(RenderTexture texture)

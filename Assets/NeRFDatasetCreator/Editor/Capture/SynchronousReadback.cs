@@ -11,7 +11,7 @@ namespace NerfDatasetCreator.Editor.Capture
     /// </summary>
     sealed class SynchronousReadback : IDisposable
     {
-        Texture2D _black, _white, _mask, _depth, _normal;
+        Texture2D _black, _white, _mask, _depth, _normal, _labels;
 
         public void ReadInto(RenderTargetSet targets, CapturedView view, CapturePools pools)
         {
@@ -32,6 +32,7 @@ namespace NerfDatasetCreator.Editor.Capture
                 }
                 if (targets.Depth != null) view.Depth = ViewReadback.CopyExact(Read(targets.Depth, ref _depth).GetRawTextureData<float>(), pools.Depth, "depth");
                 if (targets.Normal != null) view.Normal = ViewReadback.CopyExact(Read(targets.Normal, ref _normal).GetRawTextureData<float>(), pools.Normal, "normal");
+                if (targets.Labels != null) view.Labels = ViewReadback.CopyExact(Read(targets.Labels, ref _labels).GetRawTextureData<byte>(), pools.Labels, "labels");
             }
             finally
             {
@@ -60,9 +61,9 @@ namespace NerfDatasetCreator.Editor.Capture
 
         public void Dispose()
         {
-            foreach (var texture in new[] { _black, _white, _mask, _depth, _normal })
+            foreach (var texture in new[] { _black, _white, _mask, _depth, _normal, _labels })
                 if (texture != null) Object.DestroyImmediate(texture);
-            _black = _white = _mask = _depth = _normal = null;
+            _black = _white = _mask = _depth = _normal = _labels = null;
         }
     }
 }

@@ -12,7 +12,7 @@ namespace NerfDatasetCreator.Editor.Capture
     /// </summary>
     sealed class ViewReadback
     {
-        AsyncGPUReadbackRequest _black, _white, _mask, _depth, _normal;
+        AsyncGPUReadbackRequest _black, _white, _mask, _depth, _normal, _labels;
         RenderTargetSet _targets;
 
         public int ViewIndex { get; private set; }
@@ -33,6 +33,7 @@ namespace NerfDatasetCreator.Editor.Capture
             if (targets.Mask != null) _mask = AsyncGPUReadback.Request(targets.Mask, 0, targets.Mask.graphicsFormat);
             if (targets.Depth != null) _depth = AsyncGPUReadback.Request(targets.Depth, 0, targets.Depth.graphicsFormat);
             if (targets.Normal != null) _normal = AsyncGPUReadback.Request(targets.Normal, 0, targets.Normal.graphicsFormat);
+            if (targets.Labels != null) _labels = AsyncGPUReadback.Request(targets.Labels, 0, targets.Labels.graphicsFormat);
             IsPending = true;
         }
 
@@ -54,6 +55,8 @@ namespace NerfDatasetCreator.Editor.Capture
                 view.Depth = Copy<float>(_depth, pools.Depth, "depth");
             if (_targets.Normal != null)
                 view.Normal = Copy<float>(_normal, pools.Normal, "normal");
+            if (_targets.Labels != null)
+                view.Labels = Copy<byte>(_labels, pools.Labels, "labels");
             _targets = null;
         }
 

@@ -144,7 +144,7 @@ namespace NerfDatasetCreator.Editor
             if (ActiveCapture.IsRunning || PostCaptureCheck.IsRunning) return Busy();
             var preflight = PreflightCapture.Run(prepared);
             if (preflight != null) return preflight;
-            var unreadable = ReadSurface(prepared);
+            var unreadable = ReadSurface(prepared) ?? CollectLabels(prepared);
             if (unreadable != null) return unreadable;
             DatasetWriteSession session;
             try
@@ -156,7 +156,7 @@ namespace NerfDatasetCreator.Editor
                 return Failed(prepared, null, e, 0);
             }
             LogEarlierRuns(session);
-            var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode);
+            var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode) { Labels = prepared.Labels };
             using (var consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files)))
             {
                 DatasetCaptureResult result;
@@ -207,7 +207,7 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         public static CaptureSession StartInBackground(PreparedCapture prepared, Action<DatasetCaptureResult> done, string tool = "unity-editor")
         {
-            var refused = !prepared.IsValid ? Refused(prepared.Problems) : ActiveCapture.IsRunning || PostCaptureCheck.IsRunning ? Busy() : PreflightCapture.Run(prepared) ?? ReadSurface(prepared);
+            var refused = !prepared.IsValid ? Refused(prepared.Problems) : ActiveCapture.IsRunning || PostCaptureCheck.IsRunning ? Busy() : PreflightCapture.Run(prepared) ?? ReadSurface(prepared) ?? CollectLabels(prepared);
             if (refused != null)
             {
                 Log(refused);
@@ -220,7 +220,7 @@ namespace NerfDatasetCreator.Editor
             {
                 session = prepared.Run.Begin();
                 LogEarlierRuns(session);
-                var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode);
+                var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode) { Labels = prepared.Labels };
                 consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files));
                 var written = consumer;
                 return CaptureRunner.RunInBackground(prepared.Target, Poses(prepared), prepared.Options, consumer, (summary, error) =>
@@ -291,7 +291,7 @@ namespace NerfDatasetCreator.Editor
                     provenance.Statistics["points3d"] = cloud.Count;
                 }
                 // The geometry pack is the target's surface, so an environment capture's whole scene is left out of it.
-                prepared.Run.Finish(session, provenance, cloud, WritesGeometryPack(prepared) ? prepared.Surface : null);
+                prepared.Run.Finish(session, provenance, cloud, WritesGeometryPack(prepared) ? prepared.Surface : null, prepared.Labels);
             }
             catch (Exception e)
             {
@@ -375,6 +375,32 @@ namespace NerfDatasetCreator.Editor
             if (!prepared.Run.WritesPointCloud) return null; // a target without meshes simply has no geometry pack
             var problems = TargetPointCloud.Check(prepared.Run.Plan, prepared.Surface);
             return problems.Count == 0 ? null : Refused(problems);
+        }
+
+        /// <summary>
+        /// The label table and each renderer's ids (<see cref="SceneLabels"/>), read when the run starts with the scene as it
+        /// is captured, when the settings write id maps; a result that refuses the run when the rules give too many ids,
+        /// null when all is well. Without labels the capture has no labels pass.
+        /// </summary>
+        static DatasetCaptureResult CollectLabels(PreparedCapture prepared)
+        {
+            var settings = prepared.Run.Plan.Settings.Labels;
+            prepared.Labels = null;
+            prepared.Options.Labels = null;
+            if (settings == null || !settings.Enabled) return null;
+            try
+            {
+                var template = prepared.Options.TemplateCamera;
+                var labels = SceneLabels.Collect(settings, prepared.Target, prepared.Options.Isolation, template != null ? template.cullingMask : ~0,
+                    prepared.Run.Plan.Time != null);
+                prepared.Labels = labels.Table;
+                prepared.Options.Labels = labels.Ids;
+                return null;
+            }
+            catch (InvalidParameterException e)
+            {
+                return Refused(e.Problems);
+            }
         }
 
         /// <summary>

@@ -37,7 +37,22 @@ namespace NerfDatasetCreator.Editor
             data.Normals = view.Normal;
             // The normal pass writes Unity world normals; the encoders relabel them as they read them.
             data.NormalsInUnityWorld = true;
+            if (view.Labels != null) colour.InstanceIds = InstanceIds(view.Labels);
             _files.Write(_views[view.ViewIndex], colour, data);
+        }
+
+        [System.ThreadStatic] static ushort[] ids;
+
+        /// <summary>
+        /// The instance id of each sample from the labels pass's bytes (low, high; <see cref="RendererLabelIds"/>), into this
+        /// thread's buffer: the writer has encoded the maps before <see cref="ViewFileWriter.Write"/> returns.
+        /// </summary>
+        static ushort[] InstanceIds(byte[] labels)
+        {
+            var samples = labels.Length / 4;
+            if (ids == null || ids.Length != samples) ids = new ushort[samples];
+            for (var i = 0; i < samples; i++) ids[i] = (ushort)(labels[i * 4] | (labels[i * 4 + 1] << 8));
+            return ids;
         }
     }
 }

@@ -31,6 +31,9 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         internal IReadOnlyList<SurfaceMesh> Surface { get; set; }
 
+        /// <summary>The capture's label table (labels.json), made when the run starts (<see cref="SceneLabels"/>); null without labels.</summary>
+        internal LabelTable Labels { get; set; }
+
         /// <summary>Every reason the capture cannot start; empty when <see cref="IsValid"/>.</summary>
         public IReadOnlyList<ValidationProblem> Problems { get; }
 

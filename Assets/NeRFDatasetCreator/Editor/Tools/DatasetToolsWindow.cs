@@ -15,6 +15,7 @@ namespace NerfDatasetCreator.Editor
         [SerializeField] string datasetFolder = "";
         [SerializeField] string exportFolder = "";
         [SerializeField] string rendersFolder = "";
+        [SerializeField] string objectName = "";
         [SerializeField] string shardsFolder = "";
         [SerializeField] string mergedFolder = "";
         [SerializeField] bool moveFiles;
@@ -30,6 +31,7 @@ namespace NerfDatasetCreator.Editor
             ("COLMAP + depths", ExportTarget.Colmap, true, "COLMAP plus 3DGS's inverse-depth maps and depth_params.json (train.py -d); needs depth PNGs."),
             ("instant-ngp", ExportTarget.Ngp, false, "transforms.json with instant-ngp's aabb_scale, scale and offset."),
             ("Dynamic 3D Gaussians", ExportTarget.Dynamic3dgs, false, "A multi-view dynamic capture in Dynamic 3D Gaussians' layout (train_meta.json, ims/, seg/, init_pt_cld.npz)."),
+            ("Gaussian Grouping", ExportTarget.GaussianGrouping, false, "A dataset captured with labels: the COLMAP model plus object_mask/ per image, object_ids.json and the num_classes config (Documentation~/exports.md, Labels)."),
         };
 
         [MenuItem("Window/NeRF Dataset Tools")]
@@ -73,6 +75,13 @@ namespace NerfDatasetCreator.Editor
                     EditorGUILayout.EndHorizontal();
                     exportFolder = FolderField("Export into", exportFolder, "Empty: the format's default folder inside the dataset (nerfstudio/, colmap/, ngp/, dynamic3dgs/). Nothing is ever overwritten.", f => exportFolder = f);
                     DrawExportButtons(datasetFolder, exportFolder);
+                    // convert --to nerfstudio --object: masks of one labelled object (Documentation~/exports.md, Labels).
+                    EditorGUILayout.BeginHorizontal();
+                    objectName = EditorGUILayout.TextField(new GUIContent("One object", "A labelled object's name, hierarchy path or instance id (labels.json)."), objectName);
+                    using (new EditorGUI.DisabledScope(string.IsNullOrWhiteSpace(objectName)))
+                        if (GUILayout.Button(new GUIContent("nerfstudio masks", "transforms.json whose mask_path keeps only this object, so nerfstudio trains it alone."), GUILayout.Width(130)))
+                            Run("export of " + objectName, DatasetToolArguments.Convert(datasetFolder, ExportTarget.Nerfstudio, exportFolder, objectName: objectName));
+                    EditorGUILayout.EndHorizontal();
                     rendersFolder = FolderField("Trained renders", rendersFolder, "A trainer's renders of the test split: a 3DGS model folder, ns-render dataset output, instant-ngp screenshots or r_<i>.png files (Documentation~/evaluate.md).", f => rendersFolder = f);
                     using (new EditorGUI.DisabledScope(string.IsNullOrWhiteSpace(rendersFolder)))
                         if (GUILayout.Button(new GUIContent("Evaluate renders", "nerf-dataset evaluate: PSNR, SSIM, masked PSNR, depth and normal errors; writes metrics.json, error maps and report.html beside the renders.")))

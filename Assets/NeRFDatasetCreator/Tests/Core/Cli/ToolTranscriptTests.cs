@@ -71,12 +71,15 @@ namespace NerfDatasetCreator.Tests
             Assert.That(DatasetToolArguments.Convert("d", ExportTarget.Colmap, null, depths: true), Is.EqualTo(new[] { "convert", "d", "--to", "colmap", "--depths" }));
             Assert.That(DatasetToolArguments.Convert("d", ExportTarget.Ngp, "out"), Is.EqualTo(new[] { "convert", "d", "--to", "ngp", "--out", "out" }));
             Assert.That(DatasetToolArguments.Convert("d", ExportTarget.Dynamic3dgs), Is.EqualTo(new[] { "convert", "d", "--to", "dynamic3dgs" }));
+            Assert.That(DatasetToolArguments.Convert("d", ExportTarget.GaussianGrouping), Is.EqualTo(new[] { "convert", "d", "--to", "gaussian-grouping" }));
+            Assert.That(DatasetToolArguments.Convert("d", ExportTarget.Nerfstudio, objectName: " Street/Car 3 "), Is.EqualTo(new[] { "convert", "d", "--to", "nerfstudio", "--object", "Street/Car 3" }));
             Assert.That(DatasetToolArguments.Merge("m", new[] { "s0", "s1" }, moveFiles: true), Is.EqualTo(new[] { "merge", "--out", "m", "--files", "move", "s0", "s1" }));
             Assert.That(DatasetToolArguments.Clean("NeRFDatasets", dryRun: true), Is.EqualTo(new[] { "clean", "NeRFDatasets", "--dry-run" }));
             // Every one parses without a usage error.
             foreach (var args in new[]
                      {
                          DatasetToolArguments.Validate("d"), DatasetToolArguments.Convert("d", ExportTarget.Colmap, "o", true),
+                         DatasetToolArguments.Convert("d", ExportTarget.Nerfstudio, objectName: "Car"),
                          DatasetToolArguments.Merge("m", new[] { "s0" }, true), DatasetToolArguments.Clean("c", true),
                      })
                 Assert.That(ToolCommandLine.Parse(args).Errors, Is.Empty, string.Join(" ", args));

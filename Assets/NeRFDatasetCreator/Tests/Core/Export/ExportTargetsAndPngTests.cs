@@ -20,7 +20,7 @@ namespace NerfDatasetCreator.Tests
         {
             Assert.That(ExportTargets.Parse("blender", out var problem), Is.Null);
             Assert.That(problem.Field, Is.EqualTo("--to"));
-            Assert.That(problem.Fix, Is.EqualTo("Use one of: nerfstudio, colmap, ngp, dynamic3dgs."));
+            Assert.That(problem.Fix, Is.EqualTo("Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping."));
         }
     }
 }

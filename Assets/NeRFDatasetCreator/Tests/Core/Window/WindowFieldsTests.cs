@@ -43,6 +43,16 @@ namespace NerfDatasetCreator.Tests
                 s.Time.StartSeconds = 3;
                 s.Time.EndSeconds = 2;
             }, "time.end", WindowStep.Time);
+            yield return Case("labels by name without rules", s =>
+            {
+                s.Labels.Enabled = true;
+                s.Labels.ClassFrom = ClassSource.Name;
+            }, "labels.classes", WindowStep.Outputs);
+            yield return Case("labels rule without a class", s =>
+            {
+                s.Labels.Enabled = true;
+                s.Labels.Classes.Add(new ClassRule("Car*", ""));
+            }, "labels.classes[0].class", WindowStep.Outputs);
             yield return Case("halo elevation", s =>
             {
                 s.Train.Formation.Kind = FormationKind.Halo;

@@ -14,6 +14,12 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         public bool GammaEncoded;
         public byte[] Mask;
         public float[] Depth, Normal;
+        public byte[] Labels;
+
+        /// <summary>The instance id of a sample of the labels pass (<see cref="RendererLabelIds.InstanceAt"/>).</summary>
+        public int InstanceAt(int x, int y) => RendererLabelIds.InstanceAt(Labels, y * Width + x);
+
+        public int ClassAt(int x, int y) => RendererLabelIds.ClassAt(Labels, y * Width + x);
 
         public byte MaskAt(int x, int y) => Mask[y * Width + x];
         public float DepthAt(int x, int y) => Depth[y * DataWidth + x];
@@ -69,6 +75,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
                 Mask = (byte[])view.Mask?.Clone(),
                 Depth = (float[])view.Depth?.Clone(),
                 Normal = (float[])view.Normal?.Clone(),
+                Labels = (byte[])view.Labels?.Clone(),
             });
             view.Release();
         }
