@@ -119,6 +119,9 @@ namespace NerfDatasetCreator
         /// <summary>Dynamic capture: what drives time, its range and steps, and how cameras meet it (static by default).</summary>
         public TimeSettings Time = new TimeSettings();
 
+        /// <summary>The lens the images are taken through (issue 27); none by default (a pinhole).</summary>
+        public LensSettings Lens = new LensSettings();
+
         public SplitSettings Split(DatasetSplit split)
         {
             switch (split)
@@ -140,6 +143,7 @@ namespace NerfDatasetCreator
             copy.Test = Test?.Clone();
             copy.Background = Background?.Clone();
             copy.Time = Time?.Clone();
+            copy.Lens = Lens?.Clone();
             return copy;
         }
 
