@@ -22,9 +22,10 @@ namespace NerfDatasetCreator
     /// <item>Depth: z along the camera axis. The output pixel's ray and the wide sample's ray are the same ray of the same
     /// camera (shared centre and axes), and z is a property of the surface point, not of the projection, so the wide
     /// render's z at that ray is the output's z with no conversion. It is never blended across a discontinuity: where
-    /// the four neighbours are all surface and within <see cref="SmoothDepth"/> of each other, 1/z is interpolated
-    /// bilinearly (exact on a plane, whose 1/z is affine in pinhole image coordinates); anywhere else the nearest
-    /// sample's z is taken as it is.</item>
+    /// the four neighbours are all surface and either within <see cref="SmoothDepth"/> of each other or changing evenly
+    /// (each step across the cell at most <see cref="EvenStep"/>× the steps just outside it, so a steep but smooth
+    /// surface counts and a step does not), 1/z is interpolated bilinearly (exact on a plane, whose 1/z is affine in
+    /// pinhole image coordinates); anywhere else the nearest sample's z is taken as it is.</item>
     /// <item>Normals: the nearest sample's (a world-frame normal of the surface point on that ray; the two cameras share
     /// their rotation, so no frame changes), never blended.</item>
     /// <item>Mask: coverage interpolated bilinearly (coverage is linear, so the k×k mean after it is still coverage).</item>
@@ -37,6 +38,9 @@ namespace NerfDatasetCreator
     {
         /// <summary>Four depth samples whose largest is within this fraction of their smallest are one smooth surface.</summary>
         public const float SmoothDepth = 0.02f;
+
+        /// <summary>A step in 1/z across a cell this many times larger than both steps beside it is a discontinuity.</summary>
+        public const float EvenStep = 2f;
 
         readonly Dictionary<int, LensSampleMap> _maps = new Dictionary<int, LensSampleMap>();
 
@@ -125,7 +129,7 @@ namespace NerfDatasetCreator
                     var coverage = m[i00 * maskStride] * w00 + m[i10 * maskStride] * w10 + m[i01 * maskStride] * w01 + m[i11 * maskStride] * w11;
                     result.Mask[p] = (byte)Math.Min(255, (int)(coverage + 0.5f));
                 }
-                if (wide.Depth != null) result.Depth[p] = Depth(wide.Depth, i00, i10, i01, i11, w00, w10, w01, w11, nearest);
+                if (wide.Depth != null) result.Depth[p] = Depth(wide.Depth, map.WideWidth, map.WideHeight, i00, dx, dy, w00, w10, w01, w11, nearest);
                 if (wide.Normals != null) Array.Copy(wide.Normals, nearest * npp, result.Normals, p * npp, npp);
             }
             return result;
@@ -158,14 +162,30 @@ namespace NerfDatasetCreator
         static float Mix(float[] halves, ushort[] s, int i00, int i10, int i01, int i11, int c, float w00, float w10, float w01, float w11) =>
             halves[s[i00 * 4 + c]] * w00 + halves[s[i10 * 4 + c]] * w10 + halves[s[i01 * 4 + c]] * w01 + halves[s[i11 * 4 + c]] * w11;
 
-        static float Depth(float[] z, int i00, int i10, int i01, int i11, float w00, float w10, float w01, float w11, int nearest)
+        static float Depth(float[] z, int width, int height, int i00, int dx, int dy, float w00, float w10, float w01, float w11, int nearest)
         {
-            float a = z[i00], b = z[i10], c = z[i01], d = z[i11];
+            float a = z[i00], b = z[i00 + dx], c = z[i00 + dy], d = z[i00 + dx + dy];
             var lo = Math.Min(Math.Min(a, b), Math.Min(c, d));
             var hi = Math.Max(Math.Max(a, b), Math.Max(c, d));
-            if (!(lo > 0) || hi > lo * (1 + SmoothDepth)) return z[nearest];
+            if (!(lo > 0)) return z[nearest];
+            if (hi > lo * (1 + SmoothDepth))
+            {
+                // Steeper than the fast path allows: interpolate only when all four edges of the cell change evenly.
+                int x0 = i00 % width, y0 = i00 / width;
+                if (dx == 0 || dy == 0 || x0 < 1 || y0 < 1 || x0 + 2 >= width || y0 + 2 >= height) return z[nearest];
+                if (!Even(z, i00, 1) || !Even(z, i00 + width, 1) || !Even(z, i00, width) || !Even(z, i00 + 1, width)) return z[nearest];
+            }
             // 1/z is affine in pinhole image coordinates on a plane: interpolating it is exact there.
             return 1f / (w00 / a + w10 / b + w01 / c + w11 / d);
+        }
+
+        /// <summary>Whether 1/z steps from sample i to i + s no more than <see cref="EvenStep"/>× as much as from i − s to i or from i + s to i + 2s.</summary>
+        static bool Even(float[] z, int i, int s)
+        {
+            float before = z[i - s], p = z[i], q = z[i + s], after = z[i + 2 * s];
+            if (!(before > 0) || !(after > 0)) return false;
+            float mid = Math.Abs(1 / q - 1 / p), left = Math.Abs(1 / p - 1 / before), right = Math.Abs(1 / after - 1 / q);
+            return mid <= EvenStep * Math.Max(left, right) + 1e-6f / p;
         }
 
         static string Text(long v) => v.ToString(CultureInfo.InvariantCulture);
