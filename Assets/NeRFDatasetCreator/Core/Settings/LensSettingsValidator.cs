@@ -64,11 +64,15 @@ namespace NerfDatasetCreator
                 var cover = LensCapture.WideRender(settings.Lens.ToDistortion(), settings.Intrinsics());
                 if (cover == null) return problems;
                 var k = Math.Max(1, settings.Supersampling);
-                var side = Math.Max(cover.Width, cover.Height) * (long)k;
-                if (side > DatasetSettings.MaxRenderSize)
+                // The capture renders the wide view at the output's limits: DatasetSettings.MaxSize per side (the capture
+                // options' own), times the supersampling within a render texture's MaxRenderSize.
+                var largest = Math.Max(cover.Width, cover.Height);
+                var side = largest * (long)k;
+                if (largest > DatasetSettings.MaxSize || side > DatasetSettings.MaxRenderSize)
                     problems.Add(new ValidationProblem("lens", lens.ToDistortion().Describe(),
                         "needs a wide pinhole render of " + Text(cover.Width) + " × " + Text(cover.Height) + " pixels to cover the " + Text(settings.Width) + " × " + Text(settings.Height) +
-                        " frame; at supersampling " + Text(k) + " that is " + side.ToString(CultureInfo.InvariantCulture) + " pixels across, beyond the " + Text(DatasetSettings.MaxRenderSize) + " a render texture can have.",
+                        " frame; at supersampling " + Text(k) + " that is " + side.ToString(CultureInfo.InvariantCulture) + " pixels across, beyond the " + Text(DatasetSettings.MaxSize) +
+                        " a side may have or the " + Text(DatasetSettings.MaxRenderSize) + " a render texture can have.",
                         "Lower the supersampling or the resolution, or use a milder lens."));
             }
             catch (InvalidParameterException e)
