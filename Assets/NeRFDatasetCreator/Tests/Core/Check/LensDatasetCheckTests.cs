@@ -68,6 +68,14 @@ namespace NerfDatasetCreator.Tests
             var config = JObject.Parse(File.ReadAllText(Path.Combine(_barrel, "dataset_config.json")));
             Assert.That((string)config["settings"]["lens"]["model"], Is.EqualTo("opencv"));
             Assert.That((double)config["settings"]["lens"]["k1"], Is.EqualTo(-0.2));
+            var validation = DatasetValidator.Validate(_barrel);
+            Assert.That(validation.Problems.Select(p => p.ToString()), Is.Empty, "nerf-dataset validate accepts the lens keys");
+            // convert reads the same keys and carries the lens (ConvertLensTests covers each target's file).
+            var converted = DatasetConverter.Convert(_barrel, ExportTarget.Nerfstudio, _temp.Combine("barrel-ns"));
+            var ns = JObject.Parse(File.ReadAllText(converted.MainFile));
+            Assert.That((string)ns["camera_model"], Is.EqualTo("OPENCV"));
+            Assert.That((double)ns["k1"], Is.EqualTo(-0.2));
+            Assert.That((double)ns["p2"], Is.EqualTo(-0.003));
         }
 
         [Test]
