@@ -6,15 +6,19 @@ namespace NerfDatasetCreator
     /// A view's pinhole camera as the loaders read it: f = 0.5·W / tan(0.5·camera_angle_x) for both axes (square
     /// pixels), principal point (cx, cy) in continuous pixels (top-left corner at 0, rows down), and the OpenGL camera
     /// of <c>transform_matrix</c> (+X right, +Y up, looking along −Z). Pixel (u, v)'s centre is (u + ½, v + ½)
-    /// (conventions.md, Intrinsics). The matrix is held as plain doubles: these run per pixel.
+    /// (conventions.md, Intrinsics). The matrix is held as plain doubles: these run per pixel. With a
+    /// <see cref="Lens"/> (the transforms files' <c>camera_model</c> and k1…p2, <see cref="TransformsLens"/>), pixels
+    /// and rays go through it exactly as the loaders do: pixel → normalised (x_d, y_d) with y down → undistort → ray;
+    /// and a point → (x, y) → distort → pixel.
     /// </summary>
     public sealed class CheckCamera
     {
         // Camera-to-world rotation (row-major) and centre.
         readonly double r00, r01, r02, r10, r11, r12, r20, r21, r22, tx, ty, tz;
 
-        public CheckCamera(Matrix4x4d cameraToWorld, int width, int height, double focal, double cx, double cy)
+        public CheckCamera(Matrix4x4d cameraToWorld, int width, int height, double focal, double cx, double cy, LensDistortion lens = null)
         {
+            Lens = lens;
             Width = width;
             Height = height;
             Focal = focal;
@@ -31,16 +35,38 @@ namespace NerfDatasetCreator
         public double Cx { get; }
         public double Cy { get; }
 
+        /// <summary>The lens the images were taken through, or null for a pinhole.</summary>
+        public LensDistortion Lens { get; }
+
         /// <summary>The viewing direction in the world (the camera's −Z).</summary>
         public Vector3d Forward => new Vector3d(-r02, -r12, -r22);
 
-        /// <summary>The world point on pixel (<paramref name="u"/>, <paramref name="v"/>) (continuous coordinates) at z-depth <paramref name="z"/>.</summary>
-        public void BackProject(double u, double v, double z, out double x, out double y, out double w)
+        /// <summary>
+        /// The world point on pixel (<paramref name="u"/>, <paramref name="v"/>) (continuous coordinates) at z-depth
+        /// <paramref name="z"/>. False (and a point on the undistorted guess) where the lens images no ray.
+        /// </summary>
+        public bool BackProject(double u, double v, double z, out double x, out double y, out double w)
         {
-            double cxr = (u - Cx) / Focal * z, cyr = -(v - Cy) / Focal * z, czr = -z;
+            var ok = CameraPoint(u, v, z, out var cxr, out var cyr, out var czr);
             x = r00 * cxr + r01 * cyr + r02 * czr + tx;
             y = r10 * cxr + r11 * cyr + r12 * czr + ty;
             w = r20 * cxr + r21 * cyr + r22 * czr + tz;
+            return ok;
+        }
+
+        /// <summary>
+        /// The camera-frame (OpenGL: y up, looking along −z) point on pixel (<paramref name="u"/>, <paramref name="v"/>)
+        /// at z-depth <paramref name="z"/>, through the lens when there is one.
+        /// </summary>
+        public bool CameraPoint(double u, double v, double z, out double x, out double y, out double w)
+        {
+            double nx = (u - Cx) / Focal, ny = (v - Cy) / Focal; // OpenCV normalised, y down
+            var ok = true;
+            if (Lens != null) ok = Lens.Undistort(nx, ny, out nx, out ny);
+            x = nx * z;
+            y = -ny * z;
+            w = -z;
+            return ok;
         }
 
         /// <summary>
@@ -60,8 +86,17 @@ namespace NerfDatasetCreator
                 u = v = 0;
                 return false;
             }
-            u = Focal * px / z + Cx;
-            v = -Focal * py / z + Cy;
+            double nx = px / z, ny = -py / z; // OpenCV normalised, y down
+            if (Lens != null)
+            {
+                // Only the unfolded part of the lens images a point (as LensDistortion.Undistort accepts it): beyond it the
+                // polynomial turns back and would put a point outside the view into the frame.
+                Lens.Jacobian(nx, ny, out var a, out var b, out var c, out var d);
+                if (!(a * d - b * c > 0 && a + d > 0)) { u = v = 0; return false; }
+                Lens.Distort(nx, ny, out nx, out ny);
+            }
+            u = Focal * nx + Cx;
+            v = Focal * ny + Cy;
             return true;
         }
 

@@ -72,6 +72,14 @@ namespace NerfDatasetCreator
                 result.Problems.Add(new DatasetCheckProblem(CheckName, file, -1, "camera_angle_x " + DatasetCheckResult.Number(angle, "R") +
                     " differs from the other splits' " + DatasetCheckResult.Number(result.CameraAngleX.Value, "R") + "; NeRF reads one for all."));
             var depthScale = JsonValues.TryNumber(json["integer_depth_scale"], out var ds) && ds > 0 ? ds : DefaultDepthScale;
+            // The lens the loaders read from this file (camera_model, is_fisheye, k1…p2): every projecting check uses it.
+            var lensProblems = new List<ValidationProblem>();
+            var lens = TransformsLens.Read(json, file, lensProblems);
+            if (lensProblems.Count > 0)
+            {
+                foreach (var p in lensProblems) result.Problems.Add(new DatasetCheckProblem(CheckName, file, -1, p.Field + " = " + p.Value + ": " + p.Reason));
+                return;
+            }
             if (!(json["frames"] is JArray frames)) return;
             var picked = Pick(frames.Count, maxViews);
             foreach (var index in picked)
@@ -96,6 +104,7 @@ namespace NerfDatasetCreator
                 if (JsonValues.TryNumber(frame[TimeKeys.Time], out var t)) view.Time = t;
                 result.Views.Add(view);
                 SetCamera(view, json, angle);
+                view.Lens = lens;
             }
         }
 
@@ -112,7 +121,7 @@ namespace NerfDatasetCreator
         public static DatasetCheckProblem Complete(CheckView view, int width, int height)
         {
             var focal = CheckCamera.FocalOf(width, view.PendingAngle);
-            view.Camera = new CheckCamera(view.CameraToWorld, width, height, focal, view.PendingCx ?? width / 2.0, view.PendingCy ?? height / 2.0);
+            view.Camera = new CheckCamera(view.CameraToWorld, width, height, focal, view.PendingCx ?? width / 2.0, view.PendingCy ?? height / 2.0, view.Lens);
             if (view.PendingFlX is double flX && Math.Abs(flX - focal) > FocalTolerance * focal)
                 return new DatasetCheckProblem(CheckName, DatasetLayout.TransformsFileName(view.Split), -1,
                     "fl_x = " + DatasetCheckResult.Number(flX) + " px but camera_angle_x gives " + DatasetCheckResult.Number(focal) +

@@ -23,6 +23,9 @@ namespace NerfDatasetCreator
         /// <summary>The frame's <c>time</c> (dynamic datasets), or null.</summary>
         public double? Time;
 
+        /// <summary>The lens of the frame's transforms file (<see cref="TransformsLens"/>), or null for a pinhole.</summary>
+        public LensDistortion Lens;
+
         /// <summary>Output units per step of the depth PNG (<c>integer_depth_scale</c>).</summary>
         public double DepthScale;
 

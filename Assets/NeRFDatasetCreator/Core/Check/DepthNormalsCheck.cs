@@ -107,12 +107,9 @@ namespace NerfDatasetCreator
             return Math.Max(d1, d2) <= 3 * Math.Min(d1, d2) + 3;
         }
 
-        static void Point(CheckCamera camera, double u, double v, double z, out double x, out double y, out double w)
-        {
-            x = (u + 0.5 - camera.Cx) / camera.Focal * z;
-            y = -(v + 0.5 - camera.Cy) / camera.Focal * z;
-            w = -z;
-        }
+        // The pixel's ray through the written lens (CheckCamera.CameraPoint): with a distorted lens, a pinhole ray would bend planes.
+        static void Point(CheckCamera camera, double u, double v, double z, out double x, out double y, out double w) =>
+            camera.CameraPoint(u + 0.5, v + 0.5, z, out x, out y, out w);
 
         static bool Normal(byte[] rgb, int i, out double x, out double y, out double z)
         {

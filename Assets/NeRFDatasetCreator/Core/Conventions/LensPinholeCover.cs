@@ -82,6 +82,35 @@ namespace NerfDatasetCreator
             return new LensPinholeCover(focal, left, right, top, bottom, (int)width, (int)height, focal * left, focal * top);
         }
 
+        /// <summary>
+        /// The same render made symmetric about its centre (principal point at exactly (W/2, H/2)), which is what a
+        /// Unity camera renders from a vertical field of view and an aspect alone (no lens shift, no projection
+        /// matrix of our own): each half-extent becomes the larger of its two sides, the focal stays. Throws like
+        /// <see cref="For"/> when the symmetric render exceeds the caps.
+        /// </summary>
+        public LensPinholeCover Centred()
+        {
+            double hx = Math.Max(Left, Right), hy = Math.Max(Top, Bottom);
+            var width = Math.Ceiling(2 * Focal * hx - 1e-6);
+            var height = Math.Ceiling(2 * Focal * hy - 1e-6);
+            // The visible half-extents of the rounded-up size, which the field of view is built from.
+            hx = width / (2 * Focal);
+            hy = height / (2 * Focal);
+            var fovX = 2 * Math.Atan(hx) * 180 / Math.PI;
+            var fovY = 2 * Math.Atan(hy) * 180 / Math.PI;
+            if (fovX > MaxFovDegrees || fovY > MaxFovDegrees || width > CameraIntrinsics.MaxSize || height > CameraIntrinsics.MaxSize)
+                throw new InvalidParameterException(new[] { new ValidationProblem("lens", "wide render " + Format(width) + " × " + Format(height),
+                    "would span " + Format(fovX) + "° × " + Format(fovY) + "° centred on the axis; the caps are " + MaxFovDegrees + "° and " + CameraIntrinsics.MaxSize + " pixels.",
+                    "Use a smaller output resolution, a narrower field of view or a milder lens.") });
+            return new LensPinholeCover(Focal, hx, hx, hy, hy, (int)width, (int)height, width / 2, height / 2);
+        }
+
+        /// <summary>Vertical field of view of a centred render in degrees (Unity's <c>Camera.fieldOfView</c>): 2·atan(H / 2f).</summary>
+        public double VerticalFovDegrees => 2 * Math.Atan(Height / (2 * Focal)) * 180 / Math.PI;
+
+        /// <summary>Horizontal field of view in degrees of a centred render: 2·atan(W / 2f).</summary>
+        public double HorizontalFovDegrees => 2 * Math.Atan(Width / (2 * Focal)) * 180 / Math.PI;
+
         static double LargestSingularValue(LensDistortion lens, double x, double y)
         {
             lens.Jacobian(x, y, out var a, out var b, out var c, out var d);

@@ -14,6 +14,37 @@ namespace NerfDatasetCreator
         /// <summary>The table itself, for hot loops (do not modify).</summary>
         internal static float[] Lookup => Table;
 
+        /// <summary>
+        /// The nearest half to <paramref name="value"/> (round half to even, as a GPU's float-to-half conversion);
+        /// beyond the largest half (65504) infinity, NaN stays NaN.
+        /// </summary>
+        public static ushort FromFloat(float value)
+        {
+            var bits = System.BitConverter.SingleToInt32Bits(value);
+            var sign = (bits >> 16) & 0x8000;
+            var exponent = (bits >> 23) & 0xFF;
+            var mantissa = bits & 0x7FFFFF;
+            if (exponent == 0xFF) return (ushort)(sign | 0x7C00 | (mantissa != 0 ? 0x200 : 0));
+            var e = exponent - 127 + 15;
+            if (e >= 31) return (ushort)(sign | 0x7C00);
+            if (e <= 0)
+            {
+                if (e < -10) return (ushort)sign; // below half the smallest subnormal
+                mantissa |= 0x800000; // the implicit 1
+                var shift = 14 - e;
+                var half = mantissa >> shift;
+                var rest = mantissa & ((1 << shift) - 1);
+                var midway = 1 << (shift - 1);
+                if (rest > midway || (rest == midway && (half & 1) != 0)) half++;
+                return (ushort)(sign | half);
+            }
+            var result = (e << 10) | (mantissa >> 13);
+            var remainder = mantissa & 0x1FFF;
+            // A carry out of the mantissa moves to the exponent (and to infinity at the top), as it should.
+            if (remainder > 0x1000 || (remainder == 0x1000 && (result & 1) != 0)) result++;
+            return (ushort)(sign | result);
+        }
+
         static float[] BuildTable()
         {
             var table = new float[65536];

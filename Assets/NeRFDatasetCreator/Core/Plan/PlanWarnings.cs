@@ -38,6 +38,7 @@ namespace NerfDatasetCreator
             if ((loaders & TargetLoaders.InstantNgp) != 0) AabbScale.ForRadius(reach, warnings);
             if ((loaders & TargetLoaders.Nerfstudio) != 0) warnings.AddRange(SplitExtrasCheck.For(settings));
             warnings.AddRange(DynamicLoaderLimits.For(settings));
+            warnings.AddRange(LensSettingsValidator.Warnings(settings));
             return warnings;
         }
 

@@ -122,6 +122,9 @@ namespace NerfDatasetCreator
         /// <summary>Instance and semantic id maps with labels.json (<see cref="LabelSettings"/>; off by default).</summary>
         public LabelSettings Labels = new LabelSettings();
 
+        /// <summary>The lens the images are taken through (issue 27); none by default (a pinhole).</summary>
+        public LensSettings Lens = new LensSettings();
+
         public SplitSettings Split(DatasetSplit split)
         {
             switch (split)
@@ -144,6 +147,7 @@ namespace NerfDatasetCreator
             copy.Background = Background?.Clone();
             copy.Time = Time?.Clone();
             copy.Labels = Labels?.Clone();
+            copy.Lens = Lens?.Clone();
             return copy;
         }
 

@@ -74,6 +74,8 @@ namespace NerfDatasetCreator
                 w.WritePropertyName("geometryPack");
                 w.WriteValue(false);
             }
+            // Only with a lens, so pinhole configs keep their keys.
+            if (s.Lens != null && s.Lens.Enabled) LensSettingsJson.WriteObject(w, s.Lens);
             if (s.Time != null && s.Time.Enabled)
             {
                 w.WritePropertyName(TimeSettingsJson.Key);
@@ -283,6 +285,7 @@ namespace NerfDatasetCreator
                 ["geometryPack"] = (t, p) => s.GeometryPack = reader.Bool(t, p),
                 [TimeSettingsJson.Key] = (t, p) => TimeSettingsJson.Read(reader, t, p, s.Time),
                 [LabelSettingsJson.Key] = (t, p) => LabelSettingsJson.Read(reader, t, p, s.Labels),
+                [LensSettings.Key] = (t, p) => LensSettingsJson.Read(reader, t, p, s.Lens),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),

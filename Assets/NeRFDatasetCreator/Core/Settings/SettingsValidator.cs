@@ -90,6 +90,7 @@ namespace NerfDatasetCreator
                 ValidateSplit(settings, split, problems);
             problems.AddRange(TimeSettingsValidator.Validate(settings));
             problems.AddRange(LabelSettingsValidator.Validate(settings));
+            problems.AddRange(LensSettingsValidator.Validate(settings));
 
             if (settings.Loaders == TargetLoaders.None)
                 Add(new ValidationProblem("loaders", "[]", "is empty, so nothing checks that the splits suit any loader.",

@@ -32,6 +32,13 @@ namespace NerfDatasetCreator.Editor.Capture
         /// </summary>
         public double VerticalFieldOfViewDegrees = 39.6;
 
+        /// <summary>
+        /// A capture through a lens renders the wide pinhole of Core's <see cref="LensCapture.WideRender"/>: this vertical
+        /// field of view (degrees) replaces <see cref="VerticalFieldOfViewDegrees"/> and the template camera's, and
+        /// <see cref="Width"/> × <see cref="Height"/> are the wide render's size. Null without a lens.
+        /// </summary>
+        public double? WideVerticalFieldOfViewDegrees;
+
         public double NearClip = 0.05;
         public double FarClip = 1000.0;
 
@@ -93,7 +100,10 @@ namespace NerfDatasetCreator.Editor.Capture
                 ValidationProblem.OutsideRange("capture.supersampling", Supersampling, 1, MaxSupersampling),
                 ValidationProblem.OutsideRange("capture.readbacksInFlight", ReadbacksInFlight, 1, MaxReadbacksInFlight),
             };
-            if (TemplateCamera != null)
+            if (WideVerticalFieldOfViewDegrees is double wide)
+                // The template's framing was checked at the output size; the wide render has its own field of view.
+                problems.Add(ValidationProblem.OutsideRange("capture.wideVerticalFieldOfViewDegrees", wide, 0.01, LensPinholeCover.MaxFovDegrees, "degrees"));
+            else if (TemplateCamera != null)
                 problems.Add(TemplateFraming.Problem(TemplateCamera, Width, Height, TemplateCamera.name));
             else
             {

@@ -316,7 +316,12 @@ namespace NerfDatasetCreator.Editor.Capture
             camera.enabled = false;
             camera.usePhysicalProperties = false; // fieldOfView is then exactly the vertical FOV: no gate fit, no lens shift
             // A physical template's framing at W × H, reproduced by that plain vertical FOV (refused where it cannot be).
-            if (options.TemplateCamera != null)
+            if (options.WideVerticalFieldOfViewDegrees is double wide)
+                // A lens capture's wide pinhole (Core LensCapture.WideRender): fieldOfView is the vertical FOV and the aspect
+                // set below is W/H, so the render's focal is (H/2)/tan(fov/2) on both axes, centred — exactly the pinhole
+                // Core resamples from (Documentation~/maintainers/lens-distortion.md, "The wide render in Unity").
+                camera.fieldOfView = (float)wide;
+            else if (options.TemplateCamera != null)
                 camera.fieldOfView = (float)TemplateFraming.VerticalFieldOfView(options.TemplateCamera, options.Width, options.Height);
             // CopyFrom also brings the template's projection mode and viewport rect: an orthographic template or a
             // split-screen rect would render something other than the pinhole images the transforms describe.

@@ -157,7 +157,7 @@ namespace NerfDatasetCreator.Editor
             }
             LogEarlierRuns(session);
             var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode) { Labels = prepared.Labels };
-            using (var consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files)))
+            using (var consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files, LensCapture.ResamplerFor(prepared.Run.Plan))))
             {
                 DatasetCaptureResult result;
                 try
@@ -221,7 +221,7 @@ namespace NerfDatasetCreator.Editor
                 session = prepared.Run.Begin();
                 LogEarlierRuns(session);
                 var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode) { Labels = prepared.Labels };
-                consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files));
+                consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files, LensCapture.ResamplerFor(prepared.Run.Plan)));
                 var written = consumer;
                 return CaptureRunner.RunInBackground(prepared.Target, Poses(prepared), prepared.Options, consumer, (summary, error) =>
                 {
@@ -442,7 +442,7 @@ namespace NerfDatasetCreator.Editor
             if (splits.Any(s => s.Count > 0 && s.Mask) || !sky) passes |= CapturePasses.Mask;
             if (splits.Any(s => s.Count > 0 && s.Depth != ExtraOutput.None)) passes |= CapturePasses.Depth;
             if (splits.Any(s => s.Count > 0 && s.Normal != ExtraOutput.None)) passes |= CapturePasses.Normal;
-            return new CaptureOptions
+            var options = new CaptureOptions
             {
                 Width = settings.Width,
                 Height = settings.Height,
@@ -456,6 +456,8 @@ namespace NerfDatasetCreator.Editor
                 // loaded scenes (the mask then covers all geometry), not just the target.
                 Isolation = splits.Any(s => s.Count > 0 && s.Source != null && s.Source.IsVolume) ? CaptureIsolation.WholeScene : CaptureIsolation.TargetOnly,
             };
+            LensOptions.Apply(settings, options);
+            return options;
         }
 
         /// <summary>

@@ -6,19 +6,23 @@ namespace NerfDatasetCreator.Editor
     /// <summary>
     /// The capture's worker-thread writer for datasets: wraps a view's readback arrays as Core's raw frames (no copy),
     /// marks its normals as Unity world normals (the encoders relabel them into the output world as they read them),
-    /// and hands it to Core's <see cref="ViewFileWriter"/>.
+    /// and hands it to Core's <see cref="ViewFileWriter"/> — through a lens capture's <see cref="LensResampler"/> first
+    /// (the wide render becomes the distorted frame; everything after it is unchanged).
     /// The consumer releases the view afterwards.
     /// </summary>
     sealed class DatasetViewWriter : IViewWriter
     {
         readonly IReadOnlyList<PlannedView> _views;
         readonly ViewFileWriter _files;
+        readonly LensResampler _lens;
 
         /// <param name="views">The planned views in the order their poses were given to the capture.</param>
-        public DatasetViewWriter(IReadOnlyList<PlannedView> views, ViewFileWriter files)
+        /// <param name="lens">The plan's resampler (<see cref="LensCapture.ResamplerFor"/>), or null without a lens.</param>
+        public DatasetViewWriter(IReadOnlyList<PlannedView> views, ViewFileWriter files, LensResampler lens = null)
         {
             _views = views;
             _files = files;
+            _lens = lens;
         }
 
         public void Write(CapturedView view)
@@ -38,6 +42,13 @@ namespace NerfDatasetCreator.Editor
             // The normal pass writes Unity world normals; the encoders relabel them as they read them.
             data.NormalsInUnityWorld = true;
             if (view.Labels != null) colour.InstanceIds = InstanceIds(view.Labels);
+            if (_lens != null)
+            {
+                // Stage 2 of the per-view stages (parallel.md): the wide frame resampled into the distorted one, on this worker thread.
+                var distorted = _lens.Resample(colour);
+                data = ReferenceEquals(data, colour) ? distorted : _lens.Resample(data);
+                colour = distorted;
+            }
             _files.Write(_views[view.ViewIndex], colour, data);
         }
 

@@ -10,7 +10,9 @@ namespace NerfDatasetCreator.Tests
     /// and dataset_config.json, <see cref="ViewFileWriter"/> (difference matting, mask, 16-bit depth, normals, PNG),
     /// <c>points3d.ply</c> with its record — from readbacks ray-traced per sample through NeRF's own ray formula
     /// (<see cref="NerfRays"/>) from each view's written <c>transform_matrix</c> and <c>camera_angle_x</c>: exactly what a
-    /// correct capture of <see cref="AnalyticScene"/> must give.
+    /// correct capture of <see cref="AnalyticScene"/> must give. With a lens, each sample is traced along its distorted
+    /// pixel's ray (the written model's undistortion), or — <see cref="Options.ThroughWideRender"/> — the capture's own
+    /// path is taken: a wide pinhole render (<see cref="LensCapture.WideRender"/>) resampled by <see cref="LensResampler"/>.
     /// </summary>
     static class AnalyticDataset
     {
@@ -41,6 +43,18 @@ namespace NerfDatasetCreator.Tests
 
             /// <summary>A planted fault: the instance maps are the mean of each pixel's sample ids (a filtered downsample), not their majority.</summary>
             public bool BlendIds { get; set; }
+
+            /// <summary>The lens setting (none by default).</summary>
+            public LensSettings Lens = new LensSettings();
+
+            /// <summary>With a lens: render the wide pinhole and resample it (the capture's path) instead of tracing each distorted ray.</summary>
+            public bool ThroughWideRender { get; set; }
+
+            /// <summary>The camera's vertical field of view and distance (Unity units); 0 for the defaults (39.6°, 4 or 8 normalised).</summary>
+            public double VerticalFovDegrees, Distance;
+
+            /// <summary>The loaders the settings list (all by default).</summary>
+            public TargetLoaders Loaders = TargetLoaders.All;
         }
 
         /// <summary>
@@ -65,7 +79,10 @@ namespace NerfDatasetCreator.Tests
         /// <summary>Renders the dataset into <paramref name="project"/>/NeRFDatasets/<paramref name="name"/> and returns its folder.</summary>
         public static string Write(string project, string name, Options options)
         {
-            var settings = new DatasetSettings { Name = name, Width = options.Width, Height = options.Height, Supersampling = options.Supersampling, Distance = options.Normalised ? 8 : 4 };
+            var settings = new DatasetSettings { Name = name, Width = options.Width, Height = options.Height, Supersampling = options.Supersampling, Distance = options.Normalised ? 8 : 4,
+                Lens = options.Lens.Clone(), Loaders = options.Loaders };
+            if (options.VerticalFovDegrees > 0) settings.Camera.VerticalFovDegrees = options.VerticalFovDegrees;
+            if (options.Distance > 0) settings.Distance = options.Distance;
             if (options.Normalised) settings.Normalisation = NormalisationMode.NerfSyntheticScale; // s = 4 / 8
             foreach (var (split, count) in new[] { (settings.Train, options.Train), (settings.Val, options.Val), (settings.Test, options.Test) })
             {
@@ -88,13 +105,22 @@ namespace NerfDatasetCreator.Tests
             var writer = new ViewFileWriter(run.Plan, session, null);
             var labels = options.Labels ? LabelTable.Build(settings.Labels, LabelObjects()) : null;
             writer.Labels = labels;
+            var lens = settings.Lens.ToDistortion();
+            var resampler = options.ThroughWideRender ? LensCapture.ResamplerFor(run.Plan) : null;
             var scenes = new Dictionary<double, AnalyticScene>();
             foreach (var view in run.Plan.Views)
             {
                 var time = view.Time?.Normalised ?? 0;
                 if (!scenes.TryGetValue(time, out var scene)) scenes[time] = scene = AnalyticScene.Layout(run.Plan.Normalisation, Centre, time);
-                var frame = Render(scene, view.TransformMatrix, run.Plan.Intrinsics, options, run.Plan.Normalisation.Scale, options.Supersampling);
-                var data = options.DataAtOutputSize && options.Supersampling > 1 ? Render(scene, view.TransformMatrix, run.Plan.Intrinsics, options, run.Plan.Normalisation.Scale, 1) : frame;
+                var rays = resampler != null ? Pinhole(view.TransformMatrix, resampler.Wide) : Rays(view.TransformMatrix, run.Plan.Intrinsics, lens);
+                int w = resampler != null ? resampler.Wide.Width : run.Plan.Intrinsics.Width, h = resampler != null ? resampler.Wide.Height : run.Plan.Intrinsics.Height;
+                var frame = Render(scene, rays, w, h, options, run.Plan.Normalisation.Scale, options.Supersampling);
+                var data = options.DataAtOutputSize && options.Supersampling > 1 ? Render(scene, rays, w, h, options, run.Plan.Normalisation.Scale, 1) : frame;
+                if (resampler != null)
+                {
+                    frame = resampler.Resample(frame);
+                    data = data.Supersampling == frame.Supersampling ? frame : resampler.Resample(data);
+                }
                 writer.Write(view, frame, data);
                 if (options.BlendIds) WriteBlendedIds(session, view, frame);
             }
@@ -103,26 +129,59 @@ namespace NerfDatasetCreator.Tests
             return run.DatasetFolder;
         }
 
-        /// <summary>The readbacks of one view: colour over black and white (halves), mask, eye z-depth (metric) and output-world normals, rows bottom first.</summary>
-        static RawFrame Render(AnalyticScene scene, Matrix4x4d c2w, CameraIntrinsics intrinsics, Options options, double scale, int k)
+        /// <summary>A ray through continuous pixel (i, j) (top-left origin) whose camera-frame z component is −1, so its parameter is z-depth.</summary>
+        public delegate void RayOf(double i, double j, out Vector3d origin, out Vector3d direction);
+
+        /// <summary>NeRF's pinhole ray (<see cref="NerfRays"/>) without a lens; with one, the distorted pixel's ray: (i, j) → normalised (x_d, y_d), y down → undistort.</summary>
+        public static RayOf Rays(Matrix4x4d c2w, CameraIntrinsics intrinsics, LensDistortion lens)
         {
-            int w = intrinsics.Width * k, h = intrinsics.Height * k;
+            var rows = c2w.ToRows();
+            if (lens == null)
+                return (double i, double j, out Vector3d o, out Vector3d d) =>
+                {
+                    NerfRays.Ray(rows, intrinsics.CameraAngleX, intrinsics.Width, intrinsics.Height, i, j, out var origin, out var direction);
+                    o = new Vector3d(origin[0], origin[1], origin[2]);
+                    d = new Vector3d(direction[0], direction[1], direction[2]);
+                };
+            return (double i, double j, out Vector3d o, out Vector3d d) =>
+            {
+                Assert.That(lens.Undistort((i - intrinsics.Cx) / intrinsics.FlX, (j - intrinsics.Cy) / intrinsics.FlY, out var x, out var y), Is.True, "the lens images every pixel");
+                o = new Vector3d(rows[0][3], rows[1][3], rows[2][3]);
+                d = Camera(rows, x, -y, -1);
+            };
+        }
+
+        /// <summary>The wide pinhole render's ray: focal F, principal point (Cx, Cy) of <paramref name="wide"/>.</summary>
+        public static RayOf Pinhole(Matrix4x4d c2w, LensPinholeCover wide)
+        {
+            var rows = c2w.ToRows();
+            return (double i, double j, out Vector3d o, out Vector3d d) =>
+            {
+                o = new Vector3d(rows[0][3], rows[1][3], rows[2][3]);
+                d = Camera(rows, (i - wide.Cx) / wide.Focal, -(j - wide.Cy) / wide.Focal, -1);
+            };
+        }
+
+        static Vector3d Camera(double[][] rows, double x, double y, double z) => new Vector3d(
+            rows[0][0] * x + rows[0][1] * y + rows[0][2] * z, rows[1][0] * x + rows[1][1] * y + rows[1][2] * z, rows[2][0] * x + rows[2][1] * y + rows[2][2] * z);
+
+        /// <summary>The readbacks of one view of <paramref name="width"/> × <paramref name="height"/> pixels at supersampling <paramref name="k"/>: colour over black and white (halves), mask, eye z-depth (metric) and output-world normals, rows bottom first.</summary>
+        internal static RawFrame Render(AnalyticScene scene, RayOf rays, int width, int height, Options options, double scale, int k)
+        {
+            int w = width * k, h = height * k;
             var frame = new RawFrame(w, h, k)
             {
                 ColorOverBlack = new ushort[w * h * 4], ColorOverWhite = new ushort[w * h * 4], Mask = new byte[w * h], MaskBytesPerPixel = 1,
                 Depth = new float[w * h], Normals = new float[w * h * 4], NormalsInUnityWorld = false,
                 InstanceIds = options.Labels ? new ushort[w * h] : null,
             };
-            var rows = c2w.ToRows();
             var light = new Vector3d(0.3, -0.5, 0.8).Normalized();
             for (var ys = 0; ys < h; ys++)
                 for (var xs = 0; xs < w; xs++)
                 {
                     // The sample's position in output pixels (continuous, top-left origin), and NeRF's ray through it.
                     double i = (xs + 0.5) / k, j = (ys + 0.5) / k;
-                    NerfRays.Ray(rows, intrinsics.CameraAngleX, intrinsics.Width, intrinsics.Height, i, j, out var origin, out var direction);
-                    var o = new Vector3d(origin[0], origin[1], origin[2]);
-                    var d = new Vector3d(direction[0], direction[1], direction[2]);
+                    rays(i, j, out var o, out var d);
                     var p = ((h - 1 - ys) * w + xs); // readbacks are bottom row first
                     double[] black = { 0, 0, 0 }, white = { 1, 1, 1 };
                     Composite(scene, o, d, 0, light, black, white, out var first, out var normal, 3);
