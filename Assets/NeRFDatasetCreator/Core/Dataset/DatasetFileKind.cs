@@ -15,5 +15,7 @@ namespace NerfDatasetCreator
         NormalExr,
         /// <summary>8-bit grey PNG, 255 = target, 0 = background (coverage in between): <c>r_7_mask_0000.png</c>.</summary>
         MaskPng,
+        /// <summary>The colour image without exposure and white balance (Documentation~/exposure.md), same encoding as <see cref="Color"/>: <c>r_7_clean.png</c>.</summary>
+        CleanColor,
     }
 }

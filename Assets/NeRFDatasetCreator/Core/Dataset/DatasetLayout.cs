@@ -47,6 +47,7 @@ namespace NerfDatasetCreator
                 case DatasetFileKind.NormalPng: return "_normal_0000.png";
                 case DatasetFileKind.NormalExr: return "_normal_0000.exr";
                 case DatasetFileKind.MaskPng: return "_mask_0000.png";
+                case DatasetFileKind.CleanColor: return "_clean.png";
                 default: throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a dataset file kind");
             }
         }
@@ -60,6 +61,14 @@ namespace NerfDatasetCreator
             if (ExtraOutputs.HasPng(split.Normal)) kinds.Add(DatasetFileKind.NormalPng);
             if (ExtraOutputs.HasExr(split.Normal)) kinds.Add(DatasetFileKind.NormalExr);
             if (split.Mask) kinds.Add(DatasetFileKind.MaskPng);
+            return kinds;
+        }
+
+        /// <summary>The files every view of <paramref name="split"/> produces: the split's own, and the clean image of a split with exposure.</summary>
+        public static IReadOnlyList<DatasetFileKind> FileKinds(DatasetSettings settings, DatasetSplit split)
+        {
+            var kinds = (List<DatasetFileKind>)FileKinds(settings.Split(split));
+            if (ExposurePlan.Of(settings)?.WritesClean(split) == true) kinds.Add(DatasetFileKind.CleanColor);
             return kinds;
         }
     }

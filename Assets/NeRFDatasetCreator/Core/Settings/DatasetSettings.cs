@@ -119,6 +119,9 @@ namespace NerfDatasetCreator
         /// <summary>Dynamic capture: what drives time, its range and steps, and how cameras meet it (static by default).</summary>
         public TimeSettings Time = new TimeSettings();
 
+        /// <summary>Per-view exposure and white balance of the colour images (off by default): <see cref="ExposureSettings"/>.</summary>
+        public ExposureSettings Exposure = new ExposureSettings();
+
         public SplitSettings Split(DatasetSplit split)
         {
             switch (split)
@@ -140,6 +143,7 @@ namespace NerfDatasetCreator
             copy.Test = Test?.Clone();
             copy.Background = Background?.Clone();
             copy.Time = Time?.Clone();
+            copy.Exposure = Exposure?.Clone();
             return copy;
         }
 

@@ -29,6 +29,9 @@ namespace NerfDatasetCreator.Tests
 
             /// <summary>A planted fault: the depth pass holds the distance along each pixel's ray instead of z.</summary>
             public bool DepthAlongRay { get; set; }
+
+            /// <summary>Further settings (e.g. exposure), applied last.</summary>
+            public Action<DatasetSettings> Configure { get; set; }
         }
 
         static readonly Vector3d Centre = new Vector3d(1, 2, 3);
@@ -53,6 +56,7 @@ namespace NerfDatasetCreator.Tests
                 settings.Time.StartSeconds = 0;
                 settings.Time.EndSeconds = 1;
             }
+            options.Configure?.Invoke(settings);
             var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project);
             Assert.That(run.Problems, Is.Empty, "the test dataset's settings");
             var session = run.Begin();
