@@ -28,6 +28,7 @@ namespace NerfDatasetCreator.Editor
                     ValidationMessages.For(c, WindowFields.SplitField(split, "mask"));
                 }
             }
+            ExposureSection.Draw(c);
             DrawScene(c);
             // "preflight" in config files (Documentation~/settings.md).
             c.Settings.Preflight = EditorGUILayout.Toggle(new GUIContent("Preflight check",

@@ -74,10 +74,10 @@ namespace NerfDatasetCreator.Tests
         public void CleanFileIsPlannedOnlyForModifiedSplits()
         {
             var s = Settings();
-            Assert.That(DatasetLayout.FileKinds(s, DatasetSplit.Train), Does.Contain(DatasetFileKind.CleanColor));
-            Assert.That(DatasetLayout.FileKinds(s, DatasetSplit.Test), Does.Not.Contain(DatasetFileKind.CleanColor));
+            Assert.That(DatasetLayout.FileKinds(s, DatasetSplit.Train), Has.Member(DatasetFileKind.CleanColor));
+            Assert.That(DatasetLayout.FileKinds(s, DatasetSplit.Test), Has.No.Member(DatasetFileKind.CleanColor));
             s.Exposure.WriteClean = false;
-            Assert.That(DatasetLayout.FileKinds(s, DatasetSplit.Train), Does.Not.Contain(DatasetFileKind.CleanColor));
+            Assert.That(DatasetLayout.FileKinds(s, DatasetSplit.Train), Has.No.Member(DatasetFileKind.CleanColor));
             Assert.That(DatasetLayout.RelativePath(DatasetSplit.Train, 7, DatasetFileKind.CleanColor), Is.EqualTo("train/r_7_clean.png"));
         }
     }

@@ -74,6 +74,21 @@ namespace NerfDatasetCreator.Tests
             Assert.That(Fields(s), Is.Empty, "off: nothing is checked");
         }
 
+        [Test]
+        public void WindowShowsEveryExposureProblemInTheOutputsStep()
+        {
+            var s = new DatasetSettings();
+            s.Exposure.Mode = ExposureMode.Random;
+            s.Exposure.EvMax = 30;
+            s.Exposure.Train = false;
+            var problems = SettingsValidator.Validate(s);
+            var fieldProblems = new FieldProblems(problems, null);
+            Assert.That(problems.Select(p => p.Field), Has.Member("exposure.evRange[1]"));
+            Assert.That(fieldProblems.NotCoveredBy(WindowFields.All(s)), Is.Empty, "a problem without a control in the window");
+            Assert.That(WindowFields.StepOf("exposure.evRange[1]"), Is.EqualTo(WindowStep.Outputs));
+            Assert.That(fieldProblems.FirstIncompleteStep(), Is.EqualTo(WindowStep.Outputs));
+        }
+
         static IEnumerable<string> Fields(DatasetSettings s) => SettingsValidator.Validate(s).Where(p => p.Field.StartsWith("exposure")).Select(p => p.Field);
     }
 }
