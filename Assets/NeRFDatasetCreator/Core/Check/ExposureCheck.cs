@@ -78,11 +78,12 @@ namespace NerfDatasetCreator
                 return;
             }
             _compared++;
-            var outside = Compare(modified, unmodified, exposure, out var alphaDiffers, out var measured);
+            var outside = Compare(modified, unmodified, exposure, out var alphaDiffers);
             var share = outside / (3.0 * modified.Width * modified.Height);
             if (share > _worst) _worst = share;
             if (share > MaxMismatch)
             {
+                var measured = MeasuredScales(modified, unmodified);
                 problems.Add(new DatasetCheckProblem(Name, file, view.Frame, CheckFigures.Percent(share) + " of the colour samples are not " + clean +
                     " × 2^exposure_ev × white_balance in linear light (exposure_ev " + DatasetCheckResult.Number(exposure.Ev) + ", white_balance [" +
                     Triple(exposure.R, exposure.G, exposure.B) + "] give the linear scales [" + Triple(exposure.Scale(0), exposure.Scale(1), exposure.Scale(2)) +
@@ -164,44 +165,63 @@ namespace NerfDatasetCreator
             return true;
         }
 
-        /// <summary>Colour samples outside the rounding interval of clean × scale; whether alpha differs; the median measured linear scale per channel.</summary>
-        static int Compare(PngImage modified, PngImage clean, ViewExposure exposure, out bool alphaDiffers, out double[] measured)
+        /// <summary>The colour samples of <paramref name="modified"/> (8-bit RGB or RGBA) outside the rounding interval of <paramref name="clean"/> × the scales.</summary>
+        public static int SamplesOutside(PngImage modified, PngImage clean, ViewExposure exposure) => Compare(modified, clean, exposure, out _);
+
+        /// <summary>Colour samples outside the rounding interval of clean × scale, and whether alpha differs.</summary>
+        static int Compare(PngImage modified, PngImage clean, ViewExposure exposure, out bool alphaDiffers)
         {
             int channels = modified.Channels, n = modified.Width * modified.Height;
             byte[] m = modified.Samples, c = clean.Samples;
-            var lowest = new byte[3][];
-            var highest = new byte[3][];
-            for (var k = 0; k < 3; k++) Interval(exposure.Scale(k), out lowest[k], out highest[k]);
-            var ratios = new[] { new List<double>(), new List<double>(), new List<double>() };
+            // One table per bound, channel k at k·256 (a flat array keeps the inner loop to plain indexing on Mono).
+            var lowest = new byte[768];
+            var highest = new byte[768];
+            for (var k = 0; k < 3; k++) Interval(exposure.Scale(k), lowest, highest, k * 256);
             var outside = 0;
             alphaDiffers = false;
             for (int i = 0, at = 0; i < n; i++, at += channels)
             {
-                for (var k = 0; k < 3; k++)
-                {
-                    byte b = c[at + k], v = m[at + k];
-                    if (v < lowest[k][b] || v > highest[k][b]) outside++;
-                    // Mid-tones that are neither clipped nor near black give the scale the pixels show (for the message).
-                    if ((i & 15) == 0 && b >= 40 && b <= 200 && v < 250 && v > 0) ratios[k].Add(Srgb.DecodeExact(v / 255.0) / Srgb.DecodeExact(b / 255.0));
-                }
+                int r = c[at], g = 256 + c[at + 1], b = 512 + c[at + 2];
+                byte vr = m[at], vg = m[at + 1], vb = m[at + 2];
+                if (vr < lowest[r] || vr > highest[r]) outside++;
+                if (vg < lowest[g] || vg > highest[g]) outside++;
+                if (vb < lowest[b] || vb > highest[b]) outside++;
                 if (channels == 4 && m[at + 3] != c[at + 3]) alphaDiffers = true;
             }
-            measured = new double[3];
-            for (var k = 0; k < 3; k++) measured[k] = ratios[k].Count == 0 ? double.NaN : CheckFigures.Median(ratios[k]);
             return outside;
         }
 
-        /// <summary>Per clean byte b, the lowest and highest modified byte consistent with some linear value that rounds to b.</summary>
-        static void Interval(double scale, out byte[] lowest, out byte[] highest)
+        /// <summary>
+        /// For a failure's message: per channel, the median ratio of modified to clean linear values over mid-tones that are
+        /// neither clipped nor near black — the scale the pixels show.
+        /// </summary>
+        static double[] MeasuredScales(PngImage modified, PngImage clean)
         {
-            lowest = new byte[256];
-            highest = new byte[256];
+            int channels = modified.Channels, n = modified.Width * modified.Height;
+            byte[] m = modified.Samples, c = clean.Samples;
+            var measured = new double[3];
+            for (var k = 0; k < 3; k++)
+            {
+                var ratios = new List<double>();
+                for (int i = 0, at = k; i < n; i += 7, at += 7 * channels)
+                {
+                    byte b = c[at], v = m[at];
+                    if (b >= 40 && b <= 200 && v < 250 && v > 0) ratios.Add(Srgb.DecodeExact(v / 255.0) / Srgb.DecodeExact(b / 255.0));
+                }
+                measured[k] = ratios.Count == 0 ? double.NaN : CheckFigures.Median(ratios);
+            }
+            return measured;
+        }
+
+        /// <summary>Per clean byte b, the lowest and highest modified byte consistent with some linear value that rounds to b.</summary>
+        static void Interval(double scale, byte[] lowest, byte[] highest, int at)
+        {
             for (var b = 0; b < 256; b++)
             {
                 var lo = b == 0 ? 0 : Srgb.DecodeExact((b - 0.5) / 255);
-                lowest[b] = Srgb.EncodeByteExact(ExposureWhiteBalance.Apply(lo, scale));
+                lowest[at + b] = Srgb.EncodeByteExact(ExposureWhiteBalance.Apply(lo, scale));
                 // A clean 255 may be a clipped brighter value: it bounds the modified byte from below only.
-                highest[b] = b == 255 ? (byte)255 : Srgb.EncodeByteExact(ExposureWhiteBalance.Apply(Srgb.DecodeExact((b + 0.5) / 255), scale));
+                highest[at + b] = b == 255 ? (byte)255 : Srgb.EncodeByteExact(ExposureWhiteBalance.Apply(Srgb.DecodeExact((b + 0.5) / 255), scale));
             }
         }
 
