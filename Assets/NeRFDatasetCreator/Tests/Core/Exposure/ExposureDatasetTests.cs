@@ -117,6 +117,23 @@ namespace NerfDatasetCreator.Tests
             Assert.That(validation.Warnings, Is.Empty, "the clean images are companions, not stray images: " + string.Join("\n", validation.Warnings));
         }
 
+        [Test]
+        public void ConvertCarriesTheExifIntoTheColmapImagesAndReadsTheKeysEverywhere()
+        {
+            var folder = DatasetFaults.Copy(_dataset, _temp.Combine("convert"));
+            foreach (var target in new[] { ExportTarget.Nerfstudio, ExportTarget.Ngp, ExportTarget.Colmap })
+                DatasetConverter.Convert(folder, target);
+            var images = Directory.GetFiles(Path.Combine(folder, "colmap", "images"));
+            var train = images.Where(f => Path.GetFileName(f).StartsWith("train_", StringComparison.Ordinal)).ToList();
+            Assert.That(train, Has.Count.EqualTo(6));
+            foreach (var file in images)
+            {
+                var bytes = File.ReadAllBytes(file);
+                var exif = System.Text.Encoding.ASCII.GetString(bytes, 37, 4) == "eXIf";
+                Assert.That(exif, Is.EqualTo(train.Contains(file)), file + ": the modified train images keep their EXIF, the others have none");
+            }
+        }
+
         /// <summary>Rewrites every modified train image from its clean image with a wrong stage.</summary>
         void Plant(string folder, Func<byte, int, ViewExposure, byte> wrong)
         {

@@ -71,6 +71,45 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void EveryShardWritesTheWholePlansValuesForItsViews()
+        {
+            var s = Settings();
+            s.Train.Count = 9;
+            s.Exposure.Test = true;
+            var target = new PlanTarget(Vector3d.Zero, 1);
+            var whole = Values(CapturePlan.Build(s, target));
+            Assert.That(whole, Has.Count.EqualTo(9 + 200));
+            using (var temp = new TempFolder())
+            {
+                var seen = 0;
+                for (var k = 0; k < 3; k++)
+                {
+                    var run = DatasetRun.Prepare(s, target, temp.Path, new ShardSpec(k, 3), "shard-" + k);
+                    Assert.That(run.Problems, Is.Empty);
+                    foreach (var pair in Values(run.Plan))
+                    {
+                        Assert.That(pair.Value, Is.EqualTo(whole[pair.Key]), pair.Key);
+                        seen++;
+                    }
+                }
+                Assert.That(seen, Is.EqualTo(whole.Count), "the shards cover the plan once");
+            }
+        }
+
+        /// <summary>(exposure_ev, r, g, b) per file_path of the train and test transforms files the plan writes.</summary>
+        static Dictionary<string, double[]> Values(CapturePlan plan)
+        {
+            var values = new Dictionary<string, double[]>();
+            foreach (var split in new[] { DatasetSplit.Train, DatasetSplit.Test })
+                foreach (Newtonsoft.Json.Linq.JObject frame in Newtonsoft.Json.Linq.JObject.Parse(BlenderTransformsWriter.Write(plan, split))["frames"])
+                {
+                    var wb = frame["white_balance"].ToObject<double[]>();
+                    values.Add((string)frame["file_path"], new[] { (double)frame["exposure_ev"], wb[0], wb[1], wb[2] });
+                }
+            return values;
+        }
+
+        [Test]
         public void CleanFileIsPlannedOnlyForModifiedSplits()
         {
             var s = Settings();
