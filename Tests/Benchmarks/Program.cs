@@ -44,6 +44,7 @@ namespace NerfDatasetCreator.Benchmarks
             if (Option(args, "--dump-eval") != null) EvaluationBenchmark.Dump(Option(args, "--dump-eval"));
             if (only == null || only == "eval") EvaluationBenchmark.Run(Record, batches);
             if (only == "check") CheckBenchmark.Run(Record, steps => Interleaved(false, steps));
+            if (only == "exposure") ExposureBenchmark.Run(Record, steps => Interleaved(true, steps));
 
             if (tsv != null)
                 using (var file = new StreamWriter(tsv))

@@ -53,6 +53,7 @@ namespace NerfDatasetCreator
                 PointCloud(root, dynamic),
                 new ColourGeometryCheck(),
                 InstanceMaskCheck(root, views),
+                new ExposureCheck(root),
             };
             var multiView = new MultiViewGeometryCheck();
             var reprojection = new InstanceReprojectionCheck();

@@ -19,5 +19,7 @@ namespace NerfDatasetCreator
         InstancePng,
         /// <summary>16-bit grey PNG, the class id of the class covering most of the pixel's samples, 0 = background or unclassed: <c>r_7_semantic_0000.png</c>.</summary>
         SemanticPng,
+        /// <summary>The colour image without exposure and white balance (Documentation~/exposure.md), same encoding as <see cref="Color"/>: <c>r_7_clean.png</c>.</summary>
+        CleanColor,
     }
 }

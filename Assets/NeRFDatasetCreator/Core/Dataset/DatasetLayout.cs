@@ -55,6 +55,7 @@ namespace NerfDatasetCreator
                 case DatasetFileKind.MaskPng: return "_mask_0000.png";
                 case DatasetFileKind.InstancePng: return "_instance_0000.png";
                 case DatasetFileKind.SemanticPng: return "_semantic_0000.png";
+                case DatasetFileKind.CleanColor: return "_clean.png";
                 default: throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a dataset file kind");
             }
         }
@@ -76,6 +77,14 @@ namespace NerfDatasetCreator
                 kinds.Add(DatasetFileKind.InstancePng);
                 kinds.Add(DatasetFileKind.SemanticPng);
             }
+            return kinds;
+        }
+
+        /// <summary>The files every view of <paramref name="split"/> produces: the split's own, the id maps with labels, and the clean image of a split with exposure.</summary>
+        public static IReadOnlyList<DatasetFileKind> FileKinds(DatasetSettings settings, DatasetSplit split)
+        {
+            var kinds = (List<DatasetFileKind>)FileKinds(settings.Split(split), settings.Labels);
+            if (ExposurePlan.Of(settings)?.WritesClean(split) == true) kinds.Add(DatasetFileKind.CleanColor);
             return kinds;
         }
     }

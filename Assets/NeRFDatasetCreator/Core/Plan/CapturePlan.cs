@@ -155,7 +155,7 @@ namespace NerfDatasetCreator
                 var poses = cameras != null
                     ? cameras.Cameras.Select(c => c.Pose).ToList()
                     : CameraRig.Place(s.Formation.ToFormation(copy.Seed, splitName), s.Count, target.Centre, distance);
-                var kinds = DatasetLayout.FileKinds(s, copy.Labels).ToArray(); // shared by the split's views
+                var kinds = DatasetLayout.FileKinds(copy, split).ToArray(); // shared by the split's views
                 // A plain loop without LINQ: this runs once per view, up to 300 000 times.
                 foreach (var slot in TimePlanning.Slots(time, split, poses.Count))
                 {

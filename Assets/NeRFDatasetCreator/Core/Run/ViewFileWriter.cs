@@ -21,6 +21,7 @@ namespace NerfDatasetCreator
         readonly ExrEncoder _encodeExr;
         readonly double _depthScale;
         readonly bool _backgroundIsClear;
+        readonly ExposurePlan _exposure;
         readonly MattingTally _matting = new MattingTally();
         readonly HashSet<string> _createdFolders = new HashSet<string>(StringComparer.Ordinal);
         int _clampedDepthPixels;
@@ -47,6 +48,7 @@ namespace NerfDatasetCreator
             // A sky is rendered into both colour halves (no clear shows): nothing outside the geometry is "background".
             _backgroundIsClear = plan.Settings.Background == null || !plan.Settings.Background.Sky;
             _encodeExr = encodeExr;
+            _exposure = ExposurePlan.Of(plan.Settings);
         }
 
         /// <summary>Output units per Unity unit of depth (the normalisation's scale s).</summary>
@@ -98,7 +100,15 @@ namespace NerfDatasetCreator
                 if (wantsMask) MaskEncoding.Encode(colour, mask);
             }
             else StraightAlpha.Resolve(colour, rgba, _background, mask);
-            Save(view, DatasetFileKind.Color, Png(rgba, width, height, PngPixelFormat.Rgba8, ref encoding));
+            if (_exposure != null && _exposure.Applies(view.Split))
+            {
+                // The last stage before encoding (exposure.md): the clean image first, then the same pixels scaled in linear light.
+                if (view.Writes(DatasetFileKind.CleanColor)) Save(view, DatasetFileKind.CleanColor, Png(rgba, width, height, PngPixelFormat.Rgba8, ref encoding));
+                var exposure = _exposure.For(view.Split, view.Index);
+                ExposureWhiteBalance.ApplyRgba(rgba, exposure);
+                Save(view, DatasetFileKind.Color, PngChunks.InsertExif(Png(rgba, width, height, PngPixelFormat.Rgba8, ref encoding), ExifExposure.Block(exposure.Ev)));
+            }
+            else Save(view, DatasetFileKind.Color, Png(rgba, width, height, PngPixelFormat.Rgba8, ref encoding));
             if (wantsMask) Save(view, DatasetFileKind.MaskPng, Png(mask, width, height, PngPixelFormat.Gray8, ref encoding));
 
             if (view.Writes(DatasetFileKind.DepthPng))

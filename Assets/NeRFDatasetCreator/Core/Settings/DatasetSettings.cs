@@ -124,6 +124,8 @@ namespace NerfDatasetCreator
 
         /// <summary>The lens the images are taken through (issue 27); none by default (a pinhole).</summary>
         public LensSettings Lens = new LensSettings();
+        /// <summary>Per-view exposure and white balance of the colour images (off by default): <see cref="ExposureSettings"/>.</summary>
+        public ExposureSettings Exposure = new ExposureSettings();
 
         public SplitSettings Split(DatasetSplit split)
         {
@@ -148,6 +150,7 @@ namespace NerfDatasetCreator
             copy.Time = Time?.Clone();
             copy.Labels = Labels?.Clone();
             copy.Lens = Lens?.Clone();
+            copy.Exposure = Exposure?.Clone();
             return copy;
         }
 

@@ -85,6 +85,10 @@ namespace NerfDatasetCreator
             {
                 w.WritePropertyName(LabelSettingsJson.Key);
                 LabelSettingsJson.WriteObject(w, s.Labels);
+            if (s.Exposure != null && s.Exposure.Enabled)
+            {
+                w.WritePropertyName(ExposureSettingsJson.Key);
+                ExposureSettingsJson.WriteObject(w, s.Exposure);
             }
             w.WritePropertyName("splits");
             w.WriteStartObject();
@@ -286,6 +290,7 @@ namespace NerfDatasetCreator
                 [TimeSettingsJson.Key] = (t, p) => TimeSettingsJson.Read(reader, t, p, s.Time),
                 [LabelSettingsJson.Key] = (t, p) => LabelSettingsJson.Read(reader, t, p, s.Labels),
                 [LensSettings.Key] = (t, p) => LensSettingsJson.Read(reader, t, p, s.Lens),
+                [ExposureSettingsJson.Key] = (t, p) => ExposureSettingsJson.Read(reader, t, p, s.Exposure),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),

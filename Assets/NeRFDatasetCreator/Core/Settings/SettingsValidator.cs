@@ -91,6 +91,7 @@ namespace NerfDatasetCreator
             problems.AddRange(TimeSettingsValidator.Validate(settings));
             problems.AddRange(LabelSettingsValidator.Validate(settings));
             problems.AddRange(LensSettingsValidator.Validate(settings));
+            problems.AddRange(ExposureSettingsValidator.Validate(settings));
 
             if (settings.Loaders == TargetLoaders.None)
                 Add(new ValidationProblem("loaders", "[]", "is empty, so nothing checks that the splits suit any loader.",

@@ -39,6 +39,8 @@ namespace NerfDatasetCreator
         public const string TimeEnd = "time.end";
         public const string TimeSteps = "time.steps";
         public const string TimeFps = "time.fps";
+        /// <summary>The exposure controls (Editor ExposureSection) show every "exposure.…" problem.</summary>
+        public const string Exposure = "exposure";
 
         /// <summary>"splits.train.count" and the like.</summary>
         public static string SplitField(DatasetSplit split, string key) => "splits." + DatasetSplits.Name(split) + "." + key;
@@ -56,6 +58,7 @@ namespace NerfDatasetCreator
                 Supersampling, Background, Seed, Name, OutputFolder, Overwrite, Loaders,
                 Normalisation, NormalisedTargetRadius, PointCloudPoints, PointCloudRadius,
                 TimeModeField, TimeSourcesField, TimeStart, TimeEnd, TimeSteps, TimeFps,
+                Exposure,
             };
             foreach (var split in DatasetSplits.All)
             {
@@ -104,7 +107,8 @@ namespace NerfDatasetCreator
             if (Covers("time", field)) return WindowStep.Time;
             if (Covers(Name, field) || Covers(OutputFolder, field) || Covers(Overwrite, field) || Covers(Loaders, field))
                 return WindowStep.OutputFolder;
-            if (Covers(Normalisation, field) || Covers(NormalisedTargetRadius, field) || Covers(PointCloudPoints, field) || Covers(PointCloudRadius, field))
+            if (Covers(Normalisation, field) || Covers(NormalisedTargetRadius, field) || Covers(PointCloudPoints, field) || Covers(PointCloudRadius, field)
+                || Covers(Exposure, field))
                 return WindowStep.Outputs;
             if (Covers(Labels, field)) return WindowStep.Outputs;
             foreach (var split in DatasetSplits.All)

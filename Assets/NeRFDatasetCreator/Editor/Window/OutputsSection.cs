@@ -29,6 +29,7 @@ namespace NerfDatasetCreator.Editor
                 }
             }
             LabelsSection.Draw(c);
+            ExposureSection.Draw(c);
             DrawScene(c);
             // "preflight" in config files (Documentation~/settings.md).
             c.Settings.Preflight = EditorGUILayout.Toggle(new GUIContent("Preflight check",

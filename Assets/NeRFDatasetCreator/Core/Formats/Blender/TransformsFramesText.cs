@@ -16,6 +16,7 @@ namespace NerfDatasetCreator
         readonly char[] _buffer = new char[FlushAt + 4096]; // room for one whole frame past the flush point
         readonly TextWriter _output;
         int _at;
+        ExposurePlan _exposure;
 
         TransformsFramesText(TextWriter output) => _output = output;
 
@@ -23,9 +24,10 @@ namespace NerfDatasetCreator
         /// Writes <c>,\n    "frames": [ … ]\n}</c> — the last member and the end of the file's object, whose earlier
         /// members Newtonsoft wrote — with the views of <paramref name="split"/> among <paramref name="views"/>.
         /// </summary>
-        public static void Write(TextWriter output, System.Collections.Generic.IReadOnlyList<PlannedView> views, DatasetSplit? split, double rotation)
+        public static void Write(TextWriter output, System.Collections.Generic.IReadOnlyList<PlannedView> views, DatasetSplit? split, double rotation,
+            ExposurePlan exposure = null)
         {
-            var w = new TransformsFramesText(output);
+            var w = new TransformsFramesText(output) { _exposure = exposure };
             w.Raw(",\n    \"frames\": [");
             var any = false;
             for (var i = 0; i < views.Count; i++)
@@ -105,6 +107,20 @@ namespace NerfDatasetCreator
                     Integer(time.Camera);
                 }
             }
+            if (_exposure != null && _exposure.Applies(v.Split))
+            {
+                var e = _exposure.For(v.Split, v.Index);
+                Key(ExposureKeys.Ev);
+                Number(e.Ev);
+                Key(ExposureKeys.WhiteBalance);
+                Raw("[\n                ");
+                Number(e.R);
+                Raw(",\n                ");
+                Number(e.G);
+                Raw(",\n                ");
+                Number(e.B);
+                Raw("\n            ]");
+            }
             if (v.Writes(DatasetFileKind.DepthPng))
             {
                 Key("depth_path");
@@ -131,6 +147,10 @@ namespace NerfDatasetCreator
             {
                 Key(LabelFrameKeys.Semantic);
                 FilePath(v.Split, v.Index, DatasetFileKind.SemanticPng);
+            if (v.Writes(DatasetFileKind.CleanColor))
+            {
+                Key(ExposureKeys.CleanPath);
+                FilePath(v.Split, v.Index, DatasetFileKind.CleanColor);
             }
             Raw("\n        }");
         }

@@ -55,6 +55,9 @@ namespace NerfDatasetCreator.Tests
 
             /// <summary>The loaders the settings list (all by default).</summary>
             public TargetLoaders Loaders = TargetLoaders.All;
+
+            /// <summary>Further settings (e.g. exposure), applied last.</summary>
+            public Action<DatasetSettings> Configure { get; set; }
         }
 
         /// <summary>
@@ -99,6 +102,7 @@ namespace NerfDatasetCreator.Tests
                 settings.Time.EndSeconds = 1;
             }
             if (options.Labels) settings.Labels = new LabelSettings { Enabled = true, Instances = InstanceRule.Renderer, ClassFrom = ClassSource.Tag };
+            options.Configure?.Invoke(settings);
             var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project, options.Shard, options.DatasetFolder);
             Assert.That(run.Problems, Is.Empty, "the test dataset's settings");
             var session = run.Begin();
