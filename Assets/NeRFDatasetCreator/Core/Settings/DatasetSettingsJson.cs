@@ -85,6 +85,7 @@ namespace NerfDatasetCreator
             {
                 w.WritePropertyName(LabelSettingsJson.Key);
                 LabelSettingsJson.WriteObject(w, s.Labels);
+            }
             if (s.Exposure != null && s.Exposure.Enabled)
             {
                 w.WritePropertyName(ExposureSettingsJson.Key);

@@ -147,6 +147,7 @@ namespace NerfDatasetCreator
             {
                 Key(LabelFrameKeys.Semantic);
                 FilePath(v.Split, v.Index, DatasetFileKind.SemanticPng);
+            }
             if (v.Writes(DatasetFileKind.CleanColor))
             {
                 Key(ExposureKeys.CleanPath);
