@@ -15,5 +15,7 @@ namespace NerfDatasetCreator
         NormalExr,
         /// <summary>8-bit grey PNG, 255 = target, 0 = background (coverage in between): <c>r_7_mask_0000.png</c>.</summary>
         MaskPng,
+        /// <summary>Motion blur: the sharp RGBA image at the mid pose beside the blurred <c>r_7.png</c>: <c>r_7_sharp_0000.png</c>.</summary>
+        SharpPng,
     }
 }

@@ -47,6 +47,7 @@ namespace NerfDatasetCreator
                 case DatasetFileKind.NormalPng: return "_normal_0000.png";
                 case DatasetFileKind.NormalExr: return "_normal_0000.exr";
                 case DatasetFileKind.MaskPng: return "_mask_0000.png";
+                case DatasetFileKind.SharpPng: return "_sharp_0000.png";
                 default: throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a dataset file kind");
             }
         }

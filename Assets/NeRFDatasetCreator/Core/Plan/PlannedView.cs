@@ -41,6 +41,9 @@ namespace NerfDatasetCreator
 
         public Matrix4x4d TransformMatrix { get; }
 
+        /// <summary>Motion blur: the shutter interval's start and end poses (and content times); null without blur.</summary>
+        public ShutterMotion Motion { get; internal set; }
+
         /// <summary>The files the view writes, colour first (made on each call).</summary>
         public IReadOnlyList<PlannedFile> Files
         {

@@ -119,6 +119,9 @@ namespace NerfDatasetCreator
         /// <summary>Dynamic capture: what drives time, its range and steps, and how cameras meet it (static by default).</summary>
         public TimeSettings Time = new TimeSettings();
 
+        /// <summary>Motion blur and rolling shutter: each view exposed over a shutter interval (off by default; <see cref="MotionBlurSettings"/>).</summary>
+        public MotionBlurSettings MotionBlur = new MotionBlurSettings();
+
         public SplitSettings Split(DatasetSplit split)
         {
             switch (split)
@@ -140,6 +143,7 @@ namespace NerfDatasetCreator
             copy.Test = Test?.Clone();
             copy.Background = Background?.Clone();
             copy.Time = Time?.Clone();
+            copy.MotionBlur = MotionBlur?.Clone();
             return copy;
         }
 

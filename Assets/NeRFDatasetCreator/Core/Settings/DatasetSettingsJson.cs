@@ -79,6 +79,11 @@ namespace NerfDatasetCreator
                 w.WritePropertyName(TimeSettingsJson.Key);
                 TimeSettingsJson.WriteObject(w, s.Time);
             }
+            if (s.MotionBlur != null && s.MotionBlur.Enabled)
+            {
+                w.WritePropertyName(MotionBlurSettingsJson.Key);
+                MotionBlurSettingsJson.WriteObject(w, s.MotionBlur);
+            }
             w.WritePropertyName("splits");
             w.WriteStartObject();
             foreach (var split in DatasetSplits.All)
@@ -277,6 +282,7 @@ namespace NerfDatasetCreator
                 ["preflight"] = (t, p) => s.Preflight = reader.Bool(t, p),
                 ["geometryPack"] = (t, p) => s.GeometryPack = reader.Bool(t, p),
                 [TimeSettingsJson.Key] = (t, p) => TimeSettingsJson.Read(reader, t, p, s.Time),
+                [MotionBlurSettingsJson.Key] = (t, p) => MotionBlurSettingsJson.Read(reader, t, p, s.MotionBlur),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),

@@ -89,6 +89,7 @@ namespace NerfDatasetCreator
             foreach (var split in DatasetSplits.All)
                 ValidateSplit(settings, split, problems);
             problems.AddRange(TimeSettingsValidator.Validate(settings));
+            problems.AddRange(MotionBlurSettingsValidator.Validate(settings));
 
             if (settings.Loaders == TargetLoaders.None)
                 Add(new ValidationProblem("loaders", "[]", "is empty, so nothing checks that the splits suit any loader.",
