@@ -40,6 +40,19 @@ namespace NerfDatasetCreator
         public static UnityPose Lerp(UnityPose a, UnityPose b, double t) =>
             new UnityPose(a.Position + (b.Position - a.Position) * t, Slerp(a.Rotation, b.Rotation, t));
 
+        /// <summary>
+        /// instant-ngp's <c>camera_slerp</c> on two output camera-to-world matrices (rotations with det +1): the
+        /// rotation slerped, the centre mixed linearly.
+        /// </summary>
+        public static Matrix4x4d Lerp(Matrix4x4d a, Matrix4x4d b, double t)
+        {
+            var qa = Quaterniond.FromBasis(a.Column(0), a.Column(1), a.Column(2));
+            var qb = Quaterniond.FromBasis(b.Column(0), b.Column(1), b.Column(2));
+            var q = Slerp(qa, qb, t);
+            return Matrix4x4d.FromColumns(q.Rotate(Vector3d.UnitX), q.Rotate(Vector3d.UnitY), q.Rotate(Vector3d.UnitZ),
+                a.Translation + (b.Translation - a.Translation) * t);
+        }
+
         /// <summary>The rotation by |ω| radians about ω (the exponential map); identity for ω = 0.</summary>
         public static Quaterniond FromRotationVector(Vector3d omega)
         {

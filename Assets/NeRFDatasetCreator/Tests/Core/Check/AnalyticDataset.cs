@@ -27,6 +27,9 @@ namespace NerfDatasetCreator.Tests
             /// <summary>Depth and normals rendered at the output size (the capture's default, CaptureOptions.DepthAndNormalAtOutputSize), else at the supersampled size.</summary>
             public bool DataAtOutputSize = true;
 
+            /// <summary>Motion blur (static captures): each colour image is the average of the sub-frames' renders, the sharp one beside it.</summary>
+            public MotionBlurSettings MotionBlur { get; set; }
+
             /// <summary>A planted fault: the depth pass holds the distance along each pixel's ray instead of z.</summary>
             public bool DepthAlongRay { get; set; }
         }
@@ -53,6 +56,7 @@ namespace NerfDatasetCreator.Tests
                 settings.Time.StartSeconds = 0;
                 settings.Time.EndSeconds = 1;
             }
+            if (options.MotionBlur != null) settings.MotionBlur = options.MotionBlur.Clone();
             var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project);
             Assert.That(run.Problems, Is.Empty, "the test dataset's settings");
             var session = run.Begin();
@@ -64,11 +68,35 @@ namespace NerfDatasetCreator.Tests
                 if (!scenes.TryGetValue(time, out var scene)) scenes[time] = scene = AnalyticScene.Layout(run.Plan.Normalisation, Centre, time);
                 var frame = Render(scene, view.TransformMatrix, run.Plan.Intrinsics, options, run.Plan.Normalisation.Scale, options.Supersampling);
                 var data = options.DataAtOutputSize && options.Supersampling > 1 ? Render(scene, view.TransformMatrix, run.Plan.Intrinsics, options, run.Plan.Normalisation.Scale, 1) : frame;
-                writer.Write(view, frame, data);
+                if (view.Motion != null)
+                {
+                    writer.Write(view, Blurred(scene, view, frame, run.Plan, options), data);
+                    writer.WriteSharp(view, frame);
+                }
+                else writer.Write(view, frame, data);
             }
             var cloud = options.PointCloud > 0 ? AnalyticScene.Layout(run.Plan.Normalisation, Centre).Surface(options.PointCloud) : null;
             run.Finish(session, new Provenance(new DateTime(2026, 11, 27, 10, 0, 0, DateTimeKind.Utc)), cloud);
             return run.DatasetFolder;
+        }
+
+        /// <summary>The sub-frame average of the colour renders at the schedule's poses (<see cref="SubFrameAccumulator"/>); mask, depth and normals of the mid pose.</summary>
+        static RawFrame Blurred(AnalyticScene scene, PlannedView view, RawFrame sharp, CapturePlan plan, Options options)
+        {
+            var blur = plan.Settings.MotionBlur;
+            var accumulator = new SubFrameAccumulator(sharp.Width, sharp.Height, blur.SubFrames, blur.Readout, false);
+            foreach (var sub in SubFrameSchedule.For(view.Motion, blur.SubFrames))
+            {
+                var render = Render(scene, plan.Normalisation.CameraToWorld(sub.Pose), plan.Intrinsics, options, plan.Normalisation.Scale, options.Supersampling);
+                accumulator.Add(sub.Index, render.ColorOverBlack, render.ColorOverWhite);
+            }
+            var blurred = new RawFrame(sharp.Width, sharp.Height, sharp.Supersampling)
+            {
+                ColorOverBlack = new ushort[sharp.ColorOverBlack.Length], ColorOverWhite = new ushort[sharp.ColorOverWhite.Length],
+                Mask = sharp.Mask, MaskBytesPerPixel = 1, Depth = sharp.Depth, Normals = sharp.Normals, NormalsInUnityWorld = false,
+            };
+            accumulator.Finish(blurred.ColorOverBlack, blurred.ColorOverWhite);
+            return blurred;
         }
 
         /// <summary>The readbacks of one view: colour over black and white (halves), mask, eye z-depth (metric) and output-world normals, rows bottom first.</summary>
