@@ -47,6 +47,8 @@ namespace NerfDatasetCreator
                 throw new InvalidParameterException(new[] { new ValidationProblem("--binary, --points, --min-track", ExportTargets.Name(target), "shape the COLMAP model only.", "Drop them, or convert to colmap.") });
             // A lens the target cannot hold is refused before anything is written (LensExports).
             InvalidParameterException.ThrowIfAny(LensExports.Refusal(scene.Lens, target, depths));
+            var blur = MotionBlurExports.Warning(scene, target);
+            if (blur != null) warnings.Add(blur);
             var output = OutputFolder(scene.RootDirectory, target, outDir);
             // Everything is written into a working folder inside the output and moved into place when complete (StagedOutput).
             var staged = StagedOutput.Begin(output, "convert");

@@ -169,6 +169,25 @@ namespace NerfDatasetCreator.Tests
             AssertCaught(Check(folder));
         }
 
+        [Test]
+        public void ConvertCarriesTheShutterToInstantNgpAndWarnsWhereAFormatHoldsOnePosePerImage()
+        {
+            var folder = Copy(_rolling);
+            var ngp = DatasetConverter.Convert(folder, ExportTarget.Ngp);
+            Assert.That(ngp.Warnings.Any(w => w.Field.StartsWith("transform_matrix_start", StringComparison.Ordinal)), Is.False);
+            var written = JObject.Parse(File.ReadAllText(ngp.MainFile));
+            var source = JObject.Parse(File.ReadAllText(Path.Combine(folder, "transforms_train.json")));
+            Assert.That(written["rolling_shutter"].Select(t => (double)t), Is.EqualTo(new[] { 0, 0, 0.4, 0.6 }));
+            for (var i = 0; i < 4; i++)
+                foreach (var key in new[] { "transform_matrix_start", "transform_matrix_end" })
+                    Assert.That(Matrix(written["frames"][i][key]), Is.EqualTo(Matrix(source["frames"][i][key])), key + " of frame " + i);
+            foreach (var target in new[] { ExportTarget.Nerfstudio, ExportTarget.Colmap })
+            {
+                var result = DatasetConverter.Convert(folder, target);
+                Assert.That(result.Warnings.Any(w => w.Field == "transform_matrix_start/_end" && w.Reason.Contains("as if they were sharp")), Is.True, ExportTargets.Name(target));
+            }
+        }
+
         static Matrix4x4d Matrix(JToken t) => Matrix4x4d.FromRows(t.Select(r => r.Select(c => (double)c).ToArray()).ToArray());
 
         static JArray Json(Matrix4x4d m) => new JArray(m.ToRows().Select(r => new JArray(r.Cast<object>().ToArray())));
