@@ -37,7 +37,29 @@ namespace NerfDatasetCreator.Editor
             data.Normals = view.Normal;
             // The normal pass writes Unity world normals; the encoders relabel them as they read them.
             data.NormalsInUnityWorld = true;
-            _files.Write(_views[view.ViewIndex], colour, data);
+            if (view.BlurredOverBlack == null)
+            {
+                _files.Write(_views[view.ViewIndex], colour, data);
+                return;
+            }
+            // Motion blur: the file_path image is the sub-frame average; the mid-pose render is the sharp image beside it.
+            var blurred = new RawFrame(view.Width, view.Height, view.Supersampling)
+            {
+                ColorOverBlack = view.BlurredOverBlack,
+                ColorOverWhite = view.BlurredOverWhite,
+                ColorIsGammaEncoded = view.ColorIsGammaEncoded,
+                Mask = view.Mask,
+                MaskBytesPerPixel = 1,
+            };
+            if (!atOutputSize)
+            {
+                blurred.Depth = data.Depth;
+                blurred.Normals = data.Normals;
+                blurred.NormalsInUnityWorld = true;
+                data = blurred;
+            }
+            _files.Write(_views[view.ViewIndex], blurred, data);
+            _files.WriteSharp(_views[view.ViewIndex], colour);
         }
     }
 }
