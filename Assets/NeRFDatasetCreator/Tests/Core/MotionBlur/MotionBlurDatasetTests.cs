@@ -107,6 +107,15 @@ namespace NerfDatasetCreator.Tests
             Assert.That(differing, Is.GreaterThan(50), "a few pixels of blur along every edge");
         }
 
+        [Test]
+        public void ABlurredDatasetValidatesAndIsProvablyThePluginsOwn()
+        {
+            Assert.That(OwnDataset.WhyNotReplaceable(_global, true), Is.Null, "the sharp images are the plugin's files, so a replace may delete the folder");
+            var report = DatasetValidator.Validate(_global);
+            Assert.That(report.Problems, Is.Empty, string.Join("\n", report.Problems));
+            Assert.That(report.Warnings.Select(w => w.ToString()), Has.None.Contains("no frame names"));
+        }
+
         string Copy(string source) => DatasetFaults.Copy(source, _temp.Combine("fault-" + ++_copies));
 
         static void EditFrames(string folder, Action<JObject> edit)
