@@ -165,11 +165,12 @@ namespace NerfDatasetCreator
                     var matrix = cameras != null
                         ? PosePlacement.ToOutput(cameras.Cameras[slot.Camera].FileCameraToWorld, cameras.Poses.Normalisation, normalisation)
                         : normalisation.CameraToWorld(pose);
-                    views.Add(new PlannedView(split, slot.Index, pose, matrix, kinds, slot.Time) { Motion = shutter?.Motion(slot.Camera, slot.Time) });
+                    views.Add(new PlannedView(split, slot.Index, pose, matrix, kinds, slot.Time, shutter?.Motion(slot.Camera, slot.Time)));
                 }
             }
             var warnings = PlanWarnings.For(copy, target, normalisation, views.Select(v => v.Pose))
-                .Concat(CameraSourcePlanning.Warnings(copy, copy.Intrinsics(), imported)).ToList();
+                .Concat(CameraSourcePlanning.Warnings(copy, copy.Intrinsics(), imported))
+                .Concat(BlurLengthWarning.For(copy, target, copy.Intrinsics(), views)).ToList();
             return new CapturePlan(copy, target, distance, copy.Intrinsics(), normalisation, warnings, views, time);
         }
     }
