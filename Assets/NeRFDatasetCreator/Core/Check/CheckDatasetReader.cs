@@ -102,6 +102,7 @@ namespace NerfDatasetCreator
                     SemanticFile = Extra(root, frame, LabelFrameKeys.Semantic),
                 };
                 if (JsonValues.TryNumber(frame[TimeKeys.Time], out var t)) view.Time = t;
+                MotionBlurCheck.ReadKeys(root, json, frame, view, file, index, result.Problems);
                 result.Views.Add(view);
                 SetCamera(view, json, angle);
                 view.Lens = lens;
@@ -139,7 +140,7 @@ namespace NerfDatasetCreator
             for (var k = 0; k < max; k++) yield return (int)((long)k * count / max);
         }
 
-        static string Extra(string root, JObject frame, string key) =>
+        internal static string Extra(string root, JObject frame, string key) =>
             frame[key]?.Type == JTokenType.String ? Resolve(root, (string)frame[key], false) : null;
 
         /// <summary>The dataset-relative path of an existing file inside the dataset, or null.</summary>
@@ -151,7 +152,7 @@ namespace NerfDatasetCreator
             return appendPng && File.Exists(Path.Combine(root, relative + ".png")) ? relative + ".png" : null;
         }
 
-        static bool TryPose(JToken token, out Matrix4x4d pose, out string why)
+        internal static bool TryPose(JToken token, out Matrix4x4d pose, out string why)
         {
             pose = Matrix4x4d.Identity;
             why = "is not a 4×4 array of numbers.";

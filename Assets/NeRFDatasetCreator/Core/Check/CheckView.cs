@@ -15,6 +15,19 @@ namespace NerfDatasetCreator
         /// <summary>The id maps named by <c>instance_path</c> / <c>semantic_path</c> (Documentation~/labels.md), or null.</summary>
         public string InstanceFile, SemanticFile;
 
+        /// <summary>
+        /// Motion blur: the blurred image <c>file_path</c> names, when the frame also names its sharp image
+        /// (<c>sharp_path</c>), which is then <see cref="ColourFile"/> — the image the alpha checks compare with the mask
+        /// and depth, both at the mid pose. Null without blur.
+        /// </summary>
+        public string BlurredFile;
+
+        /// <summary>Motion blur: <c>transform_matrix_start</c> and <c>_end</c> (each null when absent).</summary>
+        public Matrix4x4d? ShutterStart, ShutterEnd;
+
+        /// <summary>instant-ngp's <c>rolling_shutter</c> [A, B, C, D] of the frame's file, or null.</summary>
+        public double[] RollingShutter;
+
         /// <summary>Set once the colour image's size is known.</summary>
         public CheckCamera Camera;
 

@@ -54,6 +54,7 @@ namespace NerfDatasetCreator
                 new ColourGeometryCheck(),
                 InstanceMaskCheck(root, views),
                 new ExposureCheck(root),
+                new MotionBlurCheck(),
             };
             var multiView = new MultiViewGeometryCheck();
             var reprojection = new InstanceReprojectionCheck();

@@ -21,5 +21,7 @@ namespace NerfDatasetCreator
         SemanticPng,
         /// <summary>The colour image without exposure and white balance (Documentation~/exposure.md), same encoding as <see cref="Color"/>: <c>r_7_clean.png</c>.</summary>
         CleanColor,
+        /// <summary>Motion blur: the sharp RGBA image at the mid pose beside the blurred <c>r_7.png</c>: <c>r_7_sharp_0000.png</c>.</summary>
+        SharpPng,
     }
 }

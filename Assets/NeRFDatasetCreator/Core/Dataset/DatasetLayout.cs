@@ -56,6 +56,7 @@ namespace NerfDatasetCreator
                 case DatasetFileKind.InstancePng: return "_instance_0000.png";
                 case DatasetFileKind.SemanticPng: return "_semantic_0000.png";
                 case DatasetFileKind.CleanColor: return "_clean.png";
+                case DatasetFileKind.SharpPng: return "_sharp_0000.png";
                 default: throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a dataset file kind");
             }
         }
@@ -80,11 +81,12 @@ namespace NerfDatasetCreator
             return kinds;
         }
 
-        /// <summary>The files every view of <paramref name="split"/> produces: the split's own, the id maps with labels, and the clean image of a split with exposure.</summary>
+        /// <summary>The files every view of <paramref name="split"/> produces: the split's own, the id maps with labels, the clean image of a split with exposure, the sharp image with motion blur.</summary>
         public static IReadOnlyList<DatasetFileKind> FileKinds(DatasetSettings settings, DatasetSplit split)
         {
             var kinds = (List<DatasetFileKind>)FileKinds(settings.Split(split), settings.Labels);
             if (ExposurePlan.Of(settings)?.WritesClean(split) == true) kinds.Add(DatasetFileKind.CleanColor);
+            if (ShutterPlanning.IsOn(settings)) kinds.Add(DatasetFileKind.SharpPng);
             return kinds;
         }
     }

@@ -54,6 +54,13 @@ namespace NerfDatasetCreator
         /// <summary>8-bit single-channel PNG, black = ignore (nerfstudio's meaning); or null.</summary>
         public string MaskPath { get; }
 
+        /// <summary>Motion blur: <c>transform_matrix_start</c> / <c>_end</c> as the dataset holds them, or null (<see cref="MotionBlurExports"/>).</summary>
+        public Matrix4x4d? ShutterStart { get; set; }
+        public Matrix4x4d? ShutterEnd { get; set; }
+
+        /// <summary>Motion blur: instant-ngp's <c>rolling_shutter</c> [A, B, C, D] of the frame (its file's, or its own), or null.</summary>
+        public double[] RollingShutter { get; set; }
+
         /// <summary>Camera centre in the output world.</summary>
         public Vector3d Centre => CameraToWorld.Translation;
 

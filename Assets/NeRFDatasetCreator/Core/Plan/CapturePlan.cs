@@ -89,6 +89,7 @@ namespace NerfDatasetCreator
             settings = CameraSourcePlanning.Resolved(settings, out _, problems);
             if (problems.Count > 0) return problems;
             problems.AddRange(TimePlanning.Check(settings, target.ClipLengthSeconds));
+            problems.AddRange(ShutterPlanning.Check(settings, target.ClipLengthSeconds));
             if (problems.Count > 0 || !CameraSourcePlanning.AnyFormation(settings)) return problems;
 
             if (settings.AutoDistance && !target.HasBounds)
@@ -156,6 +157,7 @@ namespace NerfDatasetCreator
                     ? cameras.Cameras.Select(c => c.Pose).ToList()
                     : CameraRig.Place(s.Formation.ToFormation(copy.Seed, splitName), s.Count, target.Centre, distance);
                 var kinds = DatasetLayout.FileKinds(copy, split).ToArray(); // shared by the split's views
+                var shutter = ShutterPlanning.ForSplit(copy, split, poses, normalisation, time);
                 // A plain loop without LINQ: this runs once per view, up to 300 000 times.
                 foreach (var slot in TimePlanning.Slots(time, split, poses.Count))
                 {
@@ -163,11 +165,12 @@ namespace NerfDatasetCreator
                     var matrix = cameras != null
                         ? PosePlacement.ToOutput(cameras.Cameras[slot.Camera].FileCameraToWorld, cameras.Poses.Normalisation, normalisation)
                         : normalisation.CameraToWorld(pose);
-                    views.Add(new PlannedView(split, slot.Index, pose, matrix, kinds, slot.Time));
+                    views.Add(new PlannedView(split, slot.Index, pose, matrix, kinds, slot.Time, shutter?.Motion(slot.Camera, slot.Time)));
                 }
             }
             var warnings = PlanWarnings.For(copy, target, normalisation, views.Select(v => v.Pose))
-                .Concat(CameraSourcePlanning.Warnings(copy, copy.Intrinsics(), imported)).ToList();
+                .Concat(CameraSourcePlanning.Warnings(copy, copy.Intrinsics(), imported))
+                .Concat(BlurLengthWarning.For(copy, target, copy.Intrinsics(), views)).ToList();
             return new CapturePlan(copy, target, distance, copy.Intrinsics(), normalisation, warnings, views, time);
         }
     }

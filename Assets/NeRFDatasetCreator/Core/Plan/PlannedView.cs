@@ -13,8 +13,9 @@ namespace NerfDatasetCreator
     {
         /// <param name="kinds">The kinds of file the view writes, colour first; one array is shared by a split's views.</param>
         public PlannedView(DatasetSplit split, int index, UnityPose pose, Matrix4x4d transformMatrix, IReadOnlyList<DatasetFileKind> kinds,
-            ViewTime? time = null)
+            ViewTime? time = null, ShutterMotion motion = null)
         {
+            Motion = motion;
             Split = split;
             Index = index;
             Pose = pose;
@@ -40,6 +41,9 @@ namespace NerfDatasetCreator
         public UnityPose Pose { get; }
 
         public Matrix4x4d TransformMatrix { get; }
+
+        /// <summary>Motion blur: the shutter interval's start and end poses (and content times); null without blur.</summary>
+        public ShutterMotion Motion { get; }
 
         /// <summary>The files the view writes, colour first (made on each call).</summary>
         public IReadOnlyList<PlannedFile> Files

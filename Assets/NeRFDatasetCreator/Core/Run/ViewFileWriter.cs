@@ -173,6 +173,29 @@ namespace NerfDatasetCreator
             return encoding;
         }
 
+        /// <summary>
+        /// Motion blur: writes the sharp colour render at the mid pose (<paramref name="sharp"/>, the same passes as a
+        /// view without blur) as <c>r_i_sharp_0000.png</c>, resolved like the blurred image. Call it besides
+        /// <see cref="Write"/>, whose colour is the sub-frame average (<see cref="SubFrameAccumulator"/>); the matting
+        /// statistics count the blurred image only.
+        /// </summary>
+        public void WriteSharp(PlannedView view, RawFrame sharp)
+        {
+            if (!view.Writes(DatasetFileKind.SharpPng)) return;
+            long started = Stopwatch.GetTimestamp();
+            long encoding = 0;
+            var s = scratch ?? (scratch = new Scratch());
+            int width = sharp.OutputWidth, height = sharp.OutputHeight;
+            var rgba = Exact(ref s.Rgba, width * height * 4);
+            if (sharp.ColorOverBlack != null) DifferenceMatting.Resolve(sharp, rgba, _background, _backgroundIsClear);
+            else StraightAlpha.Resolve(sharp, rgba, _background, null);
+            // With exposure, the sharp image is exposed like the blurred one, so that the two differ by the motion only.
+            if (_exposure != null && _exposure.Applies(view.Split)) ExposureWhiteBalance.ApplyRgba(rgba, _exposure.For(view.Split, view.Index));
+            Save(view, DatasetFileKind.SharpPng, Png(rgba, width, height, PngPixelFormat.Rgba8, ref encoding));
+            Interlocked.Add(ref _encodeTicks, encoding);
+            Interlocked.Add(ref _writeTicks, Stopwatch.GetTimestamp() - started);
+        }
+
         static byte[] Png(byte[] pixels, int width, int height, PngPixelFormat format, ref long encoding)
         {
             long before = Stopwatch.GetTimestamp();

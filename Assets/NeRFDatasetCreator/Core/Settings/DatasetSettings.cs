@@ -124,8 +124,12 @@ namespace NerfDatasetCreator
 
         /// <summary>The lens the images are taken through (issue 27); none by default (a pinhole).</summary>
         public LensSettings Lens = new LensSettings();
+
         /// <summary>Per-view exposure and white balance of the colour images (off by default): <see cref="ExposureSettings"/>.</summary>
         public ExposureSettings Exposure = new ExposureSettings();
+
+        /// <summary>Motion blur and rolling shutter: each view exposed over a shutter interval (off by default; <see cref="MotionBlurSettings"/>).</summary>
+        public MotionBlurSettings MotionBlur = new MotionBlurSettings();
 
         public SplitSettings Split(DatasetSplit split)
         {
@@ -151,6 +155,7 @@ namespace NerfDatasetCreator
             copy.Labels = Labels?.Clone();
             copy.Lens = Lens?.Clone();
             copy.Exposure = Exposure?.Clone();
+            copy.MotionBlur = MotionBlur?.Clone();
             return copy;
         }
 

@@ -91,6 +91,11 @@ namespace NerfDatasetCreator
                 w.WritePropertyName(ExposureSettingsJson.Key);
                 ExposureSettingsJson.WriteObject(w, s.Exposure);
             }
+            if (s.MotionBlur != null && s.MotionBlur.Enabled)
+            {
+                w.WritePropertyName(MotionBlurSettingsJson.Key);
+                MotionBlurSettingsJson.WriteObject(w, s.MotionBlur);
+            }
             w.WritePropertyName("splits");
             w.WriteStartObject();
             foreach (var split in DatasetSplits.All)
@@ -292,6 +297,7 @@ namespace NerfDatasetCreator
                 [LabelSettingsJson.Key] = (t, p) => LabelSettingsJson.Read(reader, t, p, s.Labels),
                 [LensSettings.Key] = (t, p) => LensSettingsJson.Read(reader, t, p, s.Lens),
                 [ExposureSettingsJson.Key] = (t, p) => ExposureSettingsJson.Read(reader, t, p, s.Exposure),
+                [MotionBlurSettingsJson.Key] = (t, p) => MotionBlurSettingsJson.Read(reader, t, p, s.MotionBlur),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),

@@ -85,6 +85,22 @@ namespace NerfDatasetCreator.Editor.Capture
         /// </summary>
         public IReadOnlyDictionary<Renderer, RendererLabelIds> Labels;
 
+        /// <summary>
+        /// Motion blur: the sub-frames of view i (Core's <see cref="SubFrameSchedule"/>), rendered and averaged in linear
+        /// light before the view's own mid-pose render, which then gives the sharp image and the data passes; null (or a
+        /// null list) renders the view sharp only.
+        /// </summary>
+        public System.Func<int, System.Collections.Generic.IReadOnlyList<SubFrame>> SubFramesOf;
+
+        /// <summary>Motion blur: the rolling shutter's readout (<see cref="RollingShutter"/>); 0 for a global shutter.</summary>
+        public double RollingShutterReadout;
+
+        /// <summary>
+        /// Motion blur: called before each sub-frame is rendered, after the camera (whose transform is passed) is posed,
+        /// with the root of the capture's copies: a dynamic capture poses its content at the sub-frame's time here.
+        /// </summary>
+        public System.Action<GameObject, SubFrame, Transform> BeforeSubFrame;
+
         public int SupersampledWidth => Width * Supersampling;
         public int SupersampledHeight => Height * Supersampling;
         public int DataWidth => DepthAndNormalAtOutputSize ? Width : SupersampledWidth;

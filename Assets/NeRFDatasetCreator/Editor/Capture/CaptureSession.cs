@@ -28,6 +28,9 @@ namespace NerfDatasetCreator.Editor.Capture
         RenderTargetSet[] _targets;
         ViewReadback[] _readbacks;
         SynchronousReadback _synchronous;
+        SubFrameRenderer _subFrames;
+        // Motion blur: the averaged sub-frames of views whose readback is still pending, by view index.
+        readonly Dictionary<int, ushort[][]> _blurred = new Dictionary<int, ushort[][]>();
         CapturePools _pools;
         CaptureEditorState _editorState;
         bool _cancelRequested;
@@ -186,6 +189,7 @@ namespace NerfDatasetCreator.Editor.Capture
                 _readbacks[i] = new ViewReadback();
             }
             if (!UsesAsyncReadback) _synchronous = new SynchronousReadback();
+            if (_options.SubFramesOf != null) _subFrames = new SubFrameRenderer(_options, UsesAsyncReadback);
             // Enough arrays for the views in flight plus what a consumer's queue and workers typically hold.
             _pools = new CapturePools(_options, inFlight + 2 * Environment.ProcessorCount + 2);
             _clock.Start();
@@ -256,11 +260,26 @@ namespace NerfDatasetCreator.Editor.Capture
             var readback = _readbacks[slot];
             if (readback.IsPending) Deliver(readback); // the oldest view in flight: its textures are about to be reused
 
-            _options.BeforeView?.Invoke(_stage.Root, index);
             var pose = _poses[index];
             var camera = _stage.Camera;
-            pose.ApplyTo(camera.transform);
             var targets = _targets[slot];
+            // Motion blur: the sub-frames first, in the view's own textures; the mid-pose render below overwrites them.
+            var subFrames = _options.SubFramesOf?.Invoke(index);
+            if (subFrames != null && subFrames.Count > 0 && targets.ColorOverBlack != null)
+            {
+                _stage.PinLighting();
+                try
+                {
+                    _subFrames.Render(_stage.Root, camera, targets, subFrames, QualitySettings.activeColorSpace == ColorSpace.Gamma, out var black, out var white);
+                    _blurred[index] = new[] { black, white };
+                }
+                finally
+                {
+                    _stage.UnpinLighting();
+                }
+            }
+            _options.BeforeView?.Invoke(_stage.Root, index);
+            pose.ApplyTo(camera.transform);
 
             _stage.PinLighting();
             try
@@ -299,7 +318,10 @@ namespace NerfDatasetCreator.Editor.Capture
             }
         }
 
-        static void RenderColour(Camera camera, RenderTargetSet targets)
+        /// <summary>Sub-frames rendered for motion blur so far.</summary>
+        public int SubFramesRendered => _subFrames?.Rendered ?? 0;
+
+        internal static void RenderColour(Camera camera, RenderTargetSet targets)
         {
             if (targets.ColorOverBlack == null) return;
             if (camera.clearFlags == CameraClearFlags.Skybox)
@@ -371,6 +393,12 @@ namespace NerfDatasetCreator.Editor.Capture
 
         void Hand(CapturedView view)
         {
+            if (_blurred.TryGetValue(view.ViewIndex, out var blurred))
+            {
+                _blurred.Remove(view.ViewIndex);
+                view.BlurredOverBlack = blurred[0];
+                view.BlurredOverWhite = blurred[1];
+            }
             _consumer.Consume(view);
             _delivered++;
         }
@@ -399,6 +427,7 @@ namespace NerfDatasetCreator.Editor.Capture
                 foreach (var set in _targets)
                     if (set != null) Try(set.Dispose);
             if (_synchronous != null) Try(_synchronous.Dispose);
+            if (_subFrames != null) Try(_subFrames.Dispose);
             if (_stage != null) Try(_stage.Dispose);
             if (_dataPasses != null) Try(_dataPasses.Dispose);
             _editorState?.Restore();

@@ -57,6 +57,15 @@ namespace NerfDatasetCreator.Editor.Capture
         /// <summary>The same view's colour pass over a white (1, 1, 1) clear; same layout as <see cref="ColorOverBlack"/>.</summary>
         public ushort[] ColorOverWhite { get; internal set; }
 
+        /// <summary>
+        /// Motion blur: the average of the view's sub-frame renders over black and over white (same layout as
+        /// <see cref="ColorOverBlack"/>; not pooled); <see cref="ColorOverBlack"/> is then the sharp render at the mid pose.
+        /// Null without blur.
+        /// </summary>
+        public ushort[] BlurredOverBlack { get; internal set; }
+
+        public ushort[] BlurredOverWhite { get; internal set; }
+
         /// <summary>True in a Gamma colour-space project: the colour values (and their blending) are in gamma space.</summary>
         public bool ColorIsGammaEncoded { get; internal set; }
 
@@ -87,6 +96,8 @@ namespace NerfDatasetCreator.Editor.Capture
             release?.Invoke(this);
             ColorOverBlack = null;
             ColorOverWhite = null;
+            BlurredOverBlack = null;
+            BlurredOverWhite = null;
             Mask = null;
             Depth = null;
             Normal = null;

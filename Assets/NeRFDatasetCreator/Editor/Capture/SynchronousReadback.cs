@@ -40,6 +40,21 @@ namespace NerfDatasetCreator.Editor.Capture
             }
         }
 
+        /// <summary>Motion blur's sub-frames: the colour pair only, into the given arrays.</summary>
+        public void ReadColour(RenderTargetSet targets, ushort[] overBlack, ushort[] overWhite)
+        {
+            var previous = RenderTexture.active;
+            try
+            {
+                Read(targets.ColorOverBlack, ref _black).GetRawTextureData<ushort>().CopyTo(overBlack);
+                Read(targets.ColorOverWhite, ref _white).GetRawTextureData<ushort>().CopyTo(overWhite);
+            }
+            finally
+            {
+                RenderTexture.active = previous;
+            }
+        }
+
         static Texture2D Read(RenderTexture source, ref Texture2D cpu)
         {
             if (cpu == null)

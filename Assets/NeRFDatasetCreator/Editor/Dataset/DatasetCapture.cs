@@ -123,6 +123,18 @@ namespace NerfDatasetCreator.Editor
                 var clock = new ContentClock(run.Plan.Time.Sources, settings.Seed);
                 var views = run.Plan.Views;
                 options.BeforeView = (root, index) => clock.Show(root, views[index].Time.Value.Seconds);
+                // Motion blur in a dynamic capture: the content moves over the shutter (ShutterMotion.SecondsAt).
+                options.BeforeSubFrame = (root, sub, camera) =>
+                {
+                    if (sub.Seconds.HasValue) clock.Show(root, sub.Seconds.Value);
+                };
+            }
+            if (run.IsValid && ShutterPlanning.IsOn(run.Plan.Settings))
+            {
+                var blur = run.Plan.Settings.MotionBlur;
+                var blurredViews = run.Plan.Views;
+                options.SubFramesOf = index => blurredViews[index].Motion == null ? null : SubFrameSchedule.For(blurredViews[index].Motion, blur.SubFrames);
+                options.RollingShutterReadout = blur.Readout;
             }
             // The point cloud's meshes are read when a run starts (ReadSurface), not here: the window calls Prepare as
             // the user types, and copying a large model's arrays each time would make the editor stutter.

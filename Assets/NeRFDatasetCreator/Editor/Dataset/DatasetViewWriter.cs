@@ -42,14 +42,47 @@ namespace NerfDatasetCreator.Editor
             // The normal pass writes Unity world normals; the encoders relabel them as they read them.
             data.NormalsInUnityWorld = true;
             if (view.Labels != null) colour.InstanceIds = InstanceIds(view.Labels);
+            // Motion blur: the file_path image is the sub-frame average; the mid-pose render is the sharp image beside it.
+            RawFrame blurred = null;
+            if (view.BlurredOverBlack != null)
+            {
+                blurred = new RawFrame(view.Width, view.Height, view.Supersampling)
+                {
+                    ColorOverBlack = view.BlurredOverBlack,
+                    ColorOverWhite = view.BlurredOverWhite,
+                    ColorIsGammaEncoded = view.ColorIsGammaEncoded,
+                    Mask = view.Mask,
+                    MaskBytesPerPixel = 1,
+                    InstanceIds = colour.InstanceIds,
+                };
+                if (!atOutputSize)
+                {
+                    blurred.Depth = data.Depth;
+                    blurred.Normals = data.Normals;
+                    blurred.NormalsInUnityWorld = true;
+                    data = blurred;
+                }
+            }
             if (_lens != null)
             {
-                // Stage 2 of the per-view stages (parallel.md): the wide frame resampled into the distorted one, on this worker thread.
-                var distorted = _lens.Resample(colour);
-                data = ReferenceEquals(data, colour) ? distorted : _lens.Resample(data);
-                colour = distorted;
+                // Stage 2 of the per-view stages (parallel.md): the wide frames resampled into the distorted ones, on this worker thread.
+                var sharp = _lens.Resample(colour);
+                if (blurred != null)
+                {
+                    var distortedBlur = _lens.Resample(blurred);
+                    data = ReferenceEquals(data, blurred) ? distortedBlur : _lens.Resample(data);
+                    blurred = distortedBlur;
+                }
+                else data = ReferenceEquals(data, colour) ? sharp : _lens.Resample(data);
+                colour = sharp;
             }
-            _files.Write(_views[view.ViewIndex], colour, data);
+            if (blurred == null)
+            {
+                _files.Write(_views[view.ViewIndex], colour, data);
+                return;
+            }
+            _files.Write(_views[view.ViewIndex], blurred, data);
+            _files.WriteSharp(_views[view.ViewIndex], colour);
         }
 
         [System.ThreadStatic] static ushort[] ids;

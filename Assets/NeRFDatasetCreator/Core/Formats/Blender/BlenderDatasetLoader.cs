@@ -125,6 +125,7 @@ namespace NerfDatasetCreator
                     if (unusableMask != null) warnings.Add(LeftOut(unusableMask));
                     frames.Add(new ExportFrame(split, image, c2w, depth, mask,
                         JsonValues.TryNumber(frame["time"], out var time) ? time : (double?)null, unusableDepth));
+                    MotionBlurExports.Read(json, frame, frames[frames.Count - 1]);
                 }
             }
             InvalidParameterException.ThrowIfAny(problems.ToArray());

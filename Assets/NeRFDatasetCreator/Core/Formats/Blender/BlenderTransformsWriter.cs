@@ -37,7 +37,8 @@ namespace NerfDatasetCreator
         /// <summary>The same text as <see cref="Write(CapturePlan, DatasetSplit)"/>, streamed into <paramref name="output"/> (a file: no string of the whole file is built).</summary>
         public static void Write(CapturePlan plan, DatasetSplit split, System.IO.TextWriter output) =>
             Write(plan.Intrinsics, plan.RotationOf(split), plan.Views, split,
-                ExtraOutputs.HasPng(plan.Settings.Split(split).Depth), plan.AabbScale, plan.Normalisation, output, plan.Settings.Lens?.ToDistortion(), ExposurePlan.Of(plan.Settings));
+                ExtraOutputs.HasPng(plan.Settings.Split(split).Depth), plan.AabbScale, plan.Normalisation, output, plan.Settings.Lens?.ToDistortion(), ExposurePlan.Of(plan.Settings),
+                ShutterPlanning.IsOn(plan.Settings) ? plan.Settings.MotionBlur : null);
 
         /// <param name="aabbScale">instant-ngp's scene cube (<see cref="NerfDatasetCreator.AabbScale"/>); 1 for one object at nerf_synthetic's scale.</param>
         /// <param name="normalisation">Written as <c>scene_normalisation</c>, which every loader ignores; null writes none.</param>
@@ -53,7 +54,8 @@ namespace NerfDatasetCreator
 
         // The views of split (all views when null) among views: a plan's split is written without a list of its own.
         static void Write(CameraIntrinsics intrinsics, double rotation, IReadOnlyList<PlannedView> views, DatasetSplit? split, bool declareDepthScale,
-            int aabbScale, SceneNormalisation normalisation, System.IO.TextWriter text, LensDistortion lens = null, ExposurePlan exposure = null)
+            int aabbScale, SceneNormalisation normalisation, System.IO.TextWriter text, LensDistortion lens = null, ExposurePlan exposure = null,
+            MotionBlurSettings motionBlur = null)
         {
             if (intrinsics == null) throw new ArgumentNullException(nameof(intrinsics));
             var anyDepthPng = declareDepthScale;
@@ -81,6 +83,7 @@ namespace NerfDatasetCreator
                     Number(w, "integer_depth_scale", DepthUnitScale);
                     Number(w, "depth_unit_scale_factor", DepthUnitScale);
                 }
+                if (motionBlur != null) MotionBlurRecord.WriteTopLevel(w, motionBlur);
                 if (normalisation != null)
                 {
                     w.WritePropertyName(SceneNormalisationKey);

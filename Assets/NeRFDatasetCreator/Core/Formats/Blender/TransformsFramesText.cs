@@ -121,6 +121,7 @@ namespace NerfDatasetCreator
                 Number(e.B);
                 Raw("\n            ]");
             }
+            if (v.Motion != null) MotionKeys(v);
             if (v.Writes(DatasetFileKind.DepthPng))
             {
                 Key("depth_path");
@@ -153,7 +154,51 @@ namespace NerfDatasetCreator
                 Key(ExposureKeys.CleanPath);
                 FilePath(v.Split, v.Index, DatasetFileKind.CleanColor);
             }
+            if (v.Writes(DatasetFileKind.SharpPng))
+            {
+                Key(MotionBlurKeys.SharpPath);
+                FilePath(v.Split, v.Index, DatasetFileKind.SharpPng);
+            }
             Raw("\n        }");
+        }
+
+        // instant-ngp's transform_matrix_start / _end (src/nerf_loader.cu reads them per frame), and the content times.
+        void MotionKeys(PlannedView v)
+        {
+            var motion = v.Motion;
+            MatrixKey(MotionBlurKeys.Start, motion.StartMatrix, v);
+            MatrixKey(MotionBlurKeys.End, motion.EndMatrix, v);
+            if (motion.OpenSeconds.HasValue && motion.CloseSeconds.HasValue)
+            {
+                Key(MotionBlurKeys.OpenSeconds);
+                Number(motion.OpenSeconds.Value);
+                Key(MotionBlurKeys.CloseSeconds);
+                Number(motion.CloseSeconds.Value);
+            }
+        }
+
+        void MatrixKey(string name, Matrix4x4d m, PlannedView v)
+        {
+            if (!m.IsFinite)
+                throw new InvalidParameterException(new[]
+                {
+                    new ValidationProblem(DatasetSplits.Name(v.Split) + "[" + v.Index + "]." + name, m.ToString(),
+                        "is not finite; JSON cannot hold it.", "Check the motion blur settings that moved this camera."),
+                });
+            Key(name);
+            Raw("[\n                [\n                    ");
+            for (var r = 0; r < 4; r++)
+            {
+                if (r > 0) Raw(NextRow);
+                Number(m[r, 0]);
+                Raw(NextNumber);
+                Number(m[r, 1]);
+                Raw(NextNumber);
+                Number(m[r, 2]);
+                Raw(NextNumber);
+                Number(m[r, 3]);
+            }
+            Raw(MatrixEnd);
         }
 
         // Keys and paths are the plugin's own ASCII text without quotes, backslashes or control characters: nothing to escape.

@@ -95,8 +95,10 @@ namespace NerfDatasetCreator
                     ["transform_matrix"] = ExportJson.Matrix(f.CameraToWorld),
                 };
                 if (depth) frame["depth_path"] = Rel(f.DepthPath);
+                MotionBlurExports.AddToNgpFrame(frame, f);
                 frames.Add(frame);
             }
+            MotionBlurExports.AddToNgpFile(json, train);
             json["frames"] = frames;
             if (train.Count == 0)
                 warnings?.Add(new ValidationProblem("frames", "0", "the dataset has no train frames; instant-ngp stops with \"No training images were found\".", "Capture at least one train view."));

@@ -29,6 +29,9 @@ namespace NerfDatasetCreator.Tests
             /// <summary>Depth and normals rendered at the output size (the capture's default, CaptureOptions.DepthAndNormalAtOutputSize), else at the supersampled size.</summary>
             public bool DataAtOutputSize = true;
 
+            /// <summary>Motion blur (static captures): each colour image is the average of the sub-frames' renders, the sharp one beside it.</summary>
+            public MotionBlurSettings MotionBlur { get; set; }
+
             /// <summary>A planted fault: the depth pass holds the distance along each pixel's ray instead of z.</summary>
             public bool DepthAlongRay { get; set; }
 
@@ -102,6 +105,7 @@ namespace NerfDatasetCreator.Tests
                 settings.Time.EndSeconds = 1;
             }
             if (options.Labels) settings.Labels = new LabelSettings { Enabled = true, Instances = InstanceRule.Renderer, ClassFrom = ClassSource.Tag };
+            if (options.MotionBlur != null) settings.MotionBlur = options.MotionBlur.Clone();
             options.Configure?.Invoke(settings);
             var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project, options.Shard, options.DatasetFolder);
             Assert.That(run.Problems, Is.Empty, "the test dataset's settings");
@@ -116,21 +120,49 @@ namespace NerfDatasetCreator.Tests
             {
                 var time = view.Time?.Normalised ?? 0;
                 if (!scenes.TryGetValue(time, out var scene)) scenes[time] = scene = AnalyticScene.Layout(run.Plan.Normalisation, Centre, time);
-                var rays = resampler != null ? Pinhole(view.TransformMatrix, resampler.Wide) : Rays(view.TransformMatrix, run.Plan.Intrinsics, lens);
+                RayOf RaysAt(Matrix4x4d c2w) => resampler != null ? Pinhole(c2w, resampler.Wide) : Rays(c2w, run.Plan.Intrinsics, lens);
+                var rays = RaysAt(view.TransformMatrix);
                 int w = resampler != null ? resampler.Wide.Width : run.Plan.Intrinsics.Width, h = resampler != null ? resampler.Wide.Height : run.Plan.Intrinsics.Height;
                 var frame = Render(scene, rays, w, h, options, run.Plan.Normalisation.Scale, options.Supersampling);
                 var data = options.DataAtOutputSize && options.Supersampling > 1 ? Render(scene, rays, w, h, options, run.Plan.Normalisation.Scale, 1) : frame;
+                var blurred = view.Motion != null ? Blurred(scene, view, frame, run.Plan, options, RaysAt, w, h) : null;
                 if (resampler != null)
                 {
                     frame = resampler.Resample(frame);
                     data = data.Supersampling == frame.Supersampling ? frame : resampler.Resample(data);
+                    if (blurred != null) blurred = resampler.Resample(blurred);
                 }
-                writer.Write(view, frame, data);
+                if (blurred != null)
+                {
+                    writer.Write(view, blurred, data);
+                    writer.WriteSharp(view, frame);
+                }
+                else writer.Write(view, frame, data);
                 if (options.BlendIds) WriteBlendedIds(session, view, frame);
             }
             var cloud = options.PointCloud > 0 ? AnalyticScene.Layout(run.Plan.Normalisation, Centre).Surface(options.PointCloud) : null;
             run.Finish(session, new Provenance(new DateTime(2026, 11, 27, 10, 0, 0, DateTimeKind.Utc)), cloud, labels: labels);
             return run.DatasetFolder;
+        }
+
+        /// <summary>The sub-frame average of the colour renders at the schedule's poses (<see cref="SubFrameAccumulator"/>); mask, depth, normals and ids of the mid pose.</summary>
+        static RawFrame Blurred(AnalyticScene scene, PlannedView view, RawFrame sharp, CapturePlan plan, Options options, Func<Matrix4x4d, RayOf> raysAt, int w, int h)
+        {
+            var blur = plan.Settings.MotionBlur;
+            var accumulator = new SubFrameAccumulator(sharp.Width, sharp.Height, blur.SubFrames, blur.Readout, false);
+            foreach (var sub in SubFrameSchedule.For(view.Motion, blur.SubFrames))
+            {
+                var render = Render(scene, raysAt(plan.Normalisation.CameraToWorld(sub.Pose)), w, h, options, plan.Normalisation.Scale, options.Supersampling);
+                accumulator.Add(sub.Index, render.ColorOverBlack, render.ColorOverWhite);
+            }
+            var blurred = new RawFrame(sharp.Width, sharp.Height, sharp.Supersampling)
+            {
+                ColorOverBlack = new ushort[sharp.ColorOverBlack.Length], ColorOverWhite = new ushort[sharp.ColorOverWhite.Length],
+                Mask = sharp.Mask, MaskBytesPerPixel = 1, Depth = sharp.Depth, Normals = sharp.Normals, NormalsInUnityWorld = false,
+                InstanceIds = sharp.InstanceIds,
+            };
+            accumulator.Finish(blurred.ColorOverBlack, blurred.ColorOverWhite);
+            return blurred;
         }
 
         /// <summary>A ray through continuous pixel (i, j) (top-left origin) whose camera-frame z component is −1, so its parameter is z-depth.</summary>

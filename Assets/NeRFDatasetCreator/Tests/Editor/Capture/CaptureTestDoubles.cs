@@ -11,6 +11,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         public UnityPose Pose;
         public int Width, Height, DataWidth, DataHeight;
         public ushort[] OverBlack, OverWhite;
+        public ushort[] BlurredOverBlack, BlurredOverWhite;
         public bool GammaEncoded;
         public byte[] Mask;
         public float[] Depth, Normal;
@@ -71,6 +72,8 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
                 DataHeight = view.DataHeight,
                 OverBlack = (ushort[])view.ColorOverBlack?.Clone(),
                 OverWhite = (ushort[])view.ColorOverWhite?.Clone(),
+                BlurredOverBlack = (ushort[])view.BlurredOverBlack?.Clone(),
+                BlurredOverWhite = (ushort[])view.BlurredOverWhite?.Clone(),
                 GammaEncoded = view.ColorIsGammaEncoded,
                 Mask = (byte[])view.Mask?.Clone(),
                 Depth = (float[])view.Depth?.Clone(),

@@ -1,0 +1,71 @@
+using System.Collections.Generic;
+using System.Linq;
+using Newtonsoft.Json.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// What <c>convert</c> does with a motion-blurred dataset. <b>instant-ngp</b> reads the blur: each frame's
+    /// <c>transform_matrix_start</c> / <c>_end</c> and the file's <c>rolling_shutter</c> are carried as they are
+    /// (src/nerf_loader.cu; <see cref="MotionBlurKeys"/>). <b>nerfstudio</b>, <b>COLMAP</b> (and 3DGS, which reads it) and
+    /// <b>Dynamic 3D Gaussians</b> hold one pose per image: the keys are dropped with a warning, since those trainers
+    /// would fit the blurred images as if they were sharp at the mid pose.
+    /// </summary>
+    public static class MotionBlurExports
+    {
+        /// <summary>Reads a frame's motion keys (and its file's <c>rolling_shutter</c>) into <paramref name="frame"/>.</summary>
+        public static void Read(JObject file, JObject json, ExportFrame frame)
+        {
+            if (json == null) return;
+            if (TryMatrix(json[MotionBlurKeys.Start], out var start)) frame.ShutterStart = start;
+            if (TryMatrix(json[MotionBlurKeys.End], out var end)) frame.ShutterEnd = end;
+            var rs = json[MotionBlurKeys.RollingShutter] as JArray ?? file?[MotionBlurKeys.RollingShutter] as JArray;
+            if (rs != null && rs.Count >= 3)
+            {
+                var values = new double[4];
+                for (var i = 0; i < System.Math.Min(4, rs.Count); i++) JsonValues.TryNumber(rs[i], out values[i]);
+                frame.RollingShutter = values;
+            }
+        }
+
+        static bool TryMatrix(JToken token, out Matrix4x4d m)
+        {
+            m = Matrix4x4d.Identity;
+            if (!(token is JArray rows) || rows.Count != 4) return false;
+            var values = new double[16];
+            for (var r = 0; r < 4; r++)
+            {
+                if (!(rows[r] is JArray row) || row.Count != 4) return false;
+                for (var c = 0; c < 4; c++)
+                    if (!JsonValues.TryNumber(row[c], out values[r * 4 + c])) return false;
+            }
+            m = Matrix4x4d.FromRowMajor(values);
+            return m.IsFinite;
+        }
+
+        static bool Blurred(ExportScene scene) => scene.Frames.Any(f => f.ShutterStart != null || f.ShutterEnd != null);
+
+        /// <summary>The warning for a target that cannot hold the blur, or null.</summary>
+        public static ValidationProblem Warning(ExportScene scene, ExportTarget target)
+        {
+            if (target == ExportTarget.Ngp || !Blurred(scene)) return null;
+            return new ValidationProblem("transform_matrix_start/_end", "per-frame shutter poses",
+                "are dropped: " + ExportTargets.Name(target) + "'s format holds one pose per image, so its trainers fit the motion-blurred images as if they were sharp at transform_matrix (the mid pose).",
+                "Train on the blur with instant-ngp (convert --to ngp carries the keys) or a deblurring method that reads start/end poses; or train on the sharp images (sharp_path) — see Documentation~/motion-blur.md.");
+        }
+
+        public static void AddToNgpFrame(JObject json, ExportFrame f)
+        {
+            if (f.ShutterStart != null) json[MotionBlurKeys.Start] = ExportJson.Matrix(f.ShutterStart.Value);
+            if (f.ShutterEnd != null) json[MotionBlurKeys.End] = ExportJson.Matrix(f.ShutterEnd.Value);
+        }
+
+        /// <summary>The file's <c>rolling_shutter</c>, from its train frames (this plugin writes one per dataset).</summary>
+        public static void AddToNgpFile(JObject json, IReadOnlyList<ExportFrame> train)
+        {
+            var first = train.FirstOrDefault(f => f.RollingShutter != null);
+            if (first == null) return;
+            json[MotionBlurKeys.RollingShutter] = new JArray(first.RollingShutter.Select(v => (object)v).ToArray());
+        }
+    }
+}
