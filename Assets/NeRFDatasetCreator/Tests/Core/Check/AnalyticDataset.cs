@@ -29,9 +29,20 @@ namespace NerfDatasetCreator.Tests
 
             /// <summary>A planted fault: the depth pass holds the distance along each pixel's ray instead of z.</summary>
             public bool DepthAlongRay { get; set; }
+
+            /// <summary>The geometry pack's meshes (Unity world) at a normalised time (<see cref="AnalyticSceneMeshes.At"/>); null: no pack.</summary>
+            public Func<double, IReadOnlyList<SurfaceMesh>> MeshesAt { get; set; }
+
+            /// <summary><c>"geometryPack": "everyStep"</c>.</summary>
+            public bool GeometryPackEveryStep { get; set; }
+
+            /// <summary>A shard of the capture, written to <see cref="Folder"/> (relative to the project).</summary>
+            public ShardSpec Shard { get; set; }
+
+            public string Folder { get; set; }
         }
 
-        static readonly Vector3d Centre = new Vector3d(1, 2, 3);
+        public static readonly Vector3d Centre = new Vector3d(1, 2, 3);
         const double Radius = 1.2;
 
         /// <summary>Renders the dataset into <paramref name="project"/>/NeRFDatasets/<paramref name="name"/> and returns its folder.</summary>
@@ -53,7 +64,8 @@ namespace NerfDatasetCreator.Tests
                 settings.Time.StartSeconds = 0;
                 settings.Time.EndSeconds = 1;
             }
-            var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project);
+            settings.GeometryPackEveryStep = options.GeometryPackEveryStep;
+            var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project, options.Shard, options.Folder);
             Assert.That(run.Problems, Is.Empty, "the test dataset's settings");
             var session = run.Begin();
             var writer = new ViewFileWriter(run.Plan, session, null);
@@ -67,7 +79,9 @@ namespace NerfDatasetCreator.Tests
                 writer.Write(view, frame, data);
             }
             var cloud = options.PointCloud > 0 ? AnalyticScene.Layout(run.Plan.Normalisation, Centre).Surface(options.PointCloud) : null;
-            run.Finish(session, new Provenance(new DateTime(2026, 11, 27, 10, 0, 0, DateTimeKind.Utc)), cloud);
+            var meshesAt = options.MeshesAt;
+            run.Finish(session, new Provenance(new DateTime(2026, 11, 27, 10, 0, 0, DateTimeKind.Utc)), cloud, meshesAt?.Invoke(0),
+                meshesAt == null || run.Plan.Time == null ? (Func<int, IReadOnlyList<SurfaceMesh>>)null : k => meshesAt(run.Plan.Time.NormalisedOf(k)));
             return run.DatasetFolder;
         }
 
