@@ -52,6 +52,7 @@ namespace NerfDatasetCreator
                 new DepthNormalsCheck(),
                 PointCloud(root, dynamic),
                 new ColourGeometryCheck(),
+                new GeometryPackDepthCheck(root, dynamic),
             };
             var multiView = new MultiViewGeometryCheck();
             var cache = new DepthCache(DepthCacheBytes);

@@ -133,6 +133,26 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void TheSelfCheckComparesEachStepsMeshWithThatStepsDepthAndCatchesASwap()
+        {
+            using (var temp = new TempFolder())
+            {
+                var folder = AnalyticDataset.Write(temp.Path, "check", Options());
+                var report = DatasetCheck.Run(folder, new DatasetCheckOptions());
+                var result = report.Results.Single(r => r.Name == GeometryPackDepthCheck.CheckName);
+                TestContext.WriteLine(result.Figure);
+                Assert.That(result.Status, Is.EqualTo(DatasetCheckStatus.Passed), result.Figure + " " + result.Reason);
+                Assert.That(result.Figure, Does.StartWith("21 views, 3 meshes"), "(4 train + 1 val + 2 test cameras) × 3 steps, each against its own step's mesh");
+
+                // Step 2's file holds step 0's surface: the views at time 1 see the sphere elsewhere.
+                File.Copy(Path.Combine(folder, GeometryPackSteps.RelativePath(0)), Path.Combine(folder, GeometryPackSteps.RelativePath(2)), true);
+                var swapped = DatasetCheck.Run(folder, new DatasetCheckOptions());
+                Assert.That(swapped.Results.Single(r => r.Name == GeometryPackDepthCheck.CheckName).Status, Is.EqualTo(DatasetCheckStatus.Failed));
+                Assert.That(swapped.Problems.Where(p => p.Check == GeometryPackDepthCheck.CheckName).Select(p => p.Message), Has.All.Contains("time step 2"));
+            }
+        }
+
+        [Test]
         public void EvaluateScoresTheRightStepWellAndAWrongStepBadly()
         {
             using (var temp = new TempFolder())
