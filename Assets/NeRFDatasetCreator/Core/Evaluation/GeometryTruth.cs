@@ -81,12 +81,24 @@ namespace NerfDatasetCreator
                         "Capture again with \"geometryPack\": \"everyStep\" for a mesh per step, or pass step " + k + "'s mesh with --gt-mesh.");
                 entry = entries.FirstOrDefault();
             }
-            var frames = train.Frames.Where(f => f.TimeStep == k || f.TimeStep == null && entry?.Time != null && f.Time.HasValue && Math.Abs(f.Time.Value - entry.Time.Value) < 1e-9).ToList();
+            // Multi-view frames carry time_step; monocular ones only their time (train view i is at step i), so a frame
+            // without time_step belongs to step k when its time is step k's: the pack's record, else k/(steps − 1).
+            var time = entry?.Time ?? StepTime(dataset.Config, k);
+            var frames = train.Frames.Where(f => f.TimeStep == k || f.TimeStep == null && time.HasValue && f.Time.HasValue && Math.Abs(f.Time.Value - time.Value) < 1e-9).ToList();
             if (frames.Count == 0)
-                throw Refuse("--step", k.ToString(System.Globalization.CultureInfo.InvariantCulture), "matches no train view (no frame of transforms_train.json has time_step " + k + ").",
+                throw Refuse("--step", k.ToString(System.Globalization.CultureInfo.InvariantCulture), "matches no train view (no frame of transforms_train.json has time_step " + k +
+                    (time.HasValue ? " or time " + time.Value.ToString("0.######", System.Globalization.CultureInfo.InvariantCulture) : "") + ").",
                     "Pick a step the train split holds" + (known.Count > 0 ? " (" + StepList(entries) + ")" : "") + ".");
             var (truth, from) = truthMeshPath != null ? (System.IO.Path.GetFullPath(truthMeshPath), "--gt-mesh") : PackFile(dataset, reconstructionPath, entry);
-            return new GeometryTruth { Path = truth, Source = from + ", time step " + k, Step = k, Time = entry?.Time ?? frames[0].Time, Train = train, TrainFrames = frames };
+            return new GeometryTruth { Path = truth, Source = from + ", time step " + k, Step = k, Time = time ?? frames[0].Time, Train = train, TrainFrames = frames };
+        }
+
+        /// <summary>Step k's normalised time from dataset_config.json's time record (k/(steps − 1)), or null when there is none.</summary>
+        static double? StepTime(JObject config, int k)
+        {
+            var steps = config?[TimeRecord.Key]?["steps"];
+            if (steps?.Type != JTokenType.Integer || (int)steps < 2 || k >= (int)steps) return null;
+            return k / (double)((int)steps - 1);
         }
 
         /// <summary>The pack file of <paramref name="entry"/> (or the conventional <c>geometry/target_mesh.ply</c>); refuses when it is missing.</summary>

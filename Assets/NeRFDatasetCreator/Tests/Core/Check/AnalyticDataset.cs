@@ -22,6 +22,9 @@ namespace NerfDatasetCreator.Tests
 
             /// <summary>More than 1: a multi-view dynamic capture with moving content.</summary>
             public int TimeSteps { get; set; }
+
+            /// <summary>With <see cref="TimeSteps"/>: a monocular capture instead (one train view per step; set Train to the steps).</summary>
+            public bool Monocular { get; set; }
             public int PointCloud = 2000;
 
             /// <summary>Depth and normals rendered at the output size (the capture's default, CaptureOptions.DepthAndNormalAtOutputSize), else at the supersampled size.</summary>
@@ -59,7 +62,7 @@ namespace NerfDatasetCreator.Tests
             }
             if (options.TimeSteps > 1)
             {
-                settings.Time.Mode = TimeMode.MultiView;
+                settings.Time.Mode = options.Monocular ? TimeMode.Monocular : TimeMode.MultiView;
                 settings.Time.Steps = options.TimeSteps;
                 settings.Time.StartSeconds = 0;
                 settings.Time.EndSeconds = 1;

@@ -176,6 +176,39 @@ namespace NerfDatasetCreator.Tests
             }
         }
 
+        [Test]
+        public void AMonocularCapturesStepIsItsOneTrainViewFoundByTime()
+        {
+            using (var temp = new TempFolder())
+            {
+                // Monocular frames have no time_step: train view i is step i, at time i/3; test views 1 and 2 lie between steps.
+                var options = new AnalyticDataset.Options
+                {
+                    Width = 160, Height = 120, Supersampling = 1, Train = 4, Val = 1, Test = 3, TimeSteps = 4, Monocular = true, PointCloud = 0,
+                    MeshesAt = AnalyticSceneMeshes.At, GeometryPackEveryStep = true,
+                };
+                var folder = AnalyticDataset.Write(temp.Path, "mono", options);
+                var entries = GeometryPackStepRecord.Entries(Config(folder));
+                Assert.That(entries.Select(e => e.Time.Value), Is.EqualTo(new[] { 0, 1 / 3.0, 2 / 3.0, 1 }).Within(1e-12));
+                var train = EvaluationDataset.Read(folder, "train");
+                Assert.That(train.Frames.Select(f => f.TimeStep), Is.All.Null, "the transforms writer gives monocular frames no time_step");
+
+                var dataset = EvaluationDataset.Read(folder, "test");
+                var recon = Path.Combine(folder, GeometryPackSteps.RelativePath(2));
+                var truth = GeometryTruth.Resolve(dataset, recon, null, 2);
+                Assert.That(truth.TrainFrames.Select(f => f.Index), Is.EqualTo(new[] { 2 }), "train view 2 is step 2");
+                var own = GeometryTruth.Resolve(dataset, recon, recon, 2);
+                Assert.That(own.TrainFrames.Select(f => f.Index), Is.EqualTo(new[] { 2 }), "with --gt-mesh the step's time comes from the time record");
+                var result = GeometryEvaluation.Run(truth, recon, 0.02, 30000, null);
+                Assert.That(result.TrainViewsUsed, Is.EqualTo(1));
+                Assert.That(result.Distances.FScore, Is.GreaterThan(0.95));
+
+                var check = DatasetCheck.Run(folder, new DatasetCheckOptions()).Results.Single(r => r.Name == GeometryPackDepthCheck.CheckName);
+                Assert.That(check.Status, Is.EqualTo(DatasetCheckStatus.Passed), check.Figure + " " + check.Reason);
+                Assert.That(check.Figure, Does.StartWith("6 views, 4 meshes"), "4 train + val 0 + test 0 at step times; test 1 and 2 lie between steps");
+            }
+        }
+
         static string Field(Action run) => Assert.Throws<InvalidParameterException>(() => run()).Problems[0].ToString();
 
         [Test]

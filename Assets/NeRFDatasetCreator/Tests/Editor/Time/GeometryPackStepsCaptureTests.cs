@@ -110,7 +110,8 @@ namespace NerfDatasetCreator.Editor.Tests
                 var seen = new int[3];
                 for (var j = 0; j < 3; j++)
                 {
-                    var frame = train.Frames.Single(f => f.TimeStep == j);
+                    // Monocular frames carry their time, not a time_step: train view j is step j, at the entry's time.
+                    var frame = train.Frames.Single(f => Math.Abs(f.Time.Value - entries[j].Time.Value) < 1e-9);
                     var depth = EvaluationImages.DepthPng(PngReader.Read(frame.DepthPath), train.DepthScale, frame.DepthPath);
                     seen[j] = ObservedPoints.Mark(points, new bool[points.Length / 3], frame.CameraToWorld, depth, 64, 64, train.Focal(64), 32, 32, 0.01);
                 }
