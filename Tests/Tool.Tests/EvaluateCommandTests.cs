@@ -71,6 +71,21 @@ namespace NerfDatasetCreator.Tool.Tests
         }
 
         [Test]
+        public void StepOnAStaticDatasetIsRefusedNamingStep()
+        {
+            using (var scratch = new Scratch())
+            {
+                var (dataset, model) = Setup(scratch);
+                var recon = scratch.PathOf("recon.ply");
+                File.Copy(Path.Combine(dataset, TargetMeshPly.RelativePath), recon);
+                var run = ToolRun.Of("evaluate", dataset, "--renders", model, "--geometry", recon, "--step", "0");
+                Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
+                Assert.That(run.Err, Does.Contain("error: --step").And.Contain("static capture").And.Contain("evaluate refused: nothing was written."));
+                Assert.That(Directory.Exists(Path.Combine(model, "evaluation-test")), Is.False);
+            }
+        }
+
+        [Test]
         public void RendersOfAnotherCountAreRefusedWithOneLinePerProblem()
         {
             using (var scratch = new Scratch())
@@ -92,6 +107,9 @@ namespace NerfDatasetCreator.Tool.Tests
         [TestCase(new[] { "evaluate", "d", "--renders", "r", "--threshold", "0.01" }, "--threshold is the F-score threshold of --geometry")]
         [TestCase(new[] { "evaluate", "d", "--renders", "r", "--geometry", "g.ply", "--threshold", "-1" }, "--threshold = -1: must be a distance > 0")]
         [TestCase(new[] { "evaluate", "d", "--renders", "r", "--render-depth", "median" }, "--render-depth = median: is not z")]
+        [TestCase(new[] { "evaluate", "d", "--renders", "r", "--step", "1" }, "--step picks the time step of --geometry")]
+        [TestCase(new[] { "evaluate", "d", "--renders", "r", "--geometry", "g.ply", "--step", "-1" }, "--step = -1: must be a time step number ≥ 0")]
+        [TestCase(new[] { "evaluate", "d", "--renders", "r", "--geometry", "g.ply", "--step", "one" }, "--step = one: must be a time step number")]
         public void UsageErrorsExitTwo(string[] args, string error)
         {
             var run = ToolRun.Of(args);

@@ -55,6 +55,7 @@ namespace NerfDatasetCreator
                 InstanceMaskCheck(root, views),
                 new ExposureCheck(root),
                 new MotionBlurCheck(),
+                new GeometryPackDepthCheck(root, dynamic),
             };
             var multiView = new MultiViewGeometryCheck();
             var reprojection = new InstanceReprojectionCheck();

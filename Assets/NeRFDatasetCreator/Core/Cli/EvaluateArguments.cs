@@ -8,7 +8,7 @@ namespace NerfDatasetCreator
     {
         public static void Parse(ToolInvocation result, Dictionary<string, string> options, List<string> positionals)
         {
-            ToolCommandLine.RefuseUnknownOptions(result, options, "renders", "split", "out", "layout", "background", "render-depth", "geometry", "gt-mesh", "threshold");
+            ToolCommandLine.RefuseUnknownOptions(result, options, "renders", "split", "out", "layout", "background", "render-depth", "geometry", "gt-mesh", "threshold", "step");
             var e = new EvaluationOptions();
             if (positionals.Count != 1) result.Errors.Add("evaluate needs exactly one dataset folder, e.g. evaluate NeRFDatasets/lego --renders output/lego.");
             else result.DatasetFolder = e.DatasetFolder = positionals[0];
@@ -52,6 +52,13 @@ namespace NerfDatasetCreator
                     result.Errors.Add("--threshold = " + threshold + ": must be a distance > 0 in output units, e.g. 0.01.");
                 else e.Threshold = t;
                 if (geometry == null) result.Errors.Add("--threshold is the F-score threshold of --geometry; give --geometry <reconstruction> too.");
+            }
+            if (options.TryGetValue("step", out var step))
+            {
+                if (!int.TryParse(step, NumberStyles.None, CultureInfo.InvariantCulture, out var k))
+                    result.Errors.Add("--step = " + step + ": must be a time step number ≥ 0 (the train views' time_step), e.g. --step 0.");
+                else e.Step = k;
+                if (geometry == null) result.Errors.Add("--step picks the time step of --geometry; give --geometry <reconstruction> too.");
             }
             result.Evaluation = e;
         }

@@ -44,6 +44,15 @@ namespace NerfDatasetCreator
                 stdout.WriteLine("  geometry: Chamfer " + Show(g["chamfer"], "0.00000") + " (accuracy " + Show(g["accuracy"], "0.00000") + ", completeness " + Show(g["completeness"], "0.00000") +
                                  "), F-score " + Show(g["fscore"], "0.0000") + " at " + Show(g["threshold"], "0.#####") + " output units");
             }
+            if (result.GeometrySteps.Count > 0)
+            {
+                var g = json["geometry_mean_over_steps"];
+                stdout.WriteLine("  geometry over " + result.GeometrySteps.Count + " time steps: mean Chamfer " + Show(g["chamfer"], "0.00000") + " (accuracy " + Show(g["accuracy"], "0.00000") +
+                                 ", completeness " + Show(g["completeness"], "0.00000") + "), mean F-score " + Show(g["fscore"], "0.0000"));
+                foreach (var step in json["geometry_steps"])
+                    stdout.WriteLine("    step " + step["step"] + ": Chamfer " + Show(step["chamfer"], "0.00000") + ", F-score " + Show(step["fscore"], "0.0000"));
+            }
+            else if (result.Geometry?.Step != null) stdout.WriteLine("  geometry at time step " + result.Geometry.Step.Value);
             stdout.WriteLine("  LPIPS is not computed (it needs network weights): 3DGS python metrics.py -m <model>, nerfstudio ns-eval.");
             stdout.WriteLine("wrote " + Path.Combine(result.OutFolder, MetricsJson.FileName) + ", " + Path.Combine(result.OutFolder, ReportHtml.FileName) + " and " + result.Views.Count + " error maps in " +
                              Path.Combine(result.OutFolder, EvaluationOutput.ErrorFolder));

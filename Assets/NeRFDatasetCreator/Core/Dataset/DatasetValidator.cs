@@ -135,6 +135,7 @@ namespace NerfDatasetCreator
             var cloudWarnings = new List<ValidationProblem>();
             PointCloudOwnership.IsOwn(folder, cloudWarnings);
             foreach (var w in cloudWarnings) report.Warnings.Add(new DatasetProblem(w.Field, -1, null, w.Reason + " " + w.Fix));
+            GeometryPackChecks.Check(folder, state.SkipFiles, report);
             if (!state.SkipFiles)
             {
                 if (state.First != null && state.ColourImages > 0 && state.SixteenBitColour == state.ColourImages)

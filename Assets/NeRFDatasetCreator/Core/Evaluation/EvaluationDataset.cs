@@ -17,6 +17,12 @@ namespace NerfDatasetCreator
         public string DepthPath { get; internal set; }
         public string NormalPath { get; internal set; }
         public string MaskPath { get; internal set; }
+
+        /// <summary>The frame's <c>time_step</c> (a dynamic capture's step k), or null.</summary>
+        public int? TimeStep { get; internal set; }
+
+        /// <summary>The frame's <c>time</c> (normalised, in [0, 1]), or null.</summary>
+        public double? Time { get; internal set; }
     }
 
     /// <summary>
@@ -66,8 +72,10 @@ namespace NerfDatasetCreator
             var json = JObject.Parse(FileOps.ReadText(jsonPath));
             if (JsonValues.TryNumber(json["cx"], out var cx) && JsonValues.TryNumber(json["cy"], out var cy)) { result.Cx = cx; result.Cy = cy; }
             var frames = new List<EvaluationFrame>();
+            var jsonFrames = json["frames"] as JArray;
             foreach (var f in doc.Frames)
             {
+                var frameJson = jsonFrames != null && f.Index >= 0 && f.Index < jsonFrames.Count ? jsonFrames[f.Index] as JObject : null;
                 var field = DatasetLayout.TransformsFileName(split) + " frame " + f.Index;
                 if (f.Problems.Count > 0) throw Problem(field, f.FilePath ?? "", string.Join(" ", f.Problems), "Run nerf-dataset validate on the dataset.");
                 var image = Resolve(root, f.FilePath, true);
@@ -82,6 +90,8 @@ namespace NerfDatasetCreator
                     DepthPath = Extra(root, f, "depth_path", stem + DatasetLayout.Suffix(DatasetFileKind.DepthPng)),
                     NormalPath = Extra(root, f, "normal_path", stem + DatasetLayout.Suffix(DatasetFileKind.NormalPng)),
                     MaskPath = Extra(root, f, "mask_path", stem + DatasetLayout.Suffix(DatasetFileKind.MaskPng)),
+                    TimeStep = frameJson?[TimeKeys.Step]?.Type == JTokenType.Integer ? (int?)(int)frameJson[TimeKeys.Step] : null,
+                    Time = JsonValues.TryNumber(frameJson?[TimeKeys.Time], out var time) ? (double?)time : null,
                 });
             }
             result.Frames = frames;

@@ -23,6 +23,9 @@ namespace NerfDatasetCreator
         public string GeometryPath;
         public string TruthMeshPath;
         public double? Threshold;
+
+        /// <summary>A dynamic dataset's time step for <see cref="GeometryPath"/> (<c>--step</c>); see <see cref="GeometryTruth"/>.</summary>
+        public int? Step;
         public int TruthPoints = GeometryEvaluation.DefaultTruthPoints;
 
         /// <summary>Longer side of the report's pictures, in pixels.</summary>

@@ -40,6 +40,9 @@ namespace NerfDatasetCreator
         public bool HasMasks { get; internal set; }
         public List<ViewResult> Views { get; } = new List<ViewResult>();
         public GeometryResult Geometry { get; internal set; }
+
+        /// <summary><c>--geometry &lt;folder&gt;</c>: one result per time step (<see cref="GeometryStepsEvaluation"/>); empty otherwise.</summary>
+        public List<GeometryResult> GeometrySteps { get; } = new List<GeometryResult>();
         public List<string> Notes { get; } = new List<string>();
         public string OutFolder { get; internal set; }
         public string CreatedUtc { get; internal set; }

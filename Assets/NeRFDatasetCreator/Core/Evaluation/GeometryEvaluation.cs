@@ -20,6 +20,12 @@ namespace NerfDatasetCreator
         public string ThresholdRule { get; internal set; }
         public string ObservedRule { get; internal set; }
         public int TrainViewsUsed { get; internal set; }
+
+        /// <summary>The time step compared (a dynamic dataset), or null.</summary>
+        public int? Step { get; internal set; }
+
+        /// <summary>That step's normalised time, when known.</summary>
+        public double? Time { get; internal set; }
         public SurfaceDistances Distances { get; internal set; }
     }
 
@@ -40,12 +46,16 @@ namespace NerfDatasetCreator
         public const long TruthSeed = 0x6e657266; // fixed: the same dataset and mesh give the same points every run
         public const long ReconstructionSeed = 0x72656366;
 
-        public static GeometryResult Run(EvaluationDataset dataset, string reconstructionPath, string truthMeshPath, double? threshold, int truthPoints, Action<string> progress)
+        /// <param name="step">A dynamic dataset's time step (<c>--step</c>); <see cref="GeometryTruth.Resolve"/> says when it is needed.</param>
+        public static GeometryResult Run(EvaluationDataset dataset, string reconstructionPath, string truthMeshPath, double? threshold, int truthPoints, Action<string> progress, int? step = null) =>
+            Run(GeometryTruth.Resolve(dataset, reconstructionPath, truthMeshPath, step), reconstructionPath, threshold, truthPoints, progress);
+
+        public static GeometryResult Run(GeometryTruth truthChoice, string reconstructionPath, double? threshold, int truthPoints, Action<string> progress)
         {
-            var result = new GeometryResult { ReconstructionPath = Path.GetFullPath(reconstructionPath) };
-            var truthPath = TruthPath(dataset, reconstructionPath, truthMeshPath, out var source);
+            var result = new GeometryResult { ReconstructionPath = Path.GetFullPath(reconstructionPath), Step = truthChoice.Step, Time = truthChoice.Time };
+            var truthPath = truthChoice.Path;
             result.TruthPath = truthPath;
-            result.TruthSource = source;
+            result.TruthSource = truthChoice.Source;
             var truthMesh = GeometryFile.Read(truthPath);
             if (truthMesh.TriangleCount == 0)
                 throw new InvalidParameterException(new[] { new ValidationProblem("--gt-mesh", truthPath, "has no faces; the ground truth must be a surface to sample.", "Pass the target's triangle mesh.") });
@@ -68,25 +78,27 @@ namespace NerfDatasetCreator
             }
 
             var observed = new bool[truth.Length / 3];
-            var train = EvaluationDataset.Read(dataset.Root, "train");
-            if (train.HasDepth)
+            var train = truthChoice.Train;
+            var frames = truthChoice.TrainFrames;
+            if (truthChoice.TrainHasDepth)
             {
-                progress?.Invoke("geometry: keeping the ground truth the " + train.Frames.Count + " train views' depth maps saw");
-                foreach (var frame in train.Frames)
+                var which = truthChoice.Step.HasValue ? " train views of time step " + truthChoice.Step.Value : " train views";
+                progress?.Invoke("geometry: keeping the ground truth the " + frames.Count + which + "' depth maps saw");
+                foreach (var frame in frames)
                 {
                     var png = PngReader.Read(frame.DepthPath);
                     var depth = EvaluationImages.DepthPng(png, train.DepthScale, frame.DepthPath);
                     var focal = train.Focal(png.Width);
                     ObservedPoints.Mark(truth, observed, frame.CameraToWorld, depth, png.Width, png.Height, focal, train.Cx ?? png.Width / 2.0, train.Cy ?? png.Height / 2.0, tau);
                 }
-                result.TrainViewsUsed = train.Frames.Count;
-                result.ObservedRule = "a ground-truth point counts for completeness and recall when at least one of the " + train.Frames.Count +
-                                      " train views sees it: it projects inside the image in front of the camera and that pixel's ground-truth depth is within the threshold + " + ObservedPoints.DefaultPixelSlack.ToString(System.Globalization.CultureInfo.InvariantCulture) + " pixel footprints of the point's depth";
+                result.TrainViewsUsed = frames.Count;
+                result.ObservedRule = "a ground-truth point counts for completeness and recall when at least one of the " + frames.Count + which +
+                                      " sees it: it projects inside the image in front of the camera and that pixel's ground-truth depth is within the threshold + " + ObservedPoints.DefaultPixelSlack.ToString(System.Globalization.CultureInfo.InvariantCulture) + " pixel footprints of the point's depth";
             }
             else
             {
                 for (var i = 0; i < observed.Length; i++) observed[i] = true;
-                result.ObservedRule = "the train split has no depth maps, so every ground-truth point counts (none could be ruled unobserved)";
+                result.ObservedRule = "the train" + (truthChoice.Step.HasValue ? " views of time step " + truthChoice.Step.Value + " have" : " split has") + " no depth maps, so every ground-truth point counts (none could be ruled unobserved)";
             }
 
             var reconstructionMesh = GeometryFile.Read(reconstructionPath);
@@ -114,24 +126,12 @@ namespace NerfDatasetCreator
             return result;
         }
 
-        /// <summary>The ground-truth mesh's path and where it came from; refuses (naming --gt-mesh) when there is none.</summary>
-        public static string TruthPath(EvaluationDataset dataset, string reconstructionPath, string truthMeshPath, out string source)
+        /// <summary>The ground-truth mesh's path and where it came from; refuses (naming --gt-mesh or --step) when there is none or the step is ambiguous.</summary>
+        public static string TruthPath(EvaluationDataset dataset, string reconstructionPath, string truthMeshPath, out string source, int? step = null)
         {
-            if (truthMeshPath != null)
-            {
-                source = "--gt-mesh";
-                return Path.GetFullPath(truthMeshPath);
-            }
-            var recorded = GeometryPackRecord.RecordedFile(dataset.Config);
-            var path = PathSafety.Inside(dataset.Root, recorded ?? TargetMeshPly.RelativePath, out _);
-            source = recorded != null ? "the geometry pack recorded in dataset_config.json" : "the geometry pack " + TargetMeshPly.RelativePath;
-            if (path == null || !File.Exists(path))
-                throw new InvalidParameterException(new[]
-                {
-                    new ValidationProblem("--geometry", reconstructionPath, "needs the ground-truth mesh, and " + Path.Combine(dataset.Root, TargetMeshPly.RelativePath) + " does not exist (the dataset has no geometry pack).",
-                        "Pass the target's mesh in the dataset's output frame and units with --gt-mesh <file.ply|.obj>."),
-                });
-            return path;
+            var truth = GeometryTruth.Resolve(dataset, reconstructionPath, truthMeshPath, step);
+            source = truth.Source;
+            return truth.Path;
         }
 
         public static double Area(SurfaceMesh mesh)

@@ -31,8 +31,22 @@ namespace NerfDatasetCreator
             })),
         };
 
-        /// <summary>The recorded file (relative to the dataset), or null when the config records no geometry pack.</summary>
+        /// <summary>
+        /// The recorded single file (relative to the dataset), or null when the config records no geometry pack or a
+        /// per-step one (<see cref="GeometryPackStepRecord"/>).
+        /// </summary>
         public static string RecordedFile(JObject config) =>
             config?[Key] is JObject geometry && geometry["file"]?.Type == JTokenType.String ? (string)geometry["file"] : null;
+
+        /// <summary>
+        /// The single mesh of a dynamic capture, at its start time: the same record plus that step's <c>step</c> (0),
+        /// <c>time</c> (0, the D-NeRF <c>time</c> key of the views it matches) and <c>time_seconds</c>.
+        /// </summary>
+        public static JObject ToJson(IReadOnlyList<SurfaceMesh> outputMeshes, string sha256, ViewTime time)
+        {
+            var json = ToJson(outputMeshes, sha256);
+            GeometryPackStepRecord.AddTime(json, time);
+            return json;
+        }
     }
 }

@@ -93,12 +93,43 @@ namespace NerfDatasetCreator
                 ["views"] = views,
             };
             if (r.Geometry != null) json["geometry"] = Geometry(r.Geometry);
+            if (r.GeometrySteps.Count > 0)
+            {
+                // Per time step, and the mean over the steps (4D surface papers report per-frame Chamfer averaged over frames).
+                json["geometry_steps"] = new JArray(r.GeometrySteps.Select(Geometry));
+                json["geometry_mean_over_steps"] = GeometryMean(r.GeometrySteps);
+            }
             return json;
         }
+
+        /// <summary>The unweighted mean over time steps of each figure (each step counts once, whatever its point counts).</summary>
+        public static JObject GeometryMean(IReadOnlyList<GeometryResult> steps) => new JObject
+        {
+            ["steps"] = new JArray(steps.Select(g => g.Step)),
+            ["accuracy"] = Num(Mean(steps.Select(g => g.Distances.Accuracy))),
+            ["completeness"] = Num(Mean(steps.Select(g => g.Distances.Completeness))),
+            ["chamfer"] = Num(Mean(steps.Select(g => g.Distances.Chamfer))),
+            ["precision"] = Num(Mean(steps.Select(g => g.Distances.Precision))),
+            ["recall"] = Num(Mean(steps.Select(g => g.Distances.Recall))),
+            ["fscore"] = Num(Mean(steps.Select(g => g.Distances.FScore))),
+            ["rule"] = "mean over the time steps, each step once; each step against its own ground-truth mesh, observed points decided by that step's train views",
+        };
 
         static JObject Geometry(GeometryResult g)
         {
             var d = g.Distances;
+            var json = new JObject();
+            if (g.Step.HasValue)
+            {
+                json["step"] = g.Step.Value;
+                json[TimeKeys.Time] = g.Time.HasValue ? Num(g.Time.Value) : null;
+            }
+            foreach (var property in GeometryFigures(g, d).Properties()) json[property.Name] = property.Value;
+            return json;
+        }
+
+        static JObject GeometryFigures(GeometryResult g, SurfaceDistances d)
+        {
             return new JObject
             {
                 ["reconstruction"] = g.ReconstructionPath,

@@ -20,15 +20,23 @@ namespace NerfDatasetCreator
             var dataset = EvaluationDataset.Read(options.DatasetFolder, options.Split);
             var renders = RenderFolder.Read(options.RendersFolder, options.Layout, options.Split, dataset.Frames.Select(f => f.FilePath).ToList());
             var background = EvaluationBackground.Parse(options.Background, dataset.Config);
-            if (options.GeometryPath != null && !File.Exists(options.GeometryPath))
-                throw new InvalidParameterException(new[] { new ValidationProblem("--geometry", options.GeometryPath, "does not exist.", "Pass the reconstruction as .ply (points or mesh) or .obj.") });
+            var stepsFolder = options.GeometryPath != null && Directory.Exists(options.GeometryPath);
+            if (options.GeometryPath != null && !stepsFolder && !File.Exists(options.GeometryPath))
+                throw new InvalidParameterException(new[] { new ValidationProblem("--geometry", options.GeometryPath, "does not exist.", "Pass the reconstruction as .ply (points or mesh) or .obj, or a folder of per-step reconstructions.") });
+            if (stepsFolder && (options.Step.HasValue || options.TruthMeshPath != null))
+                throw new InvalidParameterException(new[] { new ValidationProblem(options.Step.HasValue ? "--step" : "--gt-mesh", options.Step.HasValue ? options.Step.Value.ToString(CultureInfo.InvariantCulture) : options.TruthMeshPath,
+                    "cannot be used with a folder of per-step reconstructions: each file's step comes from its name and its ground truth from the per-step geometry pack.", "Leave it out, or pass one reconstruction file.") });
             if (options.TruthMeshPath != null && !File.Exists(options.TruthMeshPath))
                 throw new InvalidParameterException(new[] { new ValidationProblem("--gt-mesh", options.TruthMeshPath, "does not exist.", "Pass the target's mesh in the output frame (.ply or .obj).") });
             if (options.TruthMeshPath != null && options.GeometryPath == null)
                 throw new InvalidParameterException(new[] { new ValidationProblem("--gt-mesh", options.TruthMeshPath, "is only used with --geometry.", "Add --geometry <reconstruction>, or leave --gt-mesh out.") });
             if (options.Threshold.HasValue && !(options.Threshold > 0))
                 throw new InvalidParameterException(new[] { new ValidationProblem("--threshold", ValidationProblem.Format(options.Threshold.Value), "must be a distance > 0 in output units.", "Write e.g. --threshold 0.01.") });
-            if (options.GeometryPath != null) GeometryEvaluation.TruthPath(dataset, options.GeometryPath, options.TruthMeshPath, out _);
+            // The ground truth (and, for a dynamic dataset, the time step) is settled before anything is written.
+            GeometryTruth truth = null;
+            IReadOnlyList<KeyValuePair<string, GeometryTruth>> perStep = null;
+            if (stepsFolder) perStep = GeometryStepsEvaluation.Match(dataset, options.GeometryPath);
+            else if (options.GeometryPath != null) truth = GeometryTruth.Resolve(dataset, options.GeometryPath, options.TruthMeshPath, options.Step);
             CheckSizes(dataset, renders);
 
             var result = new EvaluationResult
@@ -57,7 +65,12 @@ namespace NerfDatasetCreator
             result.OutFolder = outFolder;
             try
             {
-                ScoreAll(dataset, renders, background, wantDepth, wantNormals, options, outFolder, result, progress);
+                if (perStep != null)
+                {
+                    var missing = GeometryStepsEvaluation.Missing(dataset, perStep);
+                    if (missing.Count > 0) result.Notes.Add("--geometry " + options.GeometryPath + " has no reconstruction for time step" + (missing.Count == 1 ? " " : "s ") + string.Join(", ", missing) + ": the geometry means are over the " + perStep.Count + " steps it has.");
+                }
+                ScoreAll(dataset, renders, background, wantDepth, wantNormals, options, outFolder, result, progress, truth, perStep);
             }
             catch
             {
@@ -70,7 +83,8 @@ namespace NerfDatasetCreator
         }
 
         static void ScoreAll(EvaluationDataset dataset, RenderSet renders, EvaluationBackground background, bool wantDepth, bool wantNormals,
-            EvaluationOptions options, string outFolder, EvaluationResult result, Action<string> progress)
+            EvaluationOptions options, string outFolder, EvaluationResult result, Action<string> progress,
+            GeometryTruth truth = null, IReadOnlyList<KeyValuePair<string, GeometryTruth>> perStep = null)
         {
             var views = new ViewResult[renders.Views.Count];
             var done = 0;
@@ -91,8 +105,9 @@ namespace NerfDatasetCreator
             }
             result.Views.AddRange(views);
 
-            if (options.GeometryPath != null)
-                result.Geometry = GeometryEvaluation.Run(dataset, options.GeometryPath, options.TruthMeshPath, options.Threshold, options.TruthPoints, progress);
+            if (perStep != null) result.GeometrySteps.AddRange(GeometryStepsEvaluation.Run(perStep, options.Threshold, options.TruthPoints, progress));
+            else if (options.GeometryPath != null)
+                result.Geometry = GeometryEvaluation.Run(truth ?? GeometryTruth.Resolve(dataset, options.GeometryPath, options.TruthMeshPath, options.Step), options.GeometryPath, options.Threshold, options.TruthPoints, progress);
 
             // The report first, metrics.json last: a metrics.json marks a complete evaluation.
             FileOps.WriteNewText(Path.Combine(outFolder, ReportHtml.FileName), ReportHtml.Build(result));

@@ -1,5 +1,6 @@
 using System;
 using System.Globalization;
+using System.IO;
 using System.Linq;
 using System.Net;
 using System.Text;
@@ -52,6 +53,16 @@ namespace NerfDatasetCreator
                 Row(h, "Chamfer", F(d.Chamfer, "0.00000"), "");
                 Row(h, "precision / recall", F(d.Precision, "0.0000") + " / " + F(d.Recall, "0.0000"), MetricsJson.Definitions["fscore"]);
                 Row(h, "F-score", F(d.FScore, "0.0000"), "threshold " + F(d.Threshold, "0.#####") + " = " + r.Geometry.ThresholdRule);
+                if (r.Geometry.Step.HasValue) Row(h, "time step", r.Geometry.Step.Value.ToString(CultureInfo.InvariantCulture), r.Geometry.TruthSource);
+            }
+            if (r.GeometrySteps.Count > 0)
+            {
+                var mean = MetricsJson.GeometryMean(r.GeometrySteps);
+                Row(h, "Chamfer, mean over " + r.GeometrySteps.Count + " time steps", F(MetricsJson.Mean(r.GeometrySteps.Select(g => g.Distances.Chamfer)), "0.00000"), (string)mean["rule"]);
+                Row(h, "F-score, mean over time steps", F(MetricsJson.Mean(r.GeometrySteps.Select(g => g.Distances.FScore)), "0.0000"), "threshold " + F(r.GeometrySteps[0].Distances.Threshold, "0.#####") + " = " + r.GeometrySteps[0].ThresholdRule);
+                foreach (var g in r.GeometrySteps)
+                    Row(h, "step " + g.Step + (g.Time.HasValue ? " (time " + F(g.Time.Value, "0.####") + ")" : ""),
+                        "Chamfer " + F(g.Distances.Chamfer, "0.00000") + ", F " + F(g.Distances.FScore, "0.0000"), Path.GetFileName(g.ReconstructionPath));
             }
             h.Append("</table>\n");
 

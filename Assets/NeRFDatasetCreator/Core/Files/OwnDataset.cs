@@ -28,7 +28,7 @@ namespace NerfDatasetCreator
         // The export folders convert writes into a dataset by default, as trees of the names each may hold.
         static readonly Tree SplitFolder = new Tree(f => ViewFile.IsMatch(f));
         static readonly Tree Png = new Tree(f => f.EndsWith(".png", StringComparison.OrdinalIgnoreCase));
-        static readonly Tree GeometryPack = new Tree(f => f == TargetMeshPly.FileName);
+        static readonly Tree GeometryPack = new Tree(GeometryPackSteps.IsPackFile);
         static readonly Tree CameraPaths = new Tree(f => DatasetSplits.Names.Any(s => s + ".json" == f));
         static readonly Tree Ngp = new Tree(f => f == NgpWriter.FileName).With(CameraPathFiles.FolderName, CameraPaths);
         static readonly Tree Colmap = new Tree(f => false)

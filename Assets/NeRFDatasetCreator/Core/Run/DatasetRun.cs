@@ -79,10 +79,12 @@ namespace NerfDatasetCreator
         public bool WritesPointCloud => IsValid && FullPlan.Settings.PointCloudPoints > 0 && Shard.Index == 0;
 
         /// <summary>
-        /// Whether this run writes the geometry pack (<c>geometry/target_mesh.ply</c>, <see cref="TargetMeshPly"/>): a
-        /// whole dataset only, as merge carries no per-shard extras, and only while the settings' <c>geometryPack</c> is on.
+        /// Whether this run writes the geometry pack (<c>geometry/target_mesh.ply</c>, <see cref="TargetMeshPly"/>, or one
+        /// mesh per time step with <c>"geometryPack": "everyStep"</c>, <see cref="GeometryPackSteps"/>): the whole dataset
+        /// or shard 0 (one pack per dataset; merge carries it over, as points3d.ply), and only while the settings'
+        /// <c>geometryPack</c> is on.
         /// </summary>
-        public bool WritesGeometryPack => IsValid && Shard.Count == 1 && FullPlan.Settings.GeometryPack;
+        public bool WritesGeometryPack => IsValid && Shard.Index == 0 && FullPlan.Settings.GeometryPack;
 
         /// <summary>
         /// Writes <c>points3d.ply</c> when <paramref name="pointCloud"/> has points (output world, e.g. from
@@ -92,30 +94,23 @@ namespace NerfDatasetCreator
         /// merge carries no per-shard extras) and, for a shard, shard.json; then commits. With
         /// <paramref name="targetMeshes"/> (the target's meshes in the Unity world, as collected for the point cloud) and
         /// <see cref="WritesGeometryPack"/>, also the geometry pack <c>geometry/target_mesh.ply</c> in the output frame,
-        /// recorded under <c>geometry</c> in dataset_config.json (<see cref="GeometryPackRecord"/>).
+        /// recorded under <c>geometry</c> in dataset_config.json (<see cref="GeometryPackRecord"/>); with
+        /// <paramref name="targetMeshesAtStep"/> (the target posed at step k, Unity world) and a dynamic capture asking for
+        /// every step, one mesh per step instead (<see cref="GeometryPackWriter"/>).
         /// </summary>
         /// <param name="labels">
         /// The capture's label table when its settings write id maps (<c>labels</c>): writes <c>labels.json</c> and the
         /// splits' previews (<see cref="LabelFiles"/>). Every shard writes the whole table; merge checks they agree.
         /// </param>
         public void Finish(DatasetWriteSession session, Provenance provenance, IReadOnlyList<CloudPoint> pointCloud = null,
-            IReadOnlyList<SurfaceMesh> targetMeshes = null, LabelTable labels = null)
+            IReadOnlyList<SurfaceMesh> targetMeshes = null, LabelTable labels = null, Func<int, IReadOnlyList<SurfaceMesh>> targetMeshesAtStep = null)
         {
             if (FullPlan.Settings.Labels != null && FullPlan.Settings.Labels.Enabled)
             {
                 if (labels == null) throw new InvalidOperationException("This capture writes instance/semantic maps; pass its label table to Finish so labels.json is written.");
                 LabelFiles.Write(session, Plan, labels);
             }
-            Newtonsoft.Json.Linq.JObject geometry = null;
-            var meshes = WritesGeometryPack ? targetMeshes?.Where(m => m.TriangleCount > 0).ToList() : null;
-            if (meshes != null && meshes.Count > 0)
-            {
-                var outputMeshes = TargetMeshPly.FromUnityWorld(meshes, Plan.Normalisation);
-                var path = session.PathOf(TargetMeshPly.RelativePath);
-                FileOps.CreateDirectory(System.IO.Path.GetDirectoryName(path));
-                TargetMeshPly.Write(path, outputMeshes);
-                geometry = GeometryPackRecord.ToJson(outputMeshes, PointCloudRecord.HashOf(path));
-            }
+            var geometry = WritesGeometryPack ? GeometryPackWriter.Write(session, Plan, targetMeshes, targetMeshesAtStep) : null;
             PointCloudRecord record = null;
             if (pointCloud != null && pointCloud.Count > 0)
             {

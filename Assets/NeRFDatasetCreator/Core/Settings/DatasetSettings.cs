@@ -116,6 +116,14 @@ namespace NerfDatasetCreator
         /// </summary>
         public bool GeometryPack = true;
 
+        /// <summary>
+        /// With <see cref="GeometryPack"/> on, a dynamic capture writes the target's mesh at every time step
+        /// (<c>geometry/target_mesh_t0000.ply</c> …, <see cref="GeometryPackSteps"/>) instead of the one at its start time:
+        /// <c>"geometryPack": "everyStep"</c> in config files. A static capture has one pose and writes
+        /// <c>target_mesh.ply</c> either way.
+        /// </summary>
+        public bool GeometryPackEveryStep;
+
         /// <summary>Dynamic capture: what drives time, its range and steps, and how cameras meet it (static by default).</summary>
         public TimeSettings Time = new TimeSettings();
 

@@ -74,6 +74,11 @@ namespace NerfDatasetCreator
                 w.WritePropertyName("geometryPack");
                 w.WriteValue(false);
             }
+            else if (s.GeometryPackEveryStep)
+            {
+                w.WritePropertyName("geometryPack");
+                w.WriteValue(GeometryPackSteps.EveryStepValue);
+            }
             // Only with a lens, so pinhole configs keep their keys.
             if (s.Lens != null && s.Lens.Enabled) LensSettingsJson.WriteObject(w, s.Lens);
             if (s.Time != null && s.Time.Enabled)
@@ -292,7 +297,21 @@ namespace NerfDatasetCreator
                 ["pointCloudPoints"] = (t, p) => s.PointCloudPoints = reader.Int(t, p),
                 ["pointCloudRadius"] = (t, p) => s.PointCloudRadius = reader.Double(t, p),
                 ["preflight"] = (t, p) => s.Preflight = reader.Bool(t, p),
-                ["geometryPack"] = (t, p) => s.GeometryPack = reader.Bool(t, p),
+                ["geometryPack"] = (t, p) =>
+                {
+                    // true (the start time's mesh), false (none) or "everyStep" (a dynamic capture's mesh at every step).
+                    if (t.Type == JTokenType.String && (string)t == GeometryPackSteps.EveryStepValue)
+                    {
+                        s.GeometryPack = true;
+                        s.GeometryPackEveryStep = true;
+                        return;
+                    }
+                    if (t.Type != JTokenType.Boolean)
+                        throw reader.Error(t, p, "must be true, false or \"" + GeometryPackSteps.EveryStepValue + "\" (a dynamic capture's mesh at every time step), not " + Describe(t) + "." +
+                            (t.Type == JTokenType.String ? SpellingSuggestion.Sentence((string)t, new[] { GeometryPackSteps.EveryStepValue }) : ""));
+                    s.GeometryPack = reader.Bool(t, p);
+                    s.GeometryPackEveryStep = false;
+                },
                 [TimeSettingsJson.Key] = (t, p) => TimeSettingsJson.Read(reader, t, p, s.Time),
                 [LabelSettingsJson.Key] = (t, p) => LabelSettingsJson.Read(reader, t, p, s.Labels),
                 [LensSettings.Key] = (t, p) => LensSettingsJson.Read(reader, t, p, s.Lens),

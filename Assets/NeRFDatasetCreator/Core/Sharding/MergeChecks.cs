@@ -149,7 +149,7 @@ namespace NerfDatasetCreator
                 if (JToken.DeepEquals(a[key], b[key])) continue;
                 if (lenient.Contains(key))
                 {
-                    if (warnings != null && key != "createdUtc" && key != "imagesRendered" && key != "statistics" && key != PointCloudRecord.Key)
+                    if (warnings != null && key != "createdUtc" && key != "imagesRendered" && key != "statistics" && key != PointCloudRecord.Key && key != GeometryPackRecord.Key)
                         warnings.Add(Path.Combine(other.Folder, file) + ": " + key + " is " + Show(b[key]) + " but " + Show(a[key]) + " in " + reference.Name + " (allowed: it describes the run, not the dataset).");
                     continue;
                 }

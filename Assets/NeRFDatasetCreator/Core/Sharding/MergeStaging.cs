@@ -102,6 +102,10 @@ namespace NerfDatasetCreator
             var cloud = shards.Select(s => (s.Config as JObject)?[PointCloudRecord.Key]).FirstOrDefault(r => r != null);
             if (cloud != null) merged[PointCloudRecord.Key] = cloud.DeepClone();
             else merged.Remove(PointCloudRecord.Key);
+            // Likewise the geometry pack (shard 0's, carried over unchanged by MergeGeometry).
+            var pack = (MergeGeometry.Owner(shards)?.Config as JObject)?[GeometryPackRecord.Key];
+            if (pack != null) merged[GeometryPackRecord.Key] = pack.DeepClone();
+            else merged.Remove(GeometryPackRecord.Key);
             var rendered = shards.Select(s => (s.Config as JObject)?["imagesRendered"]).ToList();
             if (rendered.All(r => r != null && r.Type == JTokenType.Boolean))
                 merged["imagesRendered"] = rendered.All(r => (bool)r);

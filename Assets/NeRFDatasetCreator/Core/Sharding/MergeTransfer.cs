@@ -120,6 +120,8 @@ namespace NerfDatasetCreator
                         "Replace the link by the file it points to, then merge again."));
                 else Add(cloud, TargetPointCloud.FileName, shard.Name);
             }
+            // The geometry pack, written by shard 0 and recorded in its dataset_config.json (MergeGeometry).
+            MergeGeometry.Plan(shards, Add, folder => claimed.Add(folder), problems, warnings);
             foreach (var leftover in byView.Values.SelectMany(v => v))
                 warnings.Add(leftover + " belongs to no frame of its shard's transforms and was left in place.");
 

@@ -22,7 +22,7 @@ namespace NerfDatasetCreator
         /// where it ran, what it rendered): they may differ between shards, which merge reports as a warning. Every
         /// other key (settings, seed, distance, target, plugin version) must be identical.
         /// </summary>
-        public static readonly IReadOnlyList<string> PerRunConfigKeys = new[] { "createdUtc", "imagesRendered", "pointCloud", "statistics", "tool", "unityVersion" };
+        public static readonly IReadOnlyList<string> PerRunConfigKeys = new[] { "createdUtc", GeometryPackRecord.Key, "imagesRendered", "pointCloud", "statistics", "tool", "unityVersion" };
 
         public static string TransformsFileName(string split) => DatasetLayout.TransformsFileName(split);
 

@@ -303,7 +303,15 @@ namespace NerfDatasetCreator.Editor
                     provenance.Statistics["points3d"] = cloud.Count;
                 }
                 // The geometry pack is the target's surface, so an environment capture's whole scene is left out of it.
-                prepared.Run.Finish(session, provenance, cloud, WritesGeometryPack(prepared) ? prepared.Surface : null, prepared.Labels);
+                if (WritesGeometryPack(prepared) && GeometryPackWriter.WritesEveryStep(prepared.Run.Plan))
+                {
+                    // "geometryPack": "everyStep": a copy posed at each step in turn, one step's meshes held at a time.
+                    var warnings = new List<ValidationProblem>();
+                    using (var steps = new TargetSurfaceOverTime(prepared.Target, prepared.Run.Plan.Time, prepared.Run.Plan.Settings.Seed, warnings))
+                        prepared.Run.Finish(session, provenance, cloud, prepared.Surface, prepared.Labels, steps.At);
+                    foreach (var warning in warnings.GroupBy(w => w.ToString()).Select(g => g.First())) Debug.LogWarning("NeRF Dataset Creator: " + warning);
+                }
+                else prepared.Run.Finish(session, provenance, cloud, WritesGeometryPack(prepared) ? prepared.Surface : null, prepared.Labels);
             }
             catch (Exception e)
             {

@@ -38,8 +38,16 @@ namespace NerfDatasetCreator.Editor
             // "geometryPack" in config files (Documentation~/settings.md).
             c.Settings.GeometryPack = EditorGUILayout.Toggle(new GUIContent("Geometry pack",
                 "Write the target's triangle mesh in the output frame, " + TargetMeshPly.RelativePath +
-                " (ground truth for Chamfer / F-score and nerf-dataset evaluate --geometry). A whole dataset of a target with meshes only; " +
-                "a dynamic capture's mesh is the one at its start time."), c.Settings.GeometryPack);
+                " (ground truth for Chamfer / F-score and nerf-dataset evaluate --geometry). A whole dataset (or shard 0) of a target with meshes only; " +
+                "a dynamic capture's mesh is the one at its start time unless Every time step is on."), c.Settings.GeometryPack);
+            // "geometryPack": "everyStep" (Documentation~/evaluate.md): only a dynamic capture has steps.
+            if (c.Settings.GeometryPack && c.Settings.Time != null && c.Settings.Time.Enabled)
+            {
+                EditorGUI.indentLevel++;
+                c.Settings.GeometryPackEveryStep = EditorGUILayout.Toggle(new GUIContent("Every time step",
+                    "Write the target's mesh at every time step (" + GeometryPackSteps.RelativePath(0) + " …) instead of the start time's only."), c.Settings.GeometryPackEveryStep);
+                EditorGUI.indentLevel--;
+            }
         }
 
         /// <summary>Scale and centring of the output world, and the initial point cloud for Gaussian Splatting.</summary>

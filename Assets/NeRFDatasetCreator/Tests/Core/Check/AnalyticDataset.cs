@@ -24,6 +24,9 @@ namespace NerfDatasetCreator.Tests
 
             /// <summary>More than 1: a multi-view dynamic capture with moving content.</summary>
             public int TimeSteps { get; set; }
+
+            /// <summary>With <see cref="TimeSteps"/>: a monocular capture instead (one train view per step; set Train to the steps).</summary>
+            public bool Monocular { get; set; }
             public int PointCloud = 2000;
 
             /// <summary>Depth and normals rendered at the output size (the capture's default, CaptureOptions.DepthAndNormalAtOutputSize), else at the supersampled size.</summary>
@@ -61,6 +64,12 @@ namespace NerfDatasetCreator.Tests
 
             /// <summary>Further settings (e.g. exposure), applied last.</summary>
             public Action<DatasetSettings> Configure { get; set; }
+
+            /// <summary>The geometry pack's meshes (Unity world) at a normalised time (<see cref="AnalyticSceneMeshes.At"/>); null: no pack.</summary>
+            public Func<double, IReadOnlyList<SurfaceMesh>> MeshesAt { get; set; }
+
+            /// <summary><c>"geometryPack": "everyStep"</c>.</summary>
+            public bool GeometryPackEveryStep { get; set; }
         }
 
         /// <summary>
@@ -79,7 +88,7 @@ namespace NerfDatasetCreator.Tests
             };
         }
 
-        static readonly Vector3d Centre = new Vector3d(1, 2, 3);
+        public static readonly Vector3d Centre = new Vector3d(1, 2, 3);
         const double Radius = 1.2;
 
         /// <summary>Renders the dataset into <paramref name="project"/>/NeRFDatasets/<paramref name="name"/> and returns its folder.</summary>
@@ -99,13 +108,14 @@ namespace NerfDatasetCreator.Tests
             }
             if (options.TimeSteps > 1)
             {
-                settings.Time.Mode = TimeMode.MultiView;
+                settings.Time.Mode = options.Monocular ? TimeMode.Monocular : TimeMode.MultiView;
                 settings.Time.Steps = options.TimeSteps;
                 settings.Time.StartSeconds = 0;
                 settings.Time.EndSeconds = 1;
             }
             if (options.Labels) settings.Labels = new LabelSettings { Enabled = true, Instances = InstanceRule.Renderer, ClassFrom = ClassSource.Tag };
             if (options.MotionBlur != null) settings.MotionBlur = options.MotionBlur.Clone();
+            settings.GeometryPackEveryStep = options.GeometryPackEveryStep;
             options.Configure?.Invoke(settings);
             var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project, options.Shard, options.DatasetFolder);
             Assert.That(run.Problems, Is.Empty, "the test dataset's settings");
@@ -141,7 +151,9 @@ namespace NerfDatasetCreator.Tests
                 if (options.BlendIds) WriteBlendedIds(session, view, frame);
             }
             var cloud = options.PointCloud > 0 ? AnalyticScene.Layout(run.Plan.Normalisation, Centre).Surface(options.PointCloud) : null;
-            run.Finish(session, new Provenance(new DateTime(2026, 11, 27, 10, 0, 0, DateTimeKind.Utc)), cloud, labels: labels);
+            var meshesAt = options.MeshesAt;
+            run.Finish(session, new Provenance(new DateTime(2026, 11, 27, 10, 0, 0, DateTimeKind.Utc)), cloud, meshesAt?.Invoke(0), labels,
+                meshesAt == null || run.Plan.Time == null ? (Func<int, IReadOnlyList<SurfaceMesh>>)null : k => meshesAt(run.Plan.Time.NormalisedOf(k)));
             return run.DatasetFolder;
         }
 

@@ -25,7 +25,7 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(report.Failed, Is.False, text);
                 Assert.That(report.ViewsChecked, Is.EqualTo(100));
                 Assert.That(report.Results.Single(r => r.Name == "alpha vs mask").Status, Is.EqualTo(DatasetCheckStatus.Passed), text);
-                foreach (var name in new[] { "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry" })
+                foreach (var name in new[] { "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry", "geometry pack vs depth" })
                 {
                     var result = report.Results.Single(r => r.Name == name);
                     Assert.That(result.Status, Is.EqualTo(DatasetCheckStatus.Skipped), name);

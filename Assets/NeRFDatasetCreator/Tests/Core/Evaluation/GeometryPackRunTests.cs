@@ -70,11 +70,13 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
-        public void ShardsAndTargetsWithoutMeshesWriteNoPack()
+        public void ShardsOtherThanZeroAndTargetsWithoutMeshesWriteNoPack()
         {
             using (var temp = new TempFolder())
             {
-                Assert.That(DatasetRun.Prepare(HalfScale(), Target, temp.Path, new ShardSpec(0, 2), "s0").WritesGeometryPack, Is.False, "merge carries no per-shard extras");
+                // One pack per dataset, as points3d.ply: shard 0 writes it and merge carries it over (GeometryPackStepsTests).
+                Assert.That(DatasetRun.Prepare(HalfScale(), Target, temp.Path, new ShardSpec(0, 2), "s0").WritesGeometryPack, Is.True, "shard 0 writes the pack");
+                Assert.That(DatasetRun.Prepare(HalfScale(), Target, temp.Path, new ShardSpec(1, 2), "s1").WritesGeometryPack, Is.False, "the other shards do not");
                 var run = DatasetRun.Prepare(HalfScale(), Target, temp.Path);
                 var session = run.Begin();
                 var writer = new ViewFileWriter(run.Plan, session, SyntheticViews.FakeExr);
@@ -122,7 +124,7 @@ namespace NerfDatasetCreator.Tests
             Assert.That(DatasetSettingsJson.Read("{}").Settings.GeometryPack, Is.True);
             Assert.That(s.Clone().GeometryPack, Is.False);
             var error = Assert.Throws<SettingsFormatException>(() => DatasetSettingsJson.Read("{\"geometryPack\": \"no\"}"));
-            Assert.That(error.Message, Does.Contain("geometryPack").And.Contain("must be true or false"));
+            Assert.That(error.Message, Does.Contain("geometryPack").And.Contain("must be true, false or \"everyStep\""));
         }
     }
 }
