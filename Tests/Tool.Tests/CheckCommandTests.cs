@@ -13,13 +13,13 @@ namespace NerfDatasetCreator.Tool.Tests
         Scratch _scratch;
         string _clean;
 
-        static readonly string[] Checks = { "dataset", "alpha vs mask", "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry", "geometry pack vs depth" };
+        static readonly string[] Checks = { "dataset", "alpha vs mask", "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry", "instance vs mask", "exposure", "motion blur", "geometry pack vs depth", "instance reprojection" };
 
         [OneTimeSetUp]
         public void Render()
         {
             _scratch = new Scratch();
-            _clean = AnalyticDataset.Write(_scratch.Root, "clean", new AnalyticDataset.Options { Train = 6, Val = 2, Test = 2, MeshesAt = AnalyticSceneMeshes.At });
+            _clean = AnalyticDataset.Write(_scratch.Root, "clean", new AnalyticDataset.Options { Train = 6, Val = 2, Test = 2, MeshesAt = AnalyticSceneMeshes.At, Labels = true });
         }
 
         [OneTimeTearDown] public void Delete() => _scratch.Dispose();
