@@ -55,6 +55,9 @@ for image, label in [("rgba", "RGBA render with grain"), ("rgba-clean", "RGBA re
     if f"png.{image}.huffman.mbs" in net and f"png.{image}.zlib6.mbs" in net:
         print(f"| PNG {label}: Huffman speed / level 6 speed | {net[f'png.{image}.huffman.mbs'] / net[f'png.{image}.zlib6.mbs']:.1f}× | "
               + (f"{mono[f'png.{image}.huffman.mbs'] / mono[f'png.{image}.zlib6.mbs']:.1f}×" if f"png.{image}.huffman.mbs" in mono else "—") + " |")
+row("id maps 800×800 (supersampling 2): instance map, majority rule (ms CPU)", "labels.instance.ms", "{:.2f}")
+row("  semantic map, majority rule over classes (ms CPU)", "labels.semantic.ms", "{:.2f}")
+row("  instance map, 16-bit PNG encoding (ms CPU)", "labels.png.ms", "{:.2f}")
 row("check of 300 views 800×800 with depth, normals, masks (s CPU)", "check.cpu.s", "{:.1f}")
 row("  the same (s wall clock)", "check.wall.s", "{:.1f}")
 row("  of which reading + PNG decoding (s wall clock)", "check.decode.s", "{:.1f}")

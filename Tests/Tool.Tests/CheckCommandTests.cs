@@ -13,13 +13,13 @@ namespace NerfDatasetCreator.Tool.Tests
         Scratch _scratch;
         string _clean;
 
-        static readonly string[] Checks = { "dataset", "alpha vs mask", "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry" };
+        static readonly string[] Checks = { "dataset", "alpha vs mask", "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry", "instance vs mask", "instance reprojection" };
 
         [OneTimeSetUp]
         public void Render()
         {
             _scratch = new Scratch();
-            _clean = AnalyticDataset.Write(_scratch.Root, "clean", new AnalyticDataset.Options { Train = 6, Val = 2, Test = 2 });
+            _clean = AnalyticDataset.Write(_scratch.Root, "clean", new AnalyticDataset.Options { Train = 6, Val = 2, Test = 2, Labels = true });
         }
 
         [OneTimeTearDown] public void Delete() => _scratch.Dispose();

@@ -24,6 +24,11 @@ namespace NerfDatasetCreator
             int ow = frame.OutputWidth, oh = frame.OutputHeight, k = frame.Supersampling, width = frame.Width;
             RawFrame.RequireOutput("ids", ids, (long)ow * oh, "ids (1 per output pixel)");
             var samples = frame.InstanceIds;
+            if (k == 2)
+            {
+                ResolveTwoByTwo(samples, width, ow, oh, ids, classOfInstance);
+                return;
+            }
             var block = new ushort[k * k];
             for (int oy = 0; oy < oh; oy++)
             {
@@ -38,6 +43,42 @@ namespace NerfDatasetCreator
                         for (int dx = 0; dx < k; dx++) block[n++] = Map(samples[p + dx], classOfInstance);
                     }
                     ids[o + ox] = Majority(block, n);
+                }
+            }
+        }
+
+        /// <summary>
+        /// The capture's default supersampling 2 without the general loop's calls (Mono inlines none): a block of one id
+        /// (all of a view but its edges) is written at once; only mixed blocks go through <see cref="Majority"/>.
+        /// </summary>
+        static void ResolveTwoByTwo(ushort[] samples, int width, int ow, int oh, ushort[] ids, ushort[] lookup)
+        {
+            var block = new ushort[4];
+            var classes = lookup ?? new ushort[0];
+            var mapped = lookup != null;
+            for (int oy = 0; oy < oh; oy++)
+            {
+                int p = RowOrder.SourceBlockRow(oy, oh, 2) * width, q = p + width, o = oy * ow, end = o + ow;
+                for (; o < end; o++, p += 2, q += 2)
+                {
+                    ushort a = samples[p], b = samples[p + 1], c = samples[q], d = samples[q + 1];
+                    if (mapped)
+                    {
+                        a = a < classes.Length ? classes[a] : (ushort)0;
+                        b = b < classes.Length ? classes[b] : (ushort)0;
+                        c = c < classes.Length ? classes[c] : (ushort)0;
+                        d = d < classes.Length ? classes[d] : (ushort)0;
+                    }
+                    if (a == b && a == c && a == d)
+                    {
+                        ids[o] = a;
+                        continue;
+                    }
+                    block[0] = a;
+                    block[1] = b;
+                    block[2] = c;
+                    block[3] = d;
+                    ids[o] = Majority(block, 4);
                 }
             }
         }

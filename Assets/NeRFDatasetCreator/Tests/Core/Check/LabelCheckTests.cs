@@ -107,6 +107,17 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void ADynamicCaptureKeepsEveryObjectsIdAcrossTimeSteps()
+        {
+            var folder = AnalyticDataset.Write(_temp.Path, "moving", new AnalyticDataset.Options { Labels = true, TimeSteps = 3, Train = 6, Val = 2, Test = 2, PointCloud = 0 });
+            var report = Check(folder);
+            var text = string.Join("\n", report.SummaryLines) + "\n" + string.Join("\n", report.Problems);
+            Assert.That(report.Problems, Is.Empty, text);
+            foreach (var name in new[] { InstanceMaskCheck.CheckName, InstanceReprojectionCheck.CheckName })
+                Assert.That(report.Results.Single(r => r.Name == name).Status, Is.EqualTo(DatasetCheckStatus.Passed), name + "\n" + text);
+        }
+
+        [Test]
         public void AMissingLabelsFileIsCaught()
         {
             var folder = Copy();

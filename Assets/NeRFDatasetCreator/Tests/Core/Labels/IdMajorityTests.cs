@@ -56,6 +56,40 @@ namespace NerfDatasetCreator.Tests
             Assert.That(ids, Is.EqualTo(new ushort[] { 2, 0, 1, 1 }));
         }
 
+        [TestCase(1)]
+        [TestCase(2)]
+        [TestCase(3)]
+        [TestCase(4)]
+        public void ResolveAppliesTheRuleToEveryBlockAtEverySupersampling(int k)
+        {
+            // Random ids 0–4 in 7×5 output pixels: every block's output is Majority of its samples, whichever path ran.
+            int ow = 7, oh = 5, w = ow * k, h = oh * k;
+            var random = new System.Random(k);
+            var frame = new RawFrame(w, h, k) { InstanceIds = new ushort[w * h] };
+            for (var i = 0; i < frame.InstanceIds.Length; i++) frame.InstanceIds[i] = (ushort)(random.Next(3) == 0 ? 0 : random.Next(1, 5));
+            var lookup = new ushort[] { 0, 2, 1, 2 }; // id 4 lies beyond the lookup: class 0
+            var ids = new ushort[ow * oh];
+            var classes = new ushort[ow * oh];
+            IdMajority.Resolve(frame, ids);
+            IdMajority.Resolve(frame, classes, lookup);
+            for (var oy = 0; oy < oh; oy++)
+                for (var ox = 0; ox < ow; ox++)
+                {
+                    var block = new ushort[k * k];
+                    var mapped = new ushort[k * k];
+                    var n = 0;
+                    for (var dy = 0; dy < k; dy++)
+                        for (var dx = 0; dx < k; dx++, n++)
+                        {
+                            // Output row oy (top first) is rendered rows (oh − 1 − oy)·k … (bottom row first).
+                            block[n] = frame.InstanceIds[((oh - 1 - oy) * k + dy) * w + ox * k + dx];
+                            mapped[n] = block[n] < lookup.Length ? lookup[block[n]] : (ushort)0;
+                        }
+                    Assert.That(ids[oy * ow + ox], Is.EqualTo(IdMajority.Majority(block, n)), "instance " + ox + "," + oy);
+                    Assert.That(classes[oy * ow + ox], Is.EqualTo(IdMajority.Majority(mapped, n)), "class " + ox + "," + oy);
+                }
+        }
+
         [Test]
         public void ResolveRefusesAFrameWithoutTheIdPassNamingTheField()
         {
