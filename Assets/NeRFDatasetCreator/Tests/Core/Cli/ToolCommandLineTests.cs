@@ -106,7 +106,7 @@ namespace NerfDatasetCreator.Tests
         [TestCase(new[] { "convert", "d" }, "convert needs --to nerfstudio|colmap|ngp")]
         [TestCase(new[] { "convert", "--to", "ngp" }, "convert needs exactly one dataset folder")]
         [TestCase(new[] { "convert", "a", "b", "--to", "ngp" }, "convert needs exactly one dataset folder")]
-        [TestCase(new[] { "convert", "d", "--to", "blender" }, "--to = blender: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs.")]
+        [TestCase(new[] { "convert", "d", "--to", "blender" }, "--to = blender: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping.")]
         [TestCase(new[] { "convert", "d", "--to", "ngp", "--out=" }, "--out is empty")]
         [TestCase(new[] { "convert", "d", "--to", "ngp", "--files", "move" }, "convert does not know the option --files")]
         public void UsageMistakes(string[] args, string error)
