@@ -44,8 +44,9 @@ namespace NerfDatasetCreator.Editor
             if (_lens != null)
             {
                 // Stage 2 of the per-view stages (parallel.md): the wide frame resampled into the distorted one, on this worker thread.
-                var distorted = _lens.Resample(colour);
-                data = ReferenceEquals(data, colour) ? distorted : _lens.Resample(data);
+                // Into this worker thread's reused arrays: the frames are written out below, before the thread's next view.
+                var distorted = _lens.Resample(colour, reuseThreadBuffers: true);
+                data = ReferenceEquals(data, colour) ? distorted : _lens.Resample(data, reuseThreadBuffers: true);
                 colour = distorted;
             }
             _files.Write(_views[view.ViewIndex], colour, data);
