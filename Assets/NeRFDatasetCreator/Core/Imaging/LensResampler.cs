@@ -44,6 +44,16 @@ namespace NerfDatasetCreator
 
         readonly Dictionary<int, LensSampleMap> _maps = new Dictionary<int, LensSampleMap>();
 
+        /// <summary>One thread's output arrays, per pass, reused from view to view (see <see cref="Resample"/>'s reuse).</summary>
+        sealed class Scratch
+        {
+            public ushort[] OverBlack = new ushort[0], OverWhite = new ushort[0];
+            public float[] Linear = new float[0], Depth = new float[0], Normals = new float[0];
+            public byte[] Mask = new byte[0];
+        }
+
+        [ThreadStatic] static Scratch scratch;
+
         public LensResampler(LensDistortion lens, CameraIntrinsics output, LensPinholeCover wide)
         {
             Lens = lens ?? throw new ArgumentNullException(nameof(lens));
@@ -68,9 +78,12 @@ namespace NerfDatasetCreator
         /// <summary>
         /// The distorted frame of <paramref name="wide"/> (a wide render of <see cref="Wide"/>'s size × its supersampling):
         /// every pass it holds, resampled; the flags (gamma, normal frame) carried over. The mask comes out at 1 byte per
-        /// sample, sRGB bytes as linear floats.
+        /// sample, sRGB bytes as linear floats. With <paramref name="reuseThreadBuffers"/> the result's arrays are this
+        /// thread's, per pass, and the next call on the thread overwrites them: for a caller that writes the frame out
+        /// before resampling the next view (the capture's writer threads), which then makes no garbage per view — Unity's
+        /// collector is not generational, and an 800×800 view at k = 2 with every pass is ~100 MB of arrays.
         /// </summary>
-        public RawFrame Resample(RawFrame wide)
+        public RawFrame Resample(RawFrame wide, bool reuseThreadBuffers = false)
         {
             if (wide == null) throw new ArgumentNullException(nameof(wide));
             var k = wide.Supersampling;
@@ -83,25 +96,30 @@ namespace NerfDatasetCreator
 
             var map = Map(k);
             var n = map.Width * map.Height;
+            var keep = reuseThreadBuffers ? scratch ?? (scratch = new Scratch()) : null;
             var result = new RawFrame(map.Width, map.Height, k)
             {
                 ColorIsGammaEncoded = wide.ColorIsGammaEncoded,
                 NormalsInUnityWorld = wide.NormalsInUnityWorld,
                 NormalFloatsPerPixel = wide.NormalFloatsPerPixel,
                 MaskBytesPerPixel = 1,
-                ColorOverBlack = wide.ColorOverBlack == null ? null : new ushort[n * 4],
-                ColorOverWhite = wide.ColorOverWhite == null ? null : new ushort[n * 4],
-                ColorLinear = wide.ColorLinear != null || wide.ColorSrgb != null ? new float[n * 4] : null,
-                Mask = wide.Mask == null ? null : new byte[n],
-                Depth = wide.Depth == null ? null : new float[n],
-                Normals = wide.Normals == null ? null : new float[n * wide.NormalFloatsPerPixel],
+                ColorOverBlack = wide.ColorOverBlack == null ? null : Take(keep == null ? null : keep.OverBlack, n * 4, a => keep.OverBlack = a),
+                ColorOverWhite = wide.ColorOverWhite == null ? null : Take(keep == null ? null : keep.OverWhite, n * 4, a => keep.OverWhite = a),
+                ColorLinear = wide.ColorLinear != null || wide.ColorSrgb != null ? Take(keep == null ? null : keep.Linear, n * 4, a => keep.Linear = a) : null,
+                Mask = wide.Mask == null ? null : Take(keep == null ? null : keep.Mask, n, a => keep.Mask = a),
+                Depth = wide.Depth == null ? null : Take(keep == null ? null : keep.Depth, n, a => keep.Depth = a),
+                Normals = wide.Normals == null ? null : Take(keep == null ? null : keep.Normals, n * wide.NormalFloatsPerPixel, a => keep.Normals = a),
             };
             var halves = HalfFloat.Lookup;
             var decode = Srgb.DecodeLookup;
             int maskStride = wide.MaskBytesPerPixel, npp = wide.NormalFloatsPerPixel;
             for (var p = 0; p < n; p++)
             {
-                if (!map.Locate(p, out var i00, out var dx, out var dy, out var ax, out var ay, out var nearest)) continue; // stays empty
+                if (!map.Locate(p, out var i00, out var dx, out var dy, out var ax, out var ay, out var nearest))
+                {
+                    Empty(result, p); // no ray: nothing there (reused arrays hold the last view's values)
+                    continue;
+                }
                 int i10 = i00 + dx, i01 = i00 + dy, i11 = i00 + dx + dy;
                 float w00 = (1 - ax) * (1 - ay), w10 = ax * (1 - ay), w01 = (1 - ax) * ay, w11 = ax * ay;
                 if (result.ColorOverBlack != null)
@@ -163,6 +181,25 @@ namespace NerfDatasetCreator
                 }
                 Array.Copy(wide, nearest * channels, output, p * channels, channels);
             }
+        }
+
+        /// <summary>A fresh array, or the thread's one of exactly that length (replaced only when the size changes).</summary>
+        static T[] Take<T>(T[] reused, int length, Action<T[]> keep)
+        {
+            if (keep == null || reused == null) return new T[length];
+            if (reused.Length == length) return reused;
+            var array = new T[length];
+            keep(array);
+            return array;
+        }
+
+        static void Empty(RawFrame f, int p)
+        {
+            if (f.ColorOverBlack != null) for (var c = 0; c < 4; c++) { f.ColorOverBlack[p * 4 + c] = 0; f.ColorOverWhite[p * 4 + c] = 0x3C00; } // the clears: black, white
+            if (f.ColorLinear != null) for (var c = 0; c < 4; c++) f.ColorLinear[p * 4 + c] = 0;
+            if (f.Mask != null) f.Mask[p] = 0;
+            if (f.Depth != null) f.Depth[p] = 0;
+            if (f.Normals != null) for (var c = 0; c < f.NormalFloatsPerPixel; c++) f.Normals[p * f.NormalFloatsPerPixel + c] = 0;
         }
 
         static float Mix(float[] halves, ushort[] s, int i00, int i10, int i01, int i11, int c, float w00, float w10, float w01, float w11) =>

@@ -65,15 +65,17 @@ namespace NerfDatasetCreator.Editor
             }
             if (_lens != null)
             {
-                // Stage 2 of the per-view stages (parallel.md): the wide frames resampled into the distorted ones, on this worker thread.
-                var sharp = _lens.Resample(colour);
+                // Stage 2 of the per-view stages (parallel.md): the wide frames resampled into the distorted ones, on this worker thread,
+                // into its reused arrays (the frames are written out below, before the thread's next view). The sharp image of a
+                // blurred view gets arrays of its own: the thread's would be the blurred one's.
+                var sharp = _lens.Resample(colour, reuseThreadBuffers: blurred == null);
                 if (blurred != null)
                 {
-                    var distortedBlur = _lens.Resample(blurred);
-                    data = ReferenceEquals(data, blurred) ? distortedBlur : _lens.Resample(data);
+                    var distortedBlur = _lens.Resample(blurred, reuseThreadBuffers: true);
+                    data = ReferenceEquals(data, blurred) ? distortedBlur : _lens.Resample(data, reuseThreadBuffers: true);
                     blurred = distortedBlur;
                 }
-                else data = ReferenceEquals(data, colour) ? sharp : _lens.Resample(data);
+                else data = ReferenceEquals(data, colour) ? sharp : _lens.Resample(data, reuseThreadBuffers: true);
                 colour = sharp;
             }
             if (blurred == null)

@@ -57,7 +57,8 @@ namespace NerfDatasetCreator.Tests
             public bool ThroughWideRender { get; set; }
 
             /// <summary>The camera's vertical field of view and distance (Unity units); 0 for the defaults (39.6°, 4 or 8 normalised).</summary>
-            public double VerticalFovDegrees, Distance;
+            public double VerticalFovDegrees { get; set; }
+            public double Distance { get; set; }
 
             /// <summary>The loaders the settings list (all by default).</summary>
             public TargetLoaders Loaders = TargetLoaders.All;

@@ -232,6 +232,27 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void ReusedThreadBuffersGiveTheSameFrameWithoutNewArrays()
+        {
+            var lens = LensDistortion.OpenCv(-0.25, 0.06, 0.003, -0.002);
+            var wide = LensCapture.WideRender(lens, Frame);
+            RawFrame Wide(float z)
+            {
+                var frame = new RawFrame(wide.Width, wide.Height, 1) { Depth = new float[wide.Width * wide.Height], Mask = new byte[wide.Width * wide.Height], MaskBytesPerPixel = 1 };
+                for (var p = 0; p < frame.Depth.Length; p++) { frame.Depth[p] = z + p % 7; frame.Mask[p] = (byte)(p % 256); }
+                return frame;
+            }
+            var resampler = new LensResampler(lens, Frame, wide);
+            var fresh = resampler.Resample(Wide(3));
+            var first = resampler.Resample(Wide(3), reuseThreadBuffers: true);
+            Assert.That(first.Depth, Is.EqualTo(fresh.Depth));
+            Assert.That(first.Mask, Is.EqualTo(fresh.Mask));
+            var second = resampler.Resample(Wide(5), reuseThreadBuffers: true);
+            Assert.That(second.Depth, Is.SameAs(first.Depth), "the thread's array, reused");
+            Assert.That(second.Depth, Is.EqualTo(resampler.Resample(Wide(5)).Depth));
+        }
+
+        [Test]
         public void LabelIdsTakeTheNearestSample()
         {
             var lens = LensDistortion.Fisheye(0.04, -0.01, 0.003, -0.0005);
