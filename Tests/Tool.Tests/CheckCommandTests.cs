@@ -13,13 +13,14 @@ namespace NerfDatasetCreator.Tool.Tests
         Scratch _scratch;
         string _clean;
 
-        static readonly string[] Checks = { "dataset", "alpha vs mask", "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry" };
+        static readonly string[] Checks = { "dataset", "alpha vs mask", "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry", "exposure" };
 
         [OneTimeSetUp]
         public void Render()
         {
             _scratch = new Scratch();
-            _clean = AnalyticDataset.Write(_scratch.Root, "clean", new AnalyticDataset.Options { Train = 6, Val = 2, Test = 2 });
+            // With exposure on (train views modified, clean images beside them), so that every check has something to pass.
+            _clean = AnalyticDataset.Write(_scratch.Root, "clean", new AnalyticDataset.Options { Train = 6, Val = 2, Test = 2, Configure = s => s.Exposure.Mode = ExposureMode.Random });
         }
 
         [OneTimeTearDown] public void Delete() => _scratch.Dispose();
