@@ -19,7 +19,11 @@ namespace NerfDatasetCreator.Tool.Tests
         public void Render()
         {
             _scratch = new Scratch();
-            _clean = AnalyticDataset.Write(_scratch.Root, "clean", new AnalyticDataset.Options { Train = 6, Val = 2, Test = 2, MeshesAt = AnalyticSceneMeshes.At, Labels = true });
+            // With labels, a geometry pack and exposure on (train views modified, clean images beside them), so that every check has something to pass.
+            _clean = AnalyticDataset.Write(_scratch.Root, "clean", new AnalyticDataset.Options
+            {
+                Train = 6, Val = 2, Test = 2, MeshesAt = AnalyticSceneMeshes.At, Labels = true, Configure = s => s.Exposure.Mode = ExposureMode.Random,
+            });
         }
 
         [OneTimeTearDown] public void Delete() => _scratch.Dispose();

@@ -99,7 +99,7 @@ namespace NerfDatasetCreator
 
         public DatasetCheckResult Finish()
         {
-            if (_recorded == 0) return DatasetCheckResult.Skip(Name, "no frame records " + ExposureKeys.Ev + " (exposure is off)");
+            if (_recorded == 0) return DatasetCheckResult.Skip(Name, "no frame records " + ExposureKeys.Ev + ": exposure is off");
             // Some frames of a split with the keys and others without: a writer that lost them on some views.
             var mixed = new List<string>();
             foreach (var pair in _counts)
