@@ -80,6 +80,29 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void InADynamicCaptureTheContentMovesOverTheShutterAndTheSubFramesAtTheirOwnTimes()
+        {
+            // Monocular, 11 train views over 0.5 … 1.5 s: time step 0.1 s; shutter 0.5 opens 0.025 s before each view's
+            // time and closes 0.025 s after; sub-frame k of 4 is at open + (k + ½)/4 × 0.05 s.
+            var s = Blurred();
+            s.Train.Count = 11;
+            s.Time.Mode = TimeMode.Monocular;
+            s.Time.StartSeconds = 0.5;
+            s.Time.EndSeconds = 1.5;
+            var plan = CapturePlan.Build(s, PlanTarget.Headless);
+            var view = plan.Views.First(v => v.Split == DatasetSplit.Train && v.Index == 4);
+            Assert.That(view.Time.Value.Seconds, Is.EqualTo(0.9).Within(1e-12));
+            Assert.That(view.Motion.OpenSeconds.Value, Is.EqualTo(0.875).Within(1e-12));
+            Assert.That(view.Motion.CloseSeconds.Value, Is.EqualTo(0.925).Within(1e-12));
+            var subs = SubFrameSchedule.For(view.Motion, 4);
+            Assert.That(subs.Select(f => f.Seconds.Value), Is.EqualTo(new[] { 0.88125, 0.89375, 0.90625, 0.91875 }).Within(1e-12));
+            var text = BlenderTransformsWriter.Write(plan, DatasetSplit.Train);
+            var frame = Newtonsoft.Json.Linq.JObject.Parse(text)["frames"][4];
+            Assert.That((double)frame["shutter_open_seconds"], Is.EqualTo(0.875).Within(1e-12));
+            Assert.That((double)frame["shutter_close_seconds"], Is.EqualTo(0.925).Within(1e-12));
+        }
+
+        [Test]
         public void APathShutterOnAnOrbitTurnsByTheShutterTimesTheStepAngle()
         {
             // An orbit of N views over 2 turns steps 4π/N about the target; the central difference of a uniform orbit
