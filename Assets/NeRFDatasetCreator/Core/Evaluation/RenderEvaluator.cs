@@ -37,7 +37,8 @@ namespace NerfDatasetCreator
             IReadOnlyList<KeyValuePair<string, GeometryTruth>> perStep = null;
             if (stepsFolder) perStep = GeometryStepsEvaluation.Match(dataset, options.GeometryPath);
             else if (options.GeometryPath != null) truth = GeometryTruth.Resolve(dataset, options.GeometryPath, options.TruthMeshPath, options.Step);
-            CheckSizes(dataset, renders);
+            var firstColumn = TrainTestExposureCrop.FirstColumn(dataset, renders);
+            CheckSizes(dataset, renders, firstColumn);
 
             var result = new EvaluationResult
             {
@@ -53,6 +54,8 @@ namespace NerfDatasetCreator
             var wantNormals = renders.Views.All(v => v.NormalPath != null);
             if (wantDepth && !dataset.HasDepth) { wantDepth = false; result.Notes.Add("The renders include depth, but the dataset's " + options.Split + " split has no depth PNGs: depth not scored."); }
             if (wantNormals && !dataset.HasNormals) { wantNormals = false; result.Notes.Add("The renders include normals, but the dataset's " + options.Split + " split has no normal PNGs: normals not scored."); }
+            if (firstColumn > 0)
+                result.Notes.Add("The 3DGS renders are the right half of each view (render.py with --train_test_exp keeps columns W//2 … W − 1 of the render and of gt): scored against that half of the dataset's images, from column " + firstColumn + ".");
             if (!dataset.HasMasks) result.Notes.Add("The dataset's " + options.Split + " split has no masks: PSNR in the mask not computed.");
             if (renders.Layout == RenderLayout.Nerfstudio && wantDepth)
                 result.Notes.Add(options.DepthAlongRay
@@ -70,7 +73,7 @@ namespace NerfDatasetCreator
                     var missing = GeometryStepsEvaluation.Missing(dataset, perStep);
                     if (missing.Count > 0) result.Notes.Add("--geometry " + options.GeometryPath + " has no reconstruction for time step" + (missing.Count == 1 ? " " : "s ") + string.Join(", ", missing) + ": the geometry means are over the " + perStep.Count + " steps it has.");
                 }
-                ScoreAll(dataset, renders, background, wantDepth, wantNormals, options, outFolder, result, progress, truth, perStep);
+                ScoreAll(dataset, renders, background, wantDepth, wantNormals, options, outFolder, result, progress, truth, perStep, firstColumn);
             }
             catch
             {
@@ -84,7 +87,7 @@ namespace NerfDatasetCreator
 
         static void ScoreAll(EvaluationDataset dataset, RenderSet renders, EvaluationBackground background, bool wantDepth, bool wantNormals,
             EvaluationOptions options, string outFolder, EvaluationResult result, Action<string> progress,
-            GeometryTruth truth = null, IReadOnlyList<KeyValuePair<string, GeometryTruth>> perStep = null)
+            GeometryTruth truth = null, IReadOnlyList<KeyValuePair<string, GeometryTruth>> perStep = null, int firstColumn = 0)
         {
             var views = new ViewResult[renders.Views.Count];
             var done = 0;
@@ -93,7 +96,7 @@ namespace NerfDatasetCreator
             {
                 Parallel.For(0, views.Length, parallel, i =>
                 {
-                    views[i] = Score(dataset, renders.Views[i], background, wantDepth, wantNormals, options, outFolder);
+                    views[i] = Score(dataset, renders.Views[i], background, wantDepth, wantNormals, options, outFolder, firstColumn);
                     var n = System.Threading.Interlocked.Increment(ref done);
                     if (n % 10 == 0 || n == views.Length) progress?.Invoke("scored " + n + " of " + views.Length + " views");
                 });
@@ -115,7 +118,8 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>Every render must have the ground truth's size (read from the PNG headers before any pixel is decoded).</summary>
-        static void CheckSizes(EvaluationDataset dataset, RenderSet renders)
+        /// <param name="firstColumn">The renders hold the dataset's columns from here on (<see cref="TrainTestExposureCrop"/>).</param>
+        static void CheckSizes(EvaluationDataset dataset, RenderSet renders, int firstColumn)
         {
             var problems = new List<ValidationProblem>();
             foreach (var view in renders.Views)
@@ -125,7 +129,7 @@ namespace NerfDatasetCreator
                 catch (InvalidDataException e) { problems.Add(new ValidationProblem("<dataset>", dataset.Frames[view.FrameIndex].ImagePath, e.Message, "Run nerf-dataset validate on the dataset.")); continue; }
                 try { render = PngInfo.Read(view.ColourPath); }
                 catch (InvalidDataException e) { problems.Add(new ValidationProblem("--renders", view.ColourPath, e.Message, "Re-render the view.")); continue; }
-                if (render.Width != truth.Width || render.Height != truth.Height)
+                if (render.Width != truth.Width - firstColumn || render.Height != truth.Height)
                     problems.Add(new ValidationProblem("--renders", view.ColourPath, "is " + render.Width + "×" + render.Height + " but the ground truth " + view.FramePath + " is " + truth.Width + "×" + truth.Height + ".",
                         "Render at the dataset's resolution (3DGS: -r 1 for images wider than 1600 px; nerfstudio: no --downscale-factor)."));
                 if (problems.Count >= 5) break;
@@ -133,10 +137,13 @@ namespace NerfDatasetCreator
             InvalidParameterException.ThrowIfAny(problems.ToArray());
         }
 
-        static ViewResult Score(EvaluationDataset dataset, RenderView view, EvaluationBackground background, bool wantDepth, bool wantNormals, EvaluationOptions options, string outFolder)
+        static ViewResult Score(EvaluationDataset dataset, RenderView view, EvaluationBackground background, bool wantDepth, bool wantNormals, EvaluationOptions options, string outFolder,
+            int firstColumn = 0)
         {
             var frame = dataset.Frames[view.FrameIndex];
-            var truthPng = PngReader.Read(frame.ImagePath);
+            // Every dataset-side image is cut to the columns the render holds (all of them unless 3DGS --train_test_exp).
+            PngImage Truth(string path) => TrainTestExposureCrop.Columns(PngReader.Read(path), firstColumn);
+            var truthPng = Truth(frame.ImagePath);
             var renderPng = PngReader.Read(view.ColourPath);
             int w = truthPng.Width, h = truthPng.Height;
             var truth = EvaluationImages.Colour(truthPng, background, frame.ImagePath);
@@ -154,13 +161,13 @@ namespace NerfDatasetCreator
             byte[] mask = null;
             if (frame.MaskPath != null && dataset.HasMasks)
             {
-                mask = EvaluationImages.Mask(PngReader.Read(frame.MaskPath), frame.MaskPath);
+                mask = EvaluationImages.Mask(Truth(frame.MaskPath), frame.MaskPath);
                 result.MaskedPsnr = Psnr.Masked(render, truth, 3, mask, out var inside);
                 result.MaskPixels = inside;
             }
             if (wantDepth)
             {
-                var truthDepth = EvaluationImages.DepthPng(PngReader.Read(frame.DepthPath), dataset.DepthScale, frame.DepthPath);
+                var truthDepth = EvaluationImages.DepthPng(Truth(frame.DepthPath), dataset.DepthScale, frame.DepthPath);
                 float[] renderDepth;
                 if (view.DepthFormat == RenderDataFormat.NpyGz)
                     renderDepth = EvaluationImages.DepthNpy(NpyReader.ReadGz(view.DepthPath), w, h, options.DepthAlongRay, dataset.Focal(w), dataset.Cx ?? w / 2.0, dataset.Cy ?? h / 2.0, view.DepthPath);
@@ -174,7 +181,7 @@ namespace NerfDatasetCreator
             }
             if (wantNormals)
             {
-                var truthNormals = EvaluationImages.NormalsPng(PngReader.Read(frame.NormalPath), frame.NormalPath);
+                var truthNormals = EvaluationImages.NormalsPng(Truth(frame.NormalPath), frame.NormalPath);
                 float[] renderNormals;
                 if (view.NormalFormat == RenderDataFormat.NpyGz) renderNormals = EvaluationImages.NormalsNpy(NpyReader.ReadGz(view.NormalPath), w, h, view.NormalPath);
                 else

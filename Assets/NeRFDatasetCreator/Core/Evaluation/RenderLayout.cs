@@ -52,7 +52,7 @@ namespace NerfDatasetCreator
             switch (layout)
             {
                 case RenderLayout.GaussianSplatting:
-                    return "graphdeco-inria/gaussian-splatting render.py (1152adc) lines 24-35: <model>/<split>/ours_<iter>/renders/'{0:05d}'.format(idx).png over scene.getTestCameras() in the split file's order, RGB via torchvision save_image";
+                    return "graphdeco-inria/gaussian-splatting render.py (182afc9) lines 30-46: <model>/<split>/ours_<iter>/renders/'{0:05d}'.format(idx).png over scene.getTestCameras() in the split file's order (Scene(..., shuffle=False), line 51), RGB via torchvision save_image; with --train_test_exp the right half only (lines 41-43)";
                 case RenderLayout.Nerfstudio:
                     return "nerfstudio-project/nerfstudio nerfstudio/scripts/render.py (50e0e3c) lines 783, 829-831, 882-888: <output-path>/<split>/<output name>/<image path relative to the split's common folder>, .png only with --image-format png (line 418: default jpeg), raw-* outputs as .npy.gz (line 845: raw depth divided by the dataparser scale)";
                 case RenderLayout.InstantNgp:

@@ -256,6 +256,53 @@ namespace NerfDatasetCreator.Tests
             }
         }
 
+        /// <summary>
+        /// 3DGS render.py (182afc9) lines 41–43: with --train_test_exp each render is columns W//2 … W − 1 only. Such
+        /// renders are scored against the same columns of the dataset's image and mask, figures computed here from them.
+        /// </summary>
+        [Test]
+        public void ThreeDgsRightHalfRendersOfTrainTestExpAreScoredOnThatHalf()
+        {
+            using (var temp = new TempFolder())
+            {
+                const int w = 47; // odd: the half is 24 columns from column 23, as rendering[..., W // 2:] slices
+                var dataset = temp.Combine("sphere");
+                var views = AnalyticSphereDataset.Write(dataset, w, H);
+                var renders = Path.Combine(temp.Combine("model"), "test", "ours_7000", "renders");
+                Directory.CreateDirectory(renders);
+                const int first = w / 2, half = w - w / 2;
+                byte[] Right(byte[] rgb)
+                {
+                    var cut = new byte[half * H * 3];
+                    for (var y = 0; y < H; y++) Buffer.BlockCopy(rgb, (y * w + first) * 3, cut, y * half * 3, half * 3);
+                    return cut;
+                }
+                for (var i = 0; i < views.Count; i++)
+                    File.WriteAllBytes(Path.Combine(renders, i.ToString("00000") + ".png"), PngWriter.Encode(Right(AnalyticSphereDataset.Render(views[i], w, H, 12)), half, H, PngPixelFormat.Rgb8));
+
+                var result = RenderEvaluator.Run(Options(dataset, temp.Combine("model")));
+                Assert.That(result.Renders.Layout, Is.EqualTo(RenderLayout.GaussianSplatting));
+                Assert.That(result.Notes, Has.Some.Contains("right half").And.Some.Contains("column 23"));
+                for (var i = 0; i < views.Count; i++)
+                {
+                    var truth = Right(AnalyticSphereDataset.Render(views[i], w, H, 0)).Select(b => b / 255f).ToArray();
+                    var render = Right(AnalyticSphereDataset.Render(views[i], w, H, 12)).Select(b => b / 255f).ToArray();
+                    double sum = 0, inside = 0, insideCount = 0;
+                    for (var k = 0; k < truth.Length; k++)
+                    {
+                        double d = render[k] - truth[k];
+                        sum += d * d;
+                        var pixel = k / 3;
+                        if (views[i].Mask[(pixel / half) * w + first + pixel % half] == 255) { inside += d * d; insideCount++; }
+                    }
+                    Assert.That((result.Views[i].Width, result.Views[i].Height), Is.EqualTo((half, H)));
+                    Assert.That(result.Views[i].Psnr, Is.EqualTo(-10 * Math.Log10(sum / truth.Length)).Within(1e-9));
+                    Assert.That(result.Views[i].MaskedPsnr, Is.EqualTo(-10 * Math.Log10(inside / insideCount)).Within(1e-9));
+                    Assert.That(result.Views[i].Ssim, Is.EqualTo(ImageMetricsTests.Direct3dgs(render, truth, half, H, 3)).Within(1e-6));
+                }
+            }
+        }
+
         [Test]
         public void RendersOfAnotherSizeAreRefused()
         {

@@ -120,5 +120,12 @@ namespace NerfDatasetCreator.Editor.Tests
                     if (j != k) Assert.That(seen[k], Is.GreaterThan(3 * seen[j]), "step " + k + " against step " + j + "'s depth");
             }
         }
+
+        sealed class SilentProgress : ICaptureProgress
+        {
+            public void Report(ThroughputMeter meter) { }
+            public bool CancelRequested => false;
+            public void Close() { }
+        }
     }
 }
