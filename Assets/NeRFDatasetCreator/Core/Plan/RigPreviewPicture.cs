@@ -223,7 +223,14 @@ namespace NerfDatasetCreator
 
             public int Count => _views.Count;
 
-            public PictureCamera this[int index] => new PictureCamera(_views[index].Split, _views[index].TransformMatrix);
+            public PictureCamera this[int index]
+            {
+                get
+                {
+                    var view = _views[index]; // made on each read (PlannedViewList): once here
+                    return new PictureCamera(view.Split, view.TransformMatrix);
+                }
+            }
 
             public IEnumerator<PictureCamera> GetEnumerator()
             {
@@ -237,11 +244,13 @@ namespace NerfDatasetCreator
         {
             var x = TopPanelLeft;
             var y = HeaderHeight + PanelSize + 10;
+            var counts = new int[DatasetSplits.All.Count]; // one pass: a plan's cameras are made as they are read
+            foreach (var c in cameras) counts[(int)c.Split]++;
             foreach (var split in DatasetSplits.All)
             {
                 canvas.FillDisc(x + 5, y + 7, 5, Byte3(SplitColors.Of(ToPreview(split))));
                 x += 16;
-                x += canvas.Text(x, y, DatasetSplits.Name(split) + " " + cameras.Count(c => c.Split == split).ToString(CultureInfo.InvariantCulture), TextColour) + 24;
+                x += canvas.Text(x, y, DatasetSplits.Name(split) + " " + counts[(int)split].ToString(CultureInfo.InvariantCulture), TextColour) + 24;
             }
             canvas.Text(x, y, "GRID " + grid.ToString("G4", CultureInfo.InvariantCulture) + "   + TARGET" + (boxes ? "   BOX: VOLUME" : ""), TextColour);
         }
