@@ -162,15 +162,16 @@ namespace NerfDatasetCreator
                 offset += s.Count;
             }
             var views = new PlannedViewList(splits);
-            var warnings = PlanWarnings.For(copy, target, normalisation, PosesOf(views))
+            var warnings = PlanWarnings.For(copy, target, normalisation, PosesOf(splits))
                 .Concat(CameraSourcePlanning.Warnings(copy, copy.Intrinsics(), imported)).ToList();
             return new CapturePlan(copy, target, distance, copy.Intrinsics(), normalisation, warnings, views, time);
         }
 
         // A plain loop: this runs once per view, up to 300 000 times.
-        static IEnumerable<UnityPose> PosesOf(PlannedViewList views)
+        static IEnumerable<UnityPose> PosesOf(PlanSplitViews[] splits)
         {
-            for (var i = 0; i < views.Count; i++) yield return views[i].Pose;
+            foreach (var s in splits)
+                for (var i = 0; i < s.Count; i++) yield return s.PoseAt(i);
         }
     }
 }

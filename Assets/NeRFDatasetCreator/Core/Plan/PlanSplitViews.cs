@@ -60,6 +60,14 @@ namespace NerfDatasetCreator
         /// <summary>The split's views: its cameras, times the steps of a multi-view capture.</summary>
         public int Count { get; }
 
+        /// <summary>The Unity pose of view <paramref name="index"/> alone (the plan's warnings need no more).</summary>
+        public UnityPose PoseAt(int index)
+        {
+            var camera = TimePlanning.SlotAt(_time, Split, _cameras, index).Camera;
+            if (_imported != null) return _imported.Cameras[camera].Pose;
+            return _formation != null ? LookAt.FromDirection(_centre, _formation.Direction(camera, _cameras), _distance) : _poses[camera];
+        }
+
         /// <summary>View <paramref name="index"/> of the split, made anew on each call.</summary>
         public PlannedView At(int index)
         {

@@ -84,7 +84,12 @@ namespace NerfDatasetCreator
         {
             boxes = boxes ?? Array.Empty<PictureBox>();
             var extent = Math.Max(targetRadius, sphereRadius);
-            foreach (var c in cameras) extent = Math.Max(extent, Reach(c.CameraToWorld.Translation - target));
+            var counts = new int[DatasetSplits.All.Count]; // for the legend, in the same pass: a plan's cameras are made as they are read
+            foreach (var c in cameras)
+            {
+                extent = Math.Max(extent, Reach(c.CameraToWorld.Translation - target));
+                counts[(int)c.Split]++;
+            }
             foreach (var b in boxes)
                 foreach (var corner in b.Corners) extent = Math.Max(extent, Reach(corner - target));
             if (!(extent > 0) || double.IsInfinity(extent)) extent = 1;
@@ -93,10 +98,11 @@ namespace NerfDatasetCreator
 
             var canvas = new RgbCanvas(Width, Height, Background);
             foreach (var panel in new[] { Panel.Top, Panel.Side })
-                DrawPanel(canvas, panel, cameras, boxes, target, targetRadius, sphereRadius, pixelsPerUnit, grid);
+                DrawPanel(canvas, panel, boxes, target, targetRadius, sphereRadius, pixelsPerUnit, grid);
+            DrawCameras(canvas, cameras, target, pixelsPerUnit);
             canvas.Text(TopPanelLeft, 7, "TOP: X RIGHT, Y UP", TextColour);
             canvas.Text(SidePanelLeft, 7, "SIDE: X RIGHT, Z UP", TextColour);
-            DrawLegend(canvas, cameras, grid, boxes.Count > 0);
+            DrawLegend(canvas, counts, grid, boxes.Count > 0);
             return canvas;
         }
 
@@ -120,6 +126,8 @@ namespace NerfDatasetCreator
 
         enum Panel { Top, Side }
 
+        static readonly Panel[] Panels = { Panel.Top, Panel.Side };
+
         static double[] ToPixel(Panel panel, Vector3d p, Vector3d target, double pixelsPerUnit)
         {
             var d = p - target;
@@ -128,7 +136,8 @@ namespace NerfDatasetCreator
             return new[] { left + PanelSize / 2.0 + d.X * pixelsPerUnit, HeaderHeight + PanelSize / 2.0 - up * pixelsPerUnit };
         }
 
-        static void DrawPanel(RgbCanvas canvas, Panel panel, IReadOnlyList<PictureCamera> cameras, IReadOnlyList<PictureBox> boxes, Vector3d target,
+        /// <summary>A panel's background, grid, target, formation sphere and boxes: everything under the cameras.</summary>
+        static void DrawPanel(RgbCanvas canvas, Panel panel, IReadOnlyList<PictureBox> boxes, Vector3d target,
             double targetRadius, double sphereRadius, double pixelsPerUnit, double grid)
         {
             var left = panel == Panel.Top ? TopPanelLeft : SidePanelLeft;
@@ -163,26 +172,40 @@ namespace NerfDatasetCreator
             canvas.Line(cx - 6, cy, cx + 6, cy, TextColour);
             canvas.Line(cx, cy - 6, cx, cy + 6, TextColour);
 
-            // Painter's order: the viewer of the top view is above (+Z), of the side view in front (−Y); farthest first,
-            // equal depths in list order. The cameras are drawn once in list order and the buffer keeps, per pixel, what
-            // that order would have drawn last: no sorted copy of the cameras (a plan makes them as they are read).
-            var painter = new PaintersBuffer(left, HeaderHeight, PanelSize, PanelSize, descending: panel == Panel.Side);
-            canvas.Filter = painter.Accept;
+            canvas.ResetClip();
+        }
+
+        /// <summary>
+        /// The cameras in both panels, in one pass over them (a plan makes them as they are read). Painter's order: the
+        /// viewer of the top view is above (+Z), of the side view in front (−Y); farthest first, equal depths in list
+        /// order. Each panel's <see cref="PaintersBuffer"/> keeps, per pixel, what that order would have drawn last, so
+        /// no sorted copy of the cameras is made. The panels do not overlap, so drawing them together changes nothing.
+        /// </summary>
+        static void DrawCameras(RgbCanvas canvas, IReadOnlyList<PictureCamera> cameras, Vector3d target, double pixelsPerUnit)
+        {
+            var top = new PaintersBuffer(TopPanelLeft, HeaderHeight, PanelSize, PanelSize, descending: false);
+            var side = new PaintersBuffer(SidePanelLeft, HeaderHeight, PanelSize, PanelSize, descending: true);
             var index = 0;
             foreach (var c in cameras)
             {
                 var colour = Byte3(SplitColors.Of(ToPreview(c.Split)));
                 var t = c.CameraToWorld.Translation;
-                var at = ToPixel(panel, t, target, pixelsPerUnit);
                 // An OpenGL camera looks along its −Z column; the tick shows that direction's share in the panel's plane.
                 var look = (-c.CameraToWorld.Column(2)).Normalized();
-                var across = look.X;
-                var up = panel == Panel.Top ? look.Y : look.Z;
-                var depth = panel == Panel.Top ? t.Z : t.Y;
-                painter.Item(depth, index, 0);
-                canvas.Line(at[0], at[1], at[0] + across * TickLength, at[1] - up * TickLength, colour);
-                painter.Item(depth, index, 1);
-                canvas.FillDisc(at[0], at[1], DiscRadius, colour);
+                foreach (var panel in Panels)
+                {
+                    var left = panel == Panel.Top ? TopPanelLeft : SidePanelLeft;
+                    var painter = panel == Panel.Top ? top : side;
+                    canvas.Clip(left, HeaderHeight, left + PanelSize, HeaderHeight + PanelSize);
+                    canvas.Filter = painter.Accept;
+                    var at = ToPixel(panel, t, target, pixelsPerUnit);
+                    var up = panel == Panel.Top ? look.Y : look.Z;
+                    var depth = panel == Panel.Top ? t.Z : t.Y;
+                    painter.Item(depth, index, 0);
+                    canvas.Line(at[0], at[1], at[0] + look.X * TickLength, at[1] - up * TickLength, colour);
+                    painter.Item(depth, index, 1);
+                    canvas.FillDisc(at[0], at[1], DiscRadius, colour);
+                }
                 index++;
             }
             canvas.Filter = null;
@@ -215,12 +238,10 @@ namespace NerfDatasetCreator
             System.Collections.IEnumerator System.Collections.IEnumerable.GetEnumerator() => GetEnumerator();
         }
 
-        static void DrawLegend(RgbCanvas canvas, IReadOnlyList<PictureCamera> cameras, double grid, bool boxes)
+        static void DrawLegend(RgbCanvas canvas, int[] counts, double grid, bool boxes)
         {
             var x = TopPanelLeft;
             var y = HeaderHeight + PanelSize + 10;
-            var counts = new int[DatasetSplits.All.Count]; // one pass: a plan's cameras are made as they are read
-            foreach (var c in cameras) counts[(int)c.Split]++;
             foreach (var split in DatasetSplits.All)
             {
                 canvas.FillDisc(x + 5, y + 7, 5, Byte3(SplitColors.Of(ToPreview(split))));
