@@ -35,9 +35,11 @@ namespace NerfDatasetCreator
                     "says the images were not rendered (a plan from `nerf-dataset plan`): image and extra-file checks are skipped."));
             double? firstAngle = null;
             string firstAngleFile = null;
-            var cameraCentres = new List<Vector3d>();
+            // The object's size is not in a Blender-format dataset, so the check is for its centre at the origin
+            // (where the loaders assume it): a camera nearer than NeRF's near 2 or beyond its far 6 cannot see it.
+            var cameraCentres = new LoaderRangeCheck.Tally(0);
             var timeRecord = TimeDatasetChecks.HasTimeRecord(folder);
-            var timeFramesBySplit = new Dictionary<DatasetSplit, List<JObject>>();
+            var timeFramesBySplit = new Dictionary<DatasetSplit, IReadOnlyList<JObject>>();
             var labelMaps = false;
             foreach (var split in DatasetSplits.All)
             {
@@ -51,9 +53,9 @@ namespace NerfDatasetCreator
                 }
                 // Streamed frame by frame (a 300 000-view plan's files are 87 MB each). What the frames add is undone if
                 // the file turns out to be malformed further on, so a broken file reports its parse error alone, as before.
-                var checkpoint = new Checkpoint(report, state, cameraCentres);
+                var checkpoint = new Checkpoint(report, state, cameraCentres, split);
                 var needsDepthScale = false;
-                var timeFrames = new List<JObject>();
+                var timeFrames = new KeptTimeFrames();
                 var keepEveryTimeFrame = timeRecord;
                 TransformsDocument doc;
                 try
@@ -63,14 +65,9 @@ namespace NerfDatasetCreator
                         if (frame.FilePath != null)
                         {
                             var key = ExportPaths.Normalise(frame.FilePath);
-                            if (state.FilePaths.TryGetValue(key, out var first))
+                            if (!state.FilePaths.Add(key, file, frame.Index, out var first))
                                 report.Problems.Add(new DatasetProblem(file, frame.Index, frame.FilePath,
                                     "file_path is also " + first.file + " frame " + first.index + "'s; two frames of one image train on it twice and exports write it twice (give every frame its own image)."));
-                            else
-                            {
-                                state.FilePaths[key] = (file, frame.Index);
-                                checkpoint.AddedPaths.Add(key);
-                            }
                         }
                         if (frame.TransformMatrix.HasValue && frame.TransformMatrix.Value.IsFinite) cameraCentres.Add(frame.TransformMatrix.Value.Translation);
                         CheckFrame(folder, file, frame, state, report);
@@ -81,7 +78,7 @@ namespace NerfDatasetCreator
                 }
                 catch (SettingsFormatException e)
                 {
-                    checkpoint.Restore();
+                    cameraCentres = checkpoint.Restore();
                     report.Problems.Add(new DatasetProblem(file, -1, null, "line " + e.Line + ", column " + e.Column + ": " + e.Detail));
                     continue;
                 }
@@ -92,7 +89,7 @@ namespace NerfDatasetCreator
                 }
                 catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
                 {
-                    checkpoint.Restore();
+                    cameraCentres = checkpoint.Restore();
                     report.Problems.Add(new DatasetProblem(file, -1, null, "cannot be read: " + e.Message + " (check the file's permissions)."));
                     continue;
                 }
@@ -144,9 +141,7 @@ namespace NerfDatasetCreator
                 foreach (var unreferenced in UnreferencedImages(folder, state.Referenced))
                     report.Warnings.Add(unreferenced);
             }
-            // The object's size is not in a Blender-format dataset, so the check is for its centre at the origin
-            // (where the loaders assume it): a camera nearer than NeRF's near 2 or beyond its far 6 cannot see it.
-            foreach (var range in LoaderRangeCheck.Check(cameraCentres, 0))
+            foreach (var range in cameraCentres.Check())
                 report.Warnings.Add(new DatasetProblem("transforms_*.json", -1, null,
                     "(object size unknown here: the target is taken as a point at the origin) " + range));
             TimeDatasetChecks.Check(folder, report, timeFramesBySplit);
@@ -240,7 +235,7 @@ namespace NerfDatasetCreator
         sealed class ImageState
         {
             public bool SkipFiles;
-            public readonly Dictionary<string, (string file, int index)> FilePaths = new Dictionary<string, (string file, int index)>(StringComparer.OrdinalIgnoreCase);
+            public readonly FramePathRegistry FilePaths = new FramePathRegistry();
             /// <summary>Dataset-relative paths (forward slashes) of every image a frame names.</summary>
             public readonly HashSet<string> Referenced = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
             /// <summary>What the file being read adds to <see cref="Referenced"/>, joined once it has read completely.</summary>
@@ -256,22 +251,21 @@ namespace NerfDatasetCreator
         {
             readonly DatasetValidationReport _report;
             readonly ImageState _state;
-            readonly List<Vector3d> _centres;
-            readonly int _centreCount, _images, _extras, _colour, _sixteen;
+            readonly LoaderRangeCheck.Tally _centres;
+            readonly int _images, _extras, _colour, _sixteen;
             readonly int? _width, _height;
             readonly PngInfo _first;
             readonly string _firstPath;
             public readonly int ProblemCount;
-            public readonly List<string> AddedPaths = new List<string>();
             public readonly HashSet<string> Referenced;
 
-            public Checkpoint(DatasetValidationReport report, ImageState state, List<Vector3d> centres)
+            public Checkpoint(DatasetValidationReport report, ImageState state, LoaderRangeCheck.Tally centres, DatasetSplit split)
             {
                 _report = report;
                 _state = state;
                 _centres = centres;
                 ProblemCount = report.Problems.Count;
-                _centreCount = centres.Count;
+                state.FilePaths.BeginFile(split);
                 _images = report.ImagesChecked;
                 _extras = report.ExtraFilesChecked;
                 _width = report.ImageWidth;
@@ -283,10 +277,10 @@ namespace NerfDatasetCreator
                 Referenced = state.NewlyReferenced = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
             }
 
-            public void Restore()
+            /// <summary>Undoes the file's additions; returns the camera centres' tally as it was before the file.</summary>
+            public LoaderRangeCheck.Tally Restore()
             {
                 _report.Problems.RemoveRange(ProblemCount, _report.Problems.Count - ProblemCount);
-                _centres.RemoveRange(_centreCount, _centres.Count - _centreCount);
                 _report.ImagesChecked = _images;
                 _report.ExtraFilesChecked = _extras;
                 _report.ImageWidth = _width;
@@ -295,8 +289,9 @@ namespace NerfDatasetCreator
                 _state.SixteenBitColour = _sixteen;
                 _state.First = _first;
                 _state.FirstPath = _firstPath;
-                foreach (var key in AddedPaths) _state.FilePaths.Remove(key);
+                _state.FilePaths.ForgetFile();
                 Referenced.Clear();
+                return _centres;
             }
         }
 

@@ -22,15 +22,15 @@ namespace NerfDatasetCreator
         readonly IReadOnlyList<UnityPose> _cameras;
         readonly SceneNormalisation _normalisation;
         readonly double _step;
-        readonly SeededRandom _random;
+        readonly long _seed;
 
-        ShutterPlanning(MotionBlurSettings settings, IReadOnlyList<UnityPose> cameras, SceneNormalisation normalisation, TimeRange time, SeededRandom random)
+        ShutterPlanning(MotionBlurSettings settings, IReadOnlyList<UnityPose> cameras, SceneNormalisation normalisation, TimeRange time, long seed)
         {
             _settings = settings;
             _cameras = cameras;
             _normalisation = normalisation;
             _step = time == null ? 0 : (time.EndSeconds - time.StartSeconds) / (time.Steps - 1);
-            _random = random;
+            _seed = seed;
         }
 
         /// <summary>Whether these settings blur (the section is on).</summary>
@@ -41,7 +41,7 @@ namespace NerfDatasetCreator
         {
             if (!IsOn(settings)) return null;
             return new ShutterPlanning(settings.MotionBlur, cameras, normalisation, time,
-                new SeededRandom(SeededRandom.Derive(settings.Seed, "motionBlur/" + DatasetSplits.Name(split))));
+                SeededRandom.Derive(settings.Seed, "motionBlur/" + DatasetSplits.Name(split)));
         }
 
         /// <summary>
@@ -70,8 +70,12 @@ namespace NerfDatasetCreator
             return problems;
         }
 
-        /// <summary>The motion of the view that uses the split's camera <paramref name="camera"/> at <paramref name="time"/>.</summary>
-        public ShutterMotion Motion(int camera, ViewTime? time)
+        /// <summary>
+        /// The motion of the split's view <paramref name="view"/>, which uses the split's camera <paramref name="camera"/> at
+        /// <paramref name="time"/>. A shake takes the split's random draws 4·view … 4·view + 3, reached directly
+        /// (<see cref="SeededRandom.AtDraw"/>): a plan makes its views on demand, in any order and on several threads.
+        /// </summary>
+        public ShutterMotion Motion(int camera, ViewTime? time, int view)
         {
             var mid = _cameras[camera];
             var translation = Vector3d.Zero;
@@ -88,9 +92,10 @@ namespace NerfDatasetCreator
             }
             else if (_settings.Camera == ShutterCameraMotion.Shake)
             {
-                // Drawn for every view in plan order, so the same seed gives the same shakes.
-                translation = UnitVector() * _settings.ShakeDistance;
-                rotation = UnitVector() * (_settings.ShakeDegrees * Math.PI / 180);
+                // The same draws as drawing for every view in plan order, so the same seed gives the same shakes.
+                var random = SeededRandom.AtDraw(_seed, 4L * view);
+                translation = UnitVector(random) * _settings.ShakeDistance;
+                rotation = UnitVector(random) * (_settings.ShakeDegrees * Math.PI / 180);
             }
             double? open = null, close = null;
             if (time.HasValue)
@@ -103,10 +108,10 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>A direction uniform on the sphere (z uniform in [−1, 1], azimuth uniform).</summary>
-        Vector3d UnitVector()
+        static Vector3d UnitVector(SeededRandom random)
         {
-            var z = 2 * _random.NextDouble() - 1;
-            var phi = 2 * Math.PI * _random.NextDouble();
+            var z = 2 * random.NextDouble() - 1;
+            var phi = 2 * Math.PI * random.NextDouble();
             var r = Math.Sqrt(Math.Max(0, 1 - z * z));
             return new Vector3d(r * Math.Cos(phi), r * Math.Sin(phi), z);
         }

@@ -15,7 +15,7 @@ namespace NerfDatasetCreator
     public sealed class CapturePlan
     {
         CapturePlan(DatasetSettings settings, PlanTarget target, double distance, CameraIntrinsics intrinsics,
-            SceneNormalisation normalisation, IReadOnlyList<ValidationProblem> warnings, IReadOnlyList<PlannedView> views, TimeRange time)
+            SceneNormalisation normalisation, IReadOnlyList<ValidationProblem> warnings, PlannedViewList views, TimeRange time)
         {
             Time = time;
             Settings = settings;
@@ -24,8 +24,10 @@ namespace NerfDatasetCreator
             Intrinsics = intrinsics;
             Normalisation = normalisation;
             Warnings = warnings;
-            Views = views;
+            _views = views;
         }
+
+        readonly PlannedViewList _views;
 
         /// <summary>A private copy of the settings the plan was built from.</summary>
         public DatasetSettings Settings { get; }
@@ -53,19 +55,24 @@ namespace NerfDatasetCreator
         /// <summary>instant-ngp's <c>aabb_scale</c> for a cube that holds the target (<see cref="AabbScale"/>).</summary>
         public int AabbScale => NerfDatasetCreator.AabbScale.ForRadius(TargetReach);
 
-        public IReadOnlyList<PlannedView> Views { get; }
+        /// <summary>
+        /// Every view, made on demand from the settings (<see cref="PlannedViewList"/>): the plan holds no list of views,
+        /// so its memory does not grow with their number. Each read makes a new <see cref="PlannedView"/> with the same values.
+        /// </summary>
+        public IReadOnlyList<PlannedView> Views => _views;
 
         /// <summary>The time span of a dynamic capture (<see cref="TimePlanning"/>); null for a static one.</summary>
         public TimeRange Time { get; }
 
-        public IEnumerable<PlannedView> ViewsOf(DatasetSplit split) => Views.Where(v => v.Split == split);
+        /// <summary>The views of one split, in order, made on demand like <see cref="Views"/>.</summary>
+        public IReadOnlyList<PlannedView> ViewsOf(DatasetSplit split) => _views.OfSplit(split);
 
         /// <summary>
         /// The same plan holding only the views <paramref name="keep"/> accepts, in the same order — a shard's share.
         /// Its transforms files list just those frames; settings, distance and intrinsics are the whole plan's.
         /// </summary>
         public CapturePlan Only(Func<PlannedView, bool> keep) =>
-            new CapturePlan(Settings, Target, Distance, Intrinsics, Normalisation, Warnings, Views.Where(keep).ToList(), Time);
+            new CapturePlan(Settings, Target, Distance, Intrinsics, Normalisation, Warnings, _views.Where(keep), Time);
 
         /// <summary>nerf_synthetic's <c>rotation</c> key for a split (ignored by every loader): the formation's azimuth step.</summary>
         public double RotationOf(DatasetSplit split)
@@ -145,33 +152,28 @@ namespace NerfDatasetCreator
             var distance = ResolveDistance(copy, target);
             var normalisation = SceneNormalisation.ForTarget(copy.Normalisation, target.Centre, target.BoundingRadius, distance, copy.NormalisedTargetRadius);
             var time = TimePlanning.Resolve(copy, target.ClipLengthSeconds);
-            var total = 0;
-            foreach (var split in DatasetSplits.All) total += TimePlanning.ViewCount(copy, time, split);
-            var views = new List<PlannedView>(total);
+            // Each split's placement, not its views: every view is made again when it is read (PlannedViewList).
+            var splits = new PlanSplitViews[DatasetSplits.All.Count];
+            var offset = 0;
             foreach (var split in DatasetSplits.All)
             {
-                var s = copy.Split(split);
-                var splitName = DatasetSplits.Name(split);
                 imported.TryGetValue(split, out var cameras);
-                var poses = cameras != null
-                    ? cameras.Cameras.Select(c => c.Pose).ToList()
-                    : CameraRig.Place(s.Formation.ToFormation(copy.Seed, splitName), s.Count, target.Centre, distance);
-                var kinds = DatasetLayout.FileKinds(copy, split).ToArray(); // shared by the split's views
-                var shutter = ShutterPlanning.ForSplit(copy, split, poses, normalisation, time);
-                // A plain loop without LINQ: this runs once per view, up to 300 000 times.
-                foreach (var slot in TimePlanning.Slots(time, split, poses.Count))
-                {
-                    var pose = poses[slot.Camera];
-                    var matrix = cameras != null
-                        ? PosePlacement.ToOutput(cameras.Cameras[slot.Camera].FileCameraToWorld, cameras.Poses.Normalisation, normalisation)
-                        : normalisation.CameraToWorld(pose);
-                    views.Add(new PlannedView(split, slot.Index, pose, matrix, kinds, slot.Time, shutter?.Motion(slot.Camera, slot.Time)));
-                }
+                var s = new PlanSplitViews(copy, split, offset, cameras, target.Centre, distance, normalisation, time);
+                splits[(int)split] = s;
+                offset += s.Count;
             }
-            var warnings = PlanWarnings.For(copy, target, normalisation, views.Select(v => v.Pose))
+            var views = new PlannedViewList(splits);
+            var warnings = PlanWarnings.For(copy, target, normalisation, PosesOf(splits))
                 .Concat(CameraSourcePlanning.Warnings(copy, copy.Intrinsics(), imported))
                 .Concat(BlurLengthWarning.For(copy, target, copy.Intrinsics(), views)).ToList();
             return new CapturePlan(copy, target, distance, copy.Intrinsics(), normalisation, warnings, views, time);
+        }
+
+        // A plain loop: this runs once per view, up to 300 000 times.
+        static IEnumerable<UnityPose> PosesOf(PlanSplitViews[] splits)
+        {
+            foreach (var s in splits)
+                for (var i = 0; i < s.Count; i++) yield return s.PoseAt(i);
         }
     }
 }

@@ -84,7 +84,12 @@ namespace NerfDatasetCreator
         {
             boxes = boxes ?? Array.Empty<PictureBox>();
             var extent = Math.Max(targetRadius, sphereRadius);
-            foreach (var c in cameras) extent = Math.Max(extent, Reach(c.CameraToWorld.Translation - target));
+            var counts = new int[DatasetSplits.All.Count]; // for the legend, in the same pass: a plan's cameras are made as they are read
+            foreach (var c in cameras)
+            {
+                extent = Math.Max(extent, Reach(c.CameraToWorld.Translation - target));
+                counts[(int)c.Split]++;
+            }
             foreach (var b in boxes)
                 foreach (var corner in b.Corners) extent = Math.Max(extent, Reach(corner - target));
             if (!(extent > 0) || double.IsInfinity(extent)) extent = 1;
@@ -93,10 +98,11 @@ namespace NerfDatasetCreator
 
             var canvas = new RgbCanvas(Width, Height, Background);
             foreach (var panel in new[] { Panel.Top, Panel.Side })
-                DrawPanel(canvas, panel, cameras, boxes, target, targetRadius, sphereRadius, pixelsPerUnit, grid);
+                DrawPanel(canvas, panel, boxes, target, targetRadius, sphereRadius, pixelsPerUnit, grid);
+            DrawCameras(canvas, cameras, target, pixelsPerUnit);
             canvas.Text(TopPanelLeft, 7, "TOP: X RIGHT, Y UP", TextColour);
             canvas.Text(SidePanelLeft, 7, "SIDE: X RIGHT, Z UP", TextColour);
-            DrawLegend(canvas, cameras, grid, boxes.Count > 0);
+            DrawLegend(canvas, counts, grid, boxes.Count > 0);
             return canvas;
         }
 
@@ -120,6 +126,8 @@ namespace NerfDatasetCreator
 
         enum Panel { Top, Side }
 
+        static readonly Panel[] Panels = { Panel.Top, Panel.Side };
+
         static double[] ToPixel(Panel panel, Vector3d p, Vector3d target, double pixelsPerUnit)
         {
             var d = p - target;
@@ -128,7 +136,8 @@ namespace NerfDatasetCreator
             return new[] { left + PanelSize / 2.0 + d.X * pixelsPerUnit, HeaderHeight + PanelSize / 2.0 - up * pixelsPerUnit };
         }
 
-        static void DrawPanel(RgbCanvas canvas, Panel panel, IReadOnlyList<PictureCamera> cameras, IReadOnlyList<PictureBox> boxes, Vector3d target,
+        /// <summary>A panel's background, grid, target, formation sphere and boxes: everything under the cameras.</summary>
+        static void DrawPanel(RgbCanvas canvas, Panel panel, IReadOnlyList<PictureBox> boxes, Vector3d target,
             double targetRadius, double sphereRadius, double pixelsPerUnit, double grid)
         {
             var left = panel == Panel.Top ? TopPanelLeft : SidePanelLeft;
@@ -163,55 +172,44 @@ namespace NerfDatasetCreator
             canvas.Line(cx - 6, cy, cx + 6, cy, TextColour);
             canvas.Line(cx, cy - 6, cx, cy + 6, TextColour);
 
-            // Painter's order: the viewer of the top view is above (+Z), of the side view in front (−Y).
-            foreach (var index in PaintersOrder(cameras, panel))
-            {
-                var c = cameras[index];
-                var colour = Byte3(SplitColors.Of(ToPreview(c.Split)));
-                var at = ToPixel(panel, c.CameraToWorld.Translation, target, pixelsPerUnit);
-                // An OpenGL camera looks along its −Z column; the tick shows that direction's share in the panel's plane.
-                var look = (-c.CameraToWorld.Column(2)).Normalized();
-                var across = look.X;
-                var up = panel == Panel.Top ? look.Y : look.Z;
-                canvas.Line(at[0], at[1], at[0] + across * TickLength, at[1] - up * TickLength, colour);
-                canvas.FillDisc(at[0], at[1], DiscRadius, colour);
-            }
             canvas.ResetClip();
         }
 
         /// <summary>
-        /// The cameras' indices from farthest to nearest for the panel's viewer, equal depths in list order — the order a
-        /// stable OrderBy gives — by sorting (depth, index) pairs: 16 bytes a camera instead of a copy of every camera.
+        /// The cameras in both panels, in one pass over them (a plan makes them as they are read). Painter's order: the
+        /// viewer of the top view is above (+Z), of the side view in front (−Y); farthest first, equal depths in list
+        /// order. Each panel's <see cref="PaintersBuffer"/> keeps, per pixel, what that order would have drawn last, so
+        /// no sorted copy of the cameras is made. The panels do not overlap, so drawing them together changes nothing.
         /// </summary>
-        static int[] PaintersOrder(IReadOnlyList<PictureCamera> cameras, Panel panel)
+        static void DrawCameras(RgbCanvas canvas, IReadOnlyList<PictureCamera> cameras, Vector3d target, double pixelsPerUnit)
         {
-            var keys = new DepthKey[cameras.Count];
-            for (var i = 0; i < keys.Length; i++)
+            var top = new PaintersBuffer(TopPanelLeft, HeaderHeight, PanelSize, PanelSize, descending: false);
+            var side = new PaintersBuffer(SidePanelLeft, HeaderHeight, PanelSize, PanelSize, descending: true);
+            var index = 0;
+            foreach (var c in cameras)
             {
-                var t = cameras[i].CameraToWorld.Translation;
-                keys[i] = new DepthKey(panel == Panel.Top ? t.Z : t.Y, i);
+                var colour = Byte3(SplitColors.Of(ToPreview(c.Split)));
+                var t = c.CameraToWorld.Translation;
+                // An OpenGL camera looks along its −Z column; the tick shows that direction's share in the panel's plane.
+                var look = (-c.CameraToWorld.Column(2)).Normalized();
+                foreach (var panel in Panels)
+                {
+                    var left = panel == Panel.Top ? TopPanelLeft : SidePanelLeft;
+                    var painter = panel == Panel.Top ? top : side;
+                    canvas.Clip(left, HeaderHeight, left + PanelSize, HeaderHeight + PanelSize);
+                    canvas.Filter = painter.Accept;
+                    var at = ToPixel(panel, t, target, pixelsPerUnit);
+                    var up = panel == Panel.Top ? look.Y : look.Z;
+                    var depth = panel == Panel.Top ? t.Z : t.Y;
+                    painter.Item(depth, index, 0);
+                    canvas.Line(at[0], at[1], at[0] + look.X * TickLength, at[1] - up * TickLength, colour);
+                    painter.Item(depth, index, 1);
+                    canvas.FillDisc(at[0], at[1], DiscRadius, colour);
+                }
+                index++;
             }
-            var descending = panel == Panel.Side;
-            Array.Sort(keys, (a, b) =>
-            {
-                var byDepth = descending ? b.Depth.CompareTo(a.Depth) : a.Depth.CompareTo(b.Depth);
-                return byDepth != 0 ? byDepth : a.Index.CompareTo(b.Index);
-            });
-            var order = new int[keys.Length];
-            for (var i = 0; i < keys.Length; i++) order[i] = keys[i].Index;
-            return order;
-        }
-
-        readonly struct DepthKey
-        {
-            public DepthKey(double depth, int index)
-            {
-                Depth = depth;
-                Index = index;
-            }
-
-            public double Depth { get; }
-            public int Index { get; }
+            canvas.Filter = null;
+            canvas.ResetClip();
         }
 
         /// <summary>A plan's views as pictured cameras, made as they are read (a copy of 300 000 would be 41 MB).</summary>
@@ -223,7 +221,14 @@ namespace NerfDatasetCreator
 
             public int Count => _views.Count;
 
-            public PictureCamera this[int index] => new PictureCamera(_views[index].Split, _views[index].TransformMatrix);
+            public PictureCamera this[int index]
+            {
+                get
+                {
+                    var view = _views[index]; // made on each read (PlannedViewList): once here
+                    return new PictureCamera(view.Split, view.TransformMatrix);
+                }
+            }
 
             public IEnumerator<PictureCamera> GetEnumerator()
             {
@@ -233,7 +238,7 @@ namespace NerfDatasetCreator
             System.Collections.IEnumerator System.Collections.IEnumerable.GetEnumerator() => GetEnumerator();
         }
 
-        static void DrawLegend(RgbCanvas canvas, IReadOnlyList<PictureCamera> cameras, double grid, bool boxes)
+        static void DrawLegend(RgbCanvas canvas, int[] counts, double grid, bool boxes)
         {
             var x = TopPanelLeft;
             var y = HeaderHeight + PanelSize + 10;
@@ -241,7 +246,7 @@ namespace NerfDatasetCreator
             {
                 canvas.FillDisc(x + 5, y + 7, 5, Byte3(SplitColors.Of(ToPreview(split))));
                 x += 16;
-                x += canvas.Text(x, y, DatasetSplits.Name(split) + " " + cameras.Count(c => c.Split == split).ToString(CultureInfo.InvariantCulture), TextColour) + 24;
+                x += canvas.Text(x, y, DatasetSplits.Name(split) + " " + counts[(int)split].ToString(CultureInfo.InvariantCulture), TextColour) + 24;
             }
             canvas.Text(x, y, "GRID " + grid.ToString("G4", CultureInfo.InvariantCulture) + "   + TARGET" + (boxes ? "   BOX: VOLUME" : ""), TextColour);
         }

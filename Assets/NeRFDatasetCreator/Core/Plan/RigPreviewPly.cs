@@ -68,14 +68,19 @@ namespace NerfDatasetCreator
                     Vertex(writer, m.Translation, colour);
                     foreach (var corner in corners) Vertex(writer, m.MultiplyPoint(corner), colour);
                 }
-                for (var i = 0; i < views.Count; i++)
+                // A plan lists its views split by split; their counts give each edge's colour without making the views again.
+                var i = 0;
+                foreach (var split in DatasetSplits.All)
                 {
-                    var colour = ColourOf(views[i].Split);
-                    var centre = 1 + 5 * i;
-                    for (var k = 0; k < 4; k++)
+                    var colour = ColourOf(split);
+                    for (var end = i + plan.ViewsOf(split).Count; i < end; i++)
                     {
-                        Edge(writer, centre, centre + 1 + k, colour);
-                        Edge(writer, centre + 1 + k, centre + 1 + (k + 1) % 4, colour);
+                        var centre = 1 + 5 * i;
+                        for (var k = 0; k < 4; k++)
+                        {
+                            Edge(writer, centre, centre + 1 + k, colour);
+                            Edge(writer, centre + 1 + k, centre + 1 + (k + 1) % 4, colour);
+                        }
                     }
                 }
             }

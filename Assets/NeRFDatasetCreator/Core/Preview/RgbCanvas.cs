@@ -44,9 +44,16 @@ namespace NerfDatasetCreator
             return new[] { Pixels[i], Pixels[i + 1], Pixels[i + 2] };
         }
 
+        /// <summary>
+        /// When set, asked for every pixel inside the clip rectangle before it is drawn; false leaves the pixel as it is.
+        /// The rig picture paints cameras nearest-last this way without sorting them (<see cref="PaintersBuffer"/>).
+        /// </summary>
+        public Func<int, int, bool> Filter { get; set; }
+
         public void Set(int x, int y, byte[] rgb)
         {
             if (x < _clipLeft || y < _clipTop || x >= _clipRight || y >= _clipBottom) return;
+            if (Filter != null && !Filter(x, y)) return;
             var i = (y * Width + x) * 3;
             Pixels[i] = rgb[0];
             Pixels[i + 1] = rgb[1];

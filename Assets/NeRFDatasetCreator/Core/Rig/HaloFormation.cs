@@ -8,7 +8,7 @@ namespace NerfDatasetCreator
     /// (the original plugin placed halo cameras at √(d² + h²) instead).
     /// </summary>
     [Serializable]
-    public sealed class HaloFormation : ICameraFormation
+    public sealed class HaloFormation : ICameraFormation, IIndexedFormation
     {
         public HaloFormation(double elevationDegrees = 0, double startAzimuthDegrees = 0)
         {
@@ -32,11 +32,16 @@ namespace NerfDatasetCreator
         {
             FormationMath.ThrowIfInvalid(this, count);
             var directions = new SphericalDirection[count];
+            for (var i = 0; i < count; i++) directions[i] = Direction(i, count);
+            return directions;
+        }
+
+        /// <summary>Direction <paramref name="index"/> of <paramref name="count"/> alone (a plan regenerates views on demand).</summary>
+        public SphericalDirection Direction(int index, int count)
+        {
             var elevation = ElevationDegrees * FormationMath.DegToRad;
             var start = StartAzimuthDegrees * FormationMath.DegToRad;
-            for (var i = 0; i < count; i++)
-                directions[i] = new SphericalDirection(FormationMath.WrapRadians(start + 2 * Math.PI * i / count), elevation);
-            return directions;
+            return new SphericalDirection(FormationMath.WrapRadians(start + 2 * Math.PI * index / count), elevation);
         }
     }
 }

@@ -11,7 +11,7 @@ namespace NerfDatasetCreator
     /// of a two-turn path on the same spot; (i + ½)/N does the same when N ≡ 2 mod 4.)
     /// </summary>
     [Serializable]
-    public sealed class OrbitFormation : ICameraFormation
+    public sealed class OrbitFormation : ICameraFormation, IIndexedFormation
     {
         public OrbitFormation(double turns = 2, double lowElevationDegrees = 15, double highElevationDegrees = 40, double startAzimuthDegrees = 0)
         {
@@ -49,18 +49,21 @@ namespace NerfDatasetCreator
         public IReadOnlyList<SphericalDirection> Directions(int count)
         {
             FormationMath.ThrowIfInvalid(this, count);
+            var directions = new SphericalDirection[count];
+            for (var i = 0; i < count; i++) directions[i] = Direction(i, count);
+            return directions;
+        }
+
+        /// <summary>Direction <paramref name="index"/> of <paramref name="count"/> alone (a plan regenerates views on demand).</summary>
+        public SphericalDirection Direction(int index, int count)
+        {
             var low = LowElevationDegrees * FormationMath.DegToRad;
             var high = HighElevationDegrees * FormationMath.DegToRad;
             var start = StartAzimuthDegrees * FormationMath.DegToRad;
-            var directions = new SphericalDirection[count];
-            for (var i = 0; i < count; i++)
-            {
-                var t = (i + 0.25) / count;
-                var elevation = low + (high - low) * (1 + Math.Cos(2 * Math.PI * t)) / 2;
-                var azimuth = FormationMath.WrapRadians(start + 2 * Math.PI * Turns * i / count);
-                directions[i] = new SphericalDirection(azimuth, elevation);
-            }
-            return directions;
+            var t = (index + 0.25) / count;
+            var elevation = low + (high - low) * (1 + Math.Cos(2 * Math.PI * t)) / 2;
+            var azimuth = FormationMath.WrapRadians(start + 2 * Math.PI * Turns * index / count);
+            return new SphericalDirection(azimuth, elevation);
         }
     }
 }

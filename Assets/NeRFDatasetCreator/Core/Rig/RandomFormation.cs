@@ -8,7 +8,7 @@ namespace NerfDatasetCreator
     /// val views: heights uniform in [−1, 1) or [0, 1) (area-uniform), azimuths uniform.
     /// </summary>
     [Serializable]
-    public sealed class RandomFormation : ICameraFormation
+    public sealed class RandomFormation : ICameraFormation, IIndexedFormation
     {
         public RandomFormation(long seed, bool upperHemisphereOnly = true)
         {
@@ -26,16 +26,23 @@ namespace NerfDatasetCreator
         public IReadOnlyList<SphericalDirection> Directions(int count)
         {
             FormationMath.ThrowIfInvalid(this, count);
-            var random = new SeededRandom(Seed);
             var directions = new SphericalDirection[count];
-            var lowest = UpperHemisphereOnly ? 0.0 : -1.0;
-            for (var i = 0; i < count; i++)
-            {
-                var height = lowest + (1.0 - lowest) * random.NextDouble();
-                var azimuth = 2 * Math.PI * random.NextDouble();
-                directions[i] = new SphericalDirection(azimuth, FormationMath.SafeAsin(height));
-            }
+            for (var i = 0; i < count; i++) directions[i] = Direction(i, count);
             return directions;
+        }
+
+        /// <summary>
+        /// Direction <paramref name="index"/> alone: it uses draws 2i and 2i + 1 of the seed's stream, which SplitMix64
+        /// reaches without drawing the ones before (<see cref="SeededRandom.AtDraw"/>), so a plan regenerates any view in
+        /// constant time. The count does not matter to this formation.
+        /// </summary>
+        public SphericalDirection Direction(int index, int count)
+        {
+            var random = SeededRandom.AtDraw(Seed, 2L * index);
+            var lowest = UpperHemisphereOnly ? 0.0 : -1.0;
+            var height = lowest + (1.0 - lowest) * random.NextDouble();
+            var azimuth = 2 * Math.PI * random.NextDouble();
+            return new SphericalDirection(azimuth, FormationMath.SafeAsin(height));
         }
     }
 }

@@ -13,6 +13,19 @@ namespace NerfDatasetCreator
 
         public SeededRandom(long seed) => _state = unchecked((ulong)seed);
 
+        /// <summary>
+        /// The generator of <paramref name="seed"/> after <paramref name="draws"/> draws, in constant time: SplitMix64's
+        /// state only advances by a fixed step per draw, so the n-th value needs none of the earlier ones.
+        /// </summary>
+        public static SeededRandom AtDraw(long seed, long draws)
+        {
+            var random = new SeededRandom(seed);
+            random._state = unchecked(random._state + (ulong)draws * Step);
+            return random;
+        }
+
+        const ulong Step = 0x9E3779B97F4A7C15UL;
+
         /// <summary>A seed for an independent stream, derived from this seed and a label (e.g. a split name).</summary>
         public static long Derive(long seed, string label)
         {
@@ -31,7 +44,7 @@ namespace NerfDatasetCreator
         {
             unchecked
             {
-                var z = _state += 0x9E3779B97F4A7C15UL;
+                var z = _state += Step;
                 z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9UL;
                 z = (z ^ (z >> 27)) * 0x94D049BB133111EBUL;
                 return z ^ (z >> 31);

@@ -12,7 +12,7 @@ namespace NerfDatasetCreator
     /// near a whole number a slowly winding helix.
     /// </summary>
     [Serializable]
-    public sealed class SemiSphereFormation : ICameraFormation
+    public sealed class SemiSphereFormation : ICameraFormation, IIndexedFormation
     {
         public SemiSphereFormation(double topElevationDegrees = 90, double bottomElevationDegrees = 0, double spiralRatio = 0)
         {
@@ -64,19 +64,22 @@ namespace NerfDatasetCreator
         public IReadOnlyList<SphericalDirection> Directions(int count)
         {
             FormationMath.ThrowIfInvalid(this, count);
+            var directions = new SphericalDirection[count];
+            for (var i = 0; i < count; i++) directions[i] = Direction(i, count);
+            return directions;
+        }
+
+        /// <summary>Direction <paramref name="index"/> of <paramref name="count"/> alone (a plan regenerates views on demand).</summary>
+        public SphericalDirection Direction(int index, int count)
+        {
             var topHeight = Math.Sin(TopElevationDegrees * FormationMath.DegToRad);
             var bottomHeight = Math.Sin(BottomElevationDegrees * FormationMath.DegToRad);
             var ratio = SpiralRatio == 0 ? FormationMath.GoldenRatio : SpiralRatio;
-            var directions = new SphericalDirection[count];
-            for (var i = 0; i < count; i++)
-            {
-                var height = topHeight - (topHeight - bottomHeight) * (i + 0.5) / count;
-                // Only the fractional part of ratio·i turns the camera; reducing it first keeps precision for large i.
-                var turns = ratio * i;
-                turns -= Math.Floor(turns);
-                directions[i] = new SphericalDirection(FormationMath.WrapRadians(2 * Math.PI * turns), FormationMath.SafeAsin(height));
-            }
-            return directions;
+            var height = topHeight - (topHeight - bottomHeight) * (index + 0.5) / count;
+            // Only the fractional part of ratio·i turns the camera; reducing it first keeps precision for large i.
+            var turns = ratio * index;
+            turns -= Math.Floor(turns);
+            return new SphericalDirection(FormationMath.WrapRadians(2 * Math.PI * turns), FormationMath.SafeAsin(height));
         }
     }
 }

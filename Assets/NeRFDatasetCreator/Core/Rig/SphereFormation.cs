@@ -9,7 +9,7 @@ namespace NerfDatasetCreator
     /// both poles alike and never puts a camera exactly on one (the original sampled i/N on a horizontal axis).
     /// </summary>
     [Serializable]
-    public sealed class SphereFormation : ICameraFormation
+    public sealed class SphereFormation : ICameraFormation, IIndexedFormation
     {
         public string Kind => "sphere";
 
@@ -19,13 +19,16 @@ namespace NerfDatasetCreator
         {
             FormationMath.ThrowIfInvalid(this, count);
             var directions = new SphericalDirection[count];
-            for (var i = 0; i < count; i++)
-            {
-                var height = 1.0 - 2.0 * (i + 0.5) / count;
-                var azimuth = FormationMath.WrapRadians(2 * Math.PI * i / FormationMath.GoldenRatio);
-                directions[i] = new SphericalDirection(azimuth, FormationMath.SafeAsin(height));
-            }
+            for (var i = 0; i < count; i++) directions[i] = Direction(i, count);
             return directions;
+        }
+
+        /// <summary>Direction <paramref name="index"/> of <paramref name="count"/> alone (a plan regenerates views on demand).</summary>
+        public SphericalDirection Direction(int index, int count)
+        {
+            var height = 1.0 - 2.0 * (index + 0.5) / count;
+            var azimuth = FormationMath.WrapRadians(2 * Math.PI * index / FormationMath.GoldenRatio);
+            return new SphericalDirection(azimuth, FormationMath.SafeAsin(height));
         }
     }
 }

@@ -48,30 +48,64 @@ namespace NerfDatasetCreator
         public static List<(Range Range, ValidationProblem Problem)> Classified(IEnumerable<Vector3d> cameraCentres, double targetRadius,
             Vector3d? targetCentre, string normalisationMode)
         {
-            var centre = targetCentre ?? Vector3d.Zero;
+            // One pass without lists: a plan checks up to 300 000 cameras here.
+            var tally = new Tally(targetRadius, targetCentre);
+            foreach (var c in cameraCentres) tally.Add(c);
+            return tally.Classified(normalisationMode);
+        }
+
+        /// <summary>
+        /// The figures the checks need of a stream of camera centres, gathered one centre at a time (validate reads the
+        /// transforms files frame by frame and keeps no centres). A value: a copy is a checkpoint to go back to.
+        /// </summary>
+        public struct Tally
+        {
+            readonly Vector3d _centre;
+            readonly double _b;
+            int _count, _nearCount, _farCount;
+            double _sum, _nearest, _farthest;
+
+            public Tally(double targetRadius, Vector3d? targetCentre = null)
+            {
+                _centre = targetCentre ?? Vector3d.Zero;
+                _b = Math.Max(0, targetRadius);
+                _count = _nearCount = _farCount = 0;
+                _sum = 0;
+                _nearest = double.PositiveInfinity;
+                _farthest = double.NegativeInfinity;
+            }
+
+            public void Add(Vector3d c)
+            {
+                var d = Vector3d.Distance(c, _centre);
+                _count++;
+                _sum += d;
+                if (d - _b < SceneNormalisation.NerfNear)
+                {
+                    _nearCount++;
+                    _nearest = Math.Min(_nearest, d);
+                }
+                if (d + _b > SceneNormalisation.NerfFar)
+                {
+                    _farCount++;
+                    _farthest = Math.Max(_farthest, d);
+                }
+            }
+
+            /// <summary>The warnings of <see cref="Check"/> for the centres added.</summary>
+            public IReadOnlyList<ValidationProblem> Check() => Classified(null).Select(r => r.Problem).ToList();
+
+            /// <summary>The warnings with their <see cref="Range"/>s (<see cref="LoaderRangeCheck.Classified"/>).</summary>
+            public List<(Range Range, ValidationProblem Problem)> Classified(string normalisationMode) =>
+                LoaderRangeCheck.Classified(_count, _nearCount, _farCount, _sum, _nearest, _farthest, _centre, _b, normalisationMode);
+        }
+
+        static List<(Range Range, ValidationProblem Problem)> Classified(int count, int nearCount, int farCount, double sum, double nearest, double farthest,
+            Vector3d centre, double b, string normalisationMode)
+        {
             var problems = new List<(Range, ValidationProblem)>();
             var field = normalisationMode == null ? DatasetField : Field;
             string Shown(double measured) => normalisationMode == null ? F(measured) : "\"" + normalisationMode + "\"";
-            var b = Math.Max(0, targetRadius);
-            // One pass without lists: a plan checks up to 300 000 cameras here.
-            int count = 0, nearCount = 0, farCount = 0;
-            double sum = 0, nearest = double.PositiveInfinity, farthest = double.NegativeInfinity;
-            foreach (var c in cameraCentres)
-            {
-                var d = Vector3d.Distance(c, centre);
-                count++;
-                sum += d;
-                if (d - b < SceneNormalisation.NerfNear)
-                {
-                    nearCount++;
-                    nearest = Math.Min(nearest, d);
-                }
-                if (d + b > SceneNormalisation.NerfFar)
-                {
-                    farCount++;
-                    farthest = Math.Max(farthest, d);
-                }
-            }
             if (count == 0) return problems;
             var suggestion = SuggestedScaleText(sum / count, b);
 

@@ -27,7 +27,7 @@ namespace NerfDatasetCreator
         /// (DatasetValidator streams the transforms files and keeps only these); a split that is missing or
         /// unreadable is absent, as DatasetValidator has said so.
         /// </summary>
-        public static void Check(string folder, DatasetValidationReport report, IReadOnlyDictionary<DatasetSplit, List<JObject>> frames)
+        public static void Check(string folder, DatasetValidationReport report, IReadOnlyDictionary<DatasetSplit, IReadOnlyList<JObject>> frames)
         {
             var record = ReadRecord(folder, report);
             foreach (var split in DatasetSplits.All)
@@ -55,7 +55,8 @@ namespace NerfDatasetCreator
         }
 
         static readonly string[] Keys = { "file_path", TimeKeys.Time, TimeKeys.Seconds, TimeKeys.Camera, TimeKeys.Step };
-        static readonly JObject NoTime = new JObject();
+        /// <summary>What <see cref="Keep"/> returns for a frame without time keys: one shared object, never changed.</summary>
+        internal static readonly JObject NoTime = new JObject();
 
         /// <summary>
         /// What the checks need of one frame: its file_path and time keys — for every frame when the dataset has a time
@@ -139,7 +140,7 @@ namespace NerfDatasetCreator
             }
         }
 
-        static void CheckForeign(string file, List<JObject> frames, DatasetValidationReport report)
+        static void CheckForeign(string file, IReadOnlyList<JObject> frames, DatasetValidationReport report)
         {
             var withTime = frames.Count(f => f[TimeKeys.Time] != null);
             if (withTime == 0) return;
@@ -155,7 +156,7 @@ namespace NerfDatasetCreator
             CheckStartsAtZero(file, frames, report);
         }
 
-        static void CheckOwn(string file, List<JObject> frames, Record record, DatasetValidationReport report, DatasetSplit split)
+        static void CheckOwn(string file, IReadOnlyList<JObject> frames, Record record, DatasetValidationReport report, DatasetSplit split)
         {
             var times = new double?[frames.Count];
             for (var i = 0; i < frames.Count; i++)
@@ -195,7 +196,7 @@ namespace NerfDatasetCreator
             CheckMultiView(file, frames, times, record, report);
         }
 
-        static void CheckMultiView(string file, List<JObject> frames, double?[] times, Record record, DatasetValidationReport report)
+        static void CheckMultiView(string file, IReadOnlyList<JObject> frames, double?[] times, Record record, DatasetValidationReport report)
         {
             var seen = new Dictionary<int, SortedSet<int>>();
             var last = new Dictionary<int, double>();
@@ -240,7 +241,7 @@ namespace NerfDatasetCreator
                     " steps are missing (" + string.Join(", ", missing) + (missingCount > missing.Count ? ", …" : "") + "); multi-view methods need every camera at every step."));
         }
 
-        static void CheckStartsAtZero(string file, List<JObject> frames, DatasetValidationReport report)
+        static void CheckStartsAtZero(string file, IReadOnlyList<JObject> frames, DatasetValidationReport report)
         {
             if (frames.Count == 0 || !TryNumber(frames[0][TimeKeys.Time], out var first) || first == 0) return;
             Problem(report, file, 0, frames[0], "time = " + ValidationProblem.Format(first) + ", but D-NeRF's load_blender.py asserts that each split's first frame is at time 0.");

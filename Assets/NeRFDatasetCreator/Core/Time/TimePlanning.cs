@@ -146,23 +146,30 @@ namespace NerfDatasetCreator
         /// <summary>The views of a split whose formation places <paramref name="cameras"/> cameras (the split's count), in file order.</summary>
         public static IReadOnlyList<Slot> Slots(TimeRange range, DatasetSplit split, int cameras)
         {
-            // Sized once: a split of 100 000 views would otherwise leave 8 MB of outgrown arrays on the large-object heap.
-            var slots = new List<Slot>(range != null && range.Mode == TimeMode.MultiView ? range.Steps * cameras : cameras);
-            if (range == null)
-            {
-                for (var i = 0; i < cameras; i++) slots.Add(new Slot(i, i, null));
-                return slots;
-            }
+            var count = SlotCount(range, cameras);
+            var slots = new Slot[count];
+            for (var i = 0; i < count; i++) slots[i] = SlotAt(range, split, cameras, i);
+            return slots;
+        }
+
+        /// <summary>The number of <see cref="Slots"/>: the cameras, times the steps in a multi-view capture.</summary>
+        public static int SlotCount(TimeRange range, int cameras) =>
+            range != null && range.Mode == TimeMode.MultiView ? range.Steps * cameras : cameras;
+
+        /// <summary>
+        /// Slot <paramref name="index"/> of <see cref="Slots"/> alone, in constant time (a plan regenerates its views on
+        /// demand): in a multi-view capture view k·C + c is camera c at step k; otherwise view j is camera j.
+        /// </summary>
+        public static Slot SlotAt(TimeRange range, DatasetSplit split, int cameras, int index)
+        {
+            if (range == null) return new Slot(index, index, null);
             if (range.Mode == TimeMode.MultiView)
             {
-                for (var k = 0; k < range.Steps; k++)
-                    for (var c = 0; c < cameras; c++)
-                        slots.Add(new Slot(k * cameras + c, c, range.AtStep(k, c)));
-                return slots;
+                var k = index / cameras;
+                var c = index - k * cameras;
+                return new Slot(index, c, range.AtStep(k, c));
             }
-            for (var j = 0; j < cameras; j++)
-                slots.Add(new Slot(j, j, MonocularTime(range, split, j, cameras)));
-            return slots;
+            return new Slot(index, index, MonocularTime(range, split, index, cameras));
         }
 
         static ViewTime MonocularTime(TimeRange range, DatasetSplit split, int j, int views)

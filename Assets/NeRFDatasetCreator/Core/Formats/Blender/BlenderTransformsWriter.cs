@@ -35,10 +35,12 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>The same text as <see cref="Write(CapturePlan, DatasetSplit)"/>, streamed into <paramref name="output"/> (a file: no string of the whole file is built).</summary>
+        /// <remarks>Only the split's views are made (a plan makes them on demand), and the depth keys follow the split's settings
+        /// alone: a plan's views of a split all write the files its settings name (<see cref="DatasetLayout.FileKinds"/>).</remarks>
         public static void Write(CapturePlan plan, DatasetSplit split, System.IO.TextWriter output) =>
-            Write(plan.Intrinsics, plan.RotationOf(split), plan.Views, split,
-                ExtraOutputs.HasPng(plan.Settings.Split(split).Depth), plan.AabbScale, plan.Normalisation, output, plan.Settings.Lens?.ToDistortion(), ExposurePlan.Of(plan.Settings),
-                ShutterPlanning.IsOn(plan.Settings) ? plan.Settings.MotionBlur : null);
+            Write(plan.Intrinsics, plan.RotationOf(split), plan.ViewsOf(split), split,
+                ExtraOutputs.HasPng(plan.Settings.Split(split).Depth), plan.AabbScale, plan.Normalisation, output, scanViewsForDepth: false,
+                plan.Settings.Lens?.ToDistortion(), ExposurePlan.Of(plan.Settings), ShutterPlanning.IsOn(plan.Settings) ? plan.Settings.MotionBlur : null);
 
         /// <param name="aabbScale">instant-ngp's scene cube (<see cref="NerfDatasetCreator.AabbScale"/>); 1 for one object at nerf_synthetic's scale.</param>
         /// <param name="normalisation">Written as <c>scene_normalisation</c>, which every loader ignores; null writes none.</param>
@@ -47,19 +49,19 @@ namespace NerfDatasetCreator
         {
             using (var text = JsonNumbers.CreateText())
             {
-                Write(intrinsics, rotation, views, null, declareDepthScale, aabbScale, normalisation, text);
+                Write(intrinsics, rotation, views, null, declareDepthScale, aabbScale, normalisation, text, scanViewsForDepth: true);
                 return text.ToString();
             }
         }
 
         // The views of split (all views when null) among views: a plan's split is written without a list of its own.
         static void Write(CameraIntrinsics intrinsics, double rotation, IReadOnlyList<PlannedView> views, DatasetSplit? split, bool declareDepthScale,
-            int aabbScale, SceneNormalisation normalisation, System.IO.TextWriter text, LensDistortion lens = null, ExposurePlan exposure = null,
-            MotionBlurSettings motionBlur = null)
+            int aabbScale, SceneNormalisation normalisation, System.IO.TextWriter text, bool scanViewsForDepth, LensDistortion lens = null,
+            ExposurePlan exposure = null, MotionBlurSettings motionBlur = null)
         {
             if (intrinsics == null) throw new ArgumentNullException(nameof(intrinsics));
             var anyDepthPng = declareDepthScale;
-            for (var i = 0; i < views.Count && !anyDepthPng; i++)
+            for (var i = 0; scanViewsForDepth && i < views.Count && !anyDepthPng; i++)
                 anyDepthPng = (split == null || views[i].Split == split.Value) && views[i].Writes(DatasetFileKind.DepthPng);
             using (var w = JsonNumbers.CreateWriter(text, 4))
             {
