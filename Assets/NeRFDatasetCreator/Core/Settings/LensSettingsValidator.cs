@@ -47,6 +47,13 @@ namespace NerfDatasetCreator
                     "Set lens.model to \"opencv\" for a radial-tangential lens, or remove p2."));
             if (problems.Count > 0) return problems;
 
+            // Sub-frames average in the wide frame first, so a global shutter composes with a lens; a rolling shutter does
+            // not yet: a row of the distorted image is a curve in the wide render, so each row's exposure time would be wrong.
+            if (ShutterPlanning.IsOn(settings) && settings.MotionBlur.Readout > 0)
+                problems.Add(new ValidationProblem("lens", "\"" + lens.Model + "\"", "cannot be combined with a rolling shutter (motionBlur.readout " +
+                    ValidationProblem.Format(settings.MotionBlur.Readout) + ") yet: the distorted image's rows are curves in the wide render, so each row's exposure time would be wrong.",
+                    "Set motionBlur.readout to 0 (a global shutter works with a lens), or remove the lens."));
+
             // instant-ngp reads the transforms files as written (nerf_loader.cu read_lens, see NgpWriter.Refusal).
             if ((settings.Loaders & TargetLoaders.InstantNgp) != 0)
             {

@@ -24,7 +24,7 @@ namespace NerfDatasetCreator.Tests
                 Classes = { new ClassRule("Car*", "car"), new ClassRule("Tree ?", "vegetation") },
             };
             var text = DatasetSettingsJson.Write(s);
-            StringAssert.Contains("\"labels\": {\n    \"instances\": \"child\",\n    \"classFrom\": \"name\",\n    \"classes\": [\n      {\n        \"match\": \"Car*\",\n        \"class\": \"car\"\n      },", text.Replace("\r", ""));
+            Assert.That(text.Replace("\r", ""), Does.Contain("\"labels\": {\n    \"instances\": \"child\",\n    \"classFrom\": \"name\",\n    \"classes\": [\n      {\n        \"match\": \"Car*\",\n        \"class\": \"car\"\n      },"));
             var read = DatasetSettingsJson.Read(text);
             Assert.That(read.Warnings, Is.Empty);
             var l = read.Settings.Labels;

@@ -24,11 +24,22 @@ namespace NerfDatasetCreator.Tests
         {
             var settings = With(new LensSettings { Model = "opencv", K1 = -0.12, K2 = 0.03, P1 = 0.001, P2 = -0.0005, K3 = 0.004 });
             var text = DatasetSettingsJson.Write(settings);
-            StringAssert.Contains("\"lens\": {", text);
+            Assert.That(text, Does.Contain("\"lens\": {"));
             var read = DatasetSettingsJson.Read(text);
             Assert.That(read.Warnings, Is.Empty);
             Assert.That(TransformsLens.Same(read.Settings.Lens.ToDistortion(), LensDistortion.OpenCv(-0.12, 0.03, 0.001, -0.0005, 0.004)), Is.True);
             Assert.That(DatasetSettingsJson.Write(read.Settings), Is.EqualTo(text));
+        }
+
+        [Test]
+        public void ALensComposesWithAGlobalShutterButNotYetWithARollingOne()
+        {
+            var settings = With(new LensSettings { Model = "opencv", K1 = -0.1 });
+            settings.MotionBlur = new MotionBlurSettings { Enabled = true, Camera = ShutterCameraMotion.Shake, ShakeDistance = 0.01 };
+            Assert.That(Fields(settings), Does.Not.Contain("lens"));
+            settings.MotionBlur.Readout = 0.3;
+            var problem = SettingsValidator.Validate(settings).Single(p => p.Field == "lens");
+            Assert.That(problem.ToString(), Does.Contain("rolling shutter (motionBlur.readout 0.3)").And.Contain("Set motionBlur.readout to 0"));
         }
 
         [Test]

@@ -22,8 +22,8 @@ namespace NerfDatasetCreator.Tests
             s.Time.EndAtClipLength = true;
             s.Time.Fps = 24;
             var text = DatasetSettingsJson.Write(s);
-            StringAssert.Contains("\"sources\": [\n      \"timeline\",\n      \"particles\"\n    ]", text.Replace("\r", ""));
-            StringAssert.Contains("\"end\": \"clip\"", text);
+            Assert.That(text.Replace("\r", ""), Does.Contain("\"sources\": [\n      \"timeline\",\n      \"particles\"\n    ]"));
+            Assert.That(text, Does.Contain("\"end\": \"clip\""));
             var read = DatasetSettingsJson.Read(text);
             Assert.That(read.Warnings, Is.Empty);
             var t = read.Settings.Time;
