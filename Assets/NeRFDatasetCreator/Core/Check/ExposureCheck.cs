@@ -35,7 +35,10 @@ namespace NerfDatasetCreator
             if (!images.HasColour) return;
             var frame = Frame(view);
             if (frame == null) return;
-            var file = "./" + view.ColourFile;
+            // The frame's own image (file_path): with motion blur that is the blurred one, whose clean image clean_path names;
+            // ColourFile is then the sharp image (CheckView.BlurredFile).
+            var image = view.BlurredFile ?? view.ColourFile;
+            var file = "./" + image;
             var hasEv = frame[ExposureKeys.Ev] != null;
             var hasWb = frame[ExposureKeys.WhiteBalance] != null;
             _counts.TryGetValue(view.Split, out var count);
@@ -60,7 +63,7 @@ namespace NerfDatasetCreator
             PngImage modified, unmodified;
             try
             {
-                modified = PngReader.Read(Path.Combine(_root, view.ColourFile));
+                modified = PngReader.Read(Path.Combine(_root, image));
                 unmodified = PngReader.Read(Path.Combine(_root, relative));
             }
             catch (Exception e) when (e is InvalidDataException || e is IOException || e is UnauthorizedAccessException)

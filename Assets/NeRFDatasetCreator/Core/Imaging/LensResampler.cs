@@ -28,9 +28,12 @@ namespace NerfDatasetCreator
     /// pinhole image coordinates); anywhere else the nearest sample's z is taken as it is.</item>
     /// <item>Normals: the nearest sample's (a world-frame normal of the surface point on that ray; the two cameras share
     /// their rotation, so no frame changes), never blended.</item>
-    /// <item>Mask: coverage interpolated bilinearly (coverage is linear, so the k×k mean after it is still coverage).</item>
-    /// <item>Label ids (issue 26): <see cref="ResampleNearest{T}"/>, the nearest sample per supersample; the majority rule
-    /// over each k×k block then runs in the writer as without a lens. Never blended.</item>
+    /// <item>Mask: hit or not per sample, as the mask pass renders it (no MSAA) — the half-coverage contour of the bilinear
+    /// interpolant, so the edge is placed to a fraction of a wide sample; the k×k mean after it is the pixel's coverage as
+    /// without a lens, and the label ids agree with it exactly.</item>
+    /// <item>Label ids (issue 26): the id with the most bilinear weight among the four neighbours, and none where the
+    /// resampled mask sample is under half covered (<see cref="Id"/>); the majority rule over each k×k block then runs in
+    /// the writer as without a lens. Never blended.</item>
     /// </list>
     /// Thread-safe: maps are built once per frame size and shared.
     /// </summary>
@@ -50,6 +53,7 @@ namespace NerfDatasetCreator
             public ushort[] OverBlack = new ushort[0], OverWhite = new ushort[0];
             public float[] Linear = new float[0], Depth = new float[0], Normals = new float[0];
             public byte[] Mask = new byte[0];
+            public ushort[] Ids = new ushort[0];
         }
 
         [ThreadStatic] static Scratch scratch;
@@ -109,6 +113,7 @@ namespace NerfDatasetCreator
                 Mask = wide.Mask == null ? null : Take(keep == null ? null : keep.Mask, n, a => keep.Mask = a),
                 Depth = wide.Depth == null ? null : Take(keep == null ? null : keep.Depth, n, a => keep.Depth = a),
                 Normals = wide.Normals == null ? null : Take(keep == null ? null : keep.Normals, n * wide.NormalFloatsPerPixel, a => keep.Normals = a),
+                InstanceIds = wide.InstanceIds == null ? null : Take(keep == null ? null : keep.Ids, n, a => keep.Ids = a),
             };
             var halves = HalfFloat.Lookup;
             var decode = Srgb.DecodeLookup;
@@ -145,16 +150,15 @@ namespace NerfDatasetCreator
                 {
                     var m = wide.Mask;
                     var coverage = m[i00 * maskStride] * w00 + m[i10 * maskStride] * w10 + m[i01 * maskStride] * w01 + m[i11 * maskStride] * w11;
-                    result.Mask[p] = (byte)Math.Min(255, (int)(coverage + 0.5f));
+                    // Each sample is hit or not, as the mask pass renders it (no MSAA): the edge of the bilinear coverage,
+                    // placed to a fraction of a wide sample; a pixel's coverage then comes from its k×k samples as without a
+                    // lens, and the ids' majority rule agrees with it exactly (a pixel has an id where its mask reads ≥ 128).
+                    result.Mask[p] = coverage >= 127.5f ? (byte)255 : (byte)0;
                 }
                 if (wide.Depth != null) result.Depth[p] = Depth(wide.Depth, map.WideWidth, map.WideHeight, i00, dx, dy, w00, w10, w01, w11, nearest);
                 if (wide.Normals != null) Array.Copy(wide.Normals, nearest * npp, result.Normals, p * npp, npp);
-            }
-            if (wide.InstanceIds != null)
-            {
-                // Label ids are never blended: the nearest sample's, then the writer's majority rule per pixel.
-                result.InstanceIds = new ushort[n];
-                ResampleNearest(wide.InstanceIds, 1, result.InstanceIds, k);
+                if (wide.InstanceIds != null)
+                    result.InstanceIds[p] = Id(wide.InstanceIds, i00, i10, i01, i11, w00, w10, w01, w11, nearest, result.Mask == null ? -1 : result.Mask[p]);
             }
             return result;
         }
@@ -200,6 +204,38 @@ namespace NerfDatasetCreator
             if (f.Mask != null) f.Mask[p] = 0;
             if (f.Depth != null) f.Depth[p] = 0;
             if (f.Normals != null) for (var c = 0; c < f.NormalFloatsPerPixel; c++) f.Normals[p * f.NormalFloatsPerPixel + c] = 0;
+            if (f.InstanceIds != null) f.InstanceIds[p] = 0;
+        }
+
+        /// <summary>
+        /// A label id is never blended: the id carrying the most bilinear weight among the four neighbours (the smaller id
+        /// on a tie, as the majority rule), and none where the resampled mask sample <paramref name="mask"/> is under half
+        /// covered — so that after the lens a pixel still has an id exactly where its mask reads ≥ 128, the agreement the
+        /// writer's majority rule keeps (Documentation~/labels.md). Without a mask (−1), the nearest sample's id.
+        /// </summary>
+        static ushort Id(ushort[] ids, int i00, int i10, int i01, int i11, float w00, float w10, float w01, float w11, int nearest, int mask)
+        {
+            if (mask < 0) return ids[nearest];
+            if (mask < 128) return 0;
+            ushort a = ids[i00], b = ids[i10], c = ids[i01], d = ids[i11];
+            ushort best = 0;
+            var bestWeight = 0f;
+            void Consider(ushort id)
+            {
+                if (id == 0) return;
+                var weight = (a == id ? w00 : 0) + (b == id ? w10 : 0) + (c == id ? w01 : 0) + (d == id ? w11 : 0);
+                if (weight > bestWeight || (weight == bestWeight && id < best))
+                {
+                    best = id;
+                    bestWeight = weight;
+                }
+            }
+            Consider(a);
+            Consider(b);
+            Consider(c);
+            Consider(d);
+            // Covered but no neighbour carries an id (the wide render's mask and ids disagree there): the nearest sample's.
+            return best != 0 ? best : ids[nearest];
         }
 
         static float Mix(float[] halves, ushort[] s, int i00, int i10, int i01, int i11, int c, float w00, float w10, float w01, float w11) =>

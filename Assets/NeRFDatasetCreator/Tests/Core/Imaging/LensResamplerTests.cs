@@ -108,7 +108,8 @@ namespace NerfDatasetCreator.Tests
 
         /// <summary>
         /// Small spheres at known world points, traced in the wide render and resampled: each one's mask centroid in the
-        /// distorted frame is where tracing the distorted rays directly puts it (the resampling's own error, within 0.05 px),
+        /// distorted frame is where tracing the distorted rays directly puts it (the resampling's own error, within 0.1 px: both
+        /// masks are hit-or-miss per sample, as the mask pass renders them, and alias differently on a 4-pixel disc),
         /// within 0.25 px of the model's projection of its centre (a sphere's image centroid is not exactly its centre's
         /// projection under perspective and distortion), and the depth at that pixel is its front's z.
         /// </summary>
@@ -152,7 +153,7 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(output.Depth[(output.Height - 1 - cys) * output.Width + cxs], Is.EqualTo(t).Within(1e-3 * t), "z of the sample's own ray");
             }
             TestContext.WriteLine(lens.Describe() + ": worst mask centroid " + worstResampling.ToString("0.####") + " px from the directly traced one, " + worst.ToString("0.####") + " px from the model's projection");
-            Assert.That(worstResampling, Is.LessThan(0.05), "px, resampled vs traced along the distorted rays");
+            Assert.That(worstResampling, Is.LessThan(0.1), "px, resampled vs traced along the distorted rays");
             // A 4-pixel sphere's image centroid sits off its centre's projection by the lens's curvature over the disc
             // (0.17 px for the pincushion lens here, the same in the direct trace): the exact placement is the test above.
             Assert.That(worst, Is.LessThan(0.25), "px, resampled vs the model's projection of the centre");
