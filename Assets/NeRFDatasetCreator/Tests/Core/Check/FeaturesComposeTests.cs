@@ -69,5 +69,20 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(File.Exists(Path.Combine(folder, "train", "r_0" + suffix)), Is.True, suffix);
             AssertPassed(Check(folder), "motion blur", "alpha vs mask", InstanceMaskCheck.CheckName, "exposure");
         }
+
+        [Test]
+        public void MotionBlurThroughALensPassesEveryCheck()
+        {
+            // A global shutter: the sub-frames are averaged in the wide frame, then resampled (a rolling one is refused).
+            var folder = AnalyticDataset.Write(_temp.Path, "blur-lens", new AnalyticDataset.Options
+            {
+                Lens = new LensSettings { Model = "opencv", K1 = -0.12, K2 = 0.02 },
+                ThroughWideRender = true, DataAtOutputSize = false, VerticalFovDegrees = 70, Distance = 1.8, Width = 128, Height = 96,
+                PointCloud = 0,
+                MotionBlur = new MotionBlurSettings { Enabled = true, Camera = ShutterCameraMotion.Shake, ShakeDistance = 0.1, ShakeDegrees = 1, SubFrames = 12 },
+            });
+            Assert.That(File.Exists(Path.Combine(folder, "train", "r_0_sharp_0000.png")), Is.True);
+            AssertPassed(Check(folder), "motion blur", "multi-view geometry");
+        }
     }
 }
