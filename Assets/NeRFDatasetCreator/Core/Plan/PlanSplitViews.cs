@@ -107,7 +107,7 @@ namespace NerfDatasetCreator
             }
             else
             {
-                pose = _formation != null ? LookAt.FromDirection(_centre, _formation.Direction(slot.Camera, _cameras), _distance) : _poses[slot.Camera];
+                pose = CameraPose(slot.Camera);
                 matrix = _normalisation.CameraToWorld(pose);
             }
             return new PlannedView(Split, slot.Index, pose, matrix, _kinds, slot.Time, _shutter?.Motion(slot.Camera, slot.Time, index));
