@@ -29,6 +29,9 @@ namespace NerfDatasetCreator
             r20 = cameraToWorld[2, 0]; r21 = cameraToWorld[2, 1]; r22 = cameraToWorld[2, 2]; tz = cameraToWorld[2, 3];
         }
 
+        /// <summary>The same camera (size, intrinsics, lens) at another pose: a moment within a shutter interval.</summary>
+        public CheckCamera At(Matrix4x4d cameraToWorld) => new CheckCamera(cameraToWorld, Width, Height, Focal, Cx, Cy, Lens);
+
         public int Width { get; }
         public int Height { get; }
         public double Focal { get; }

@@ -22,6 +22,9 @@ namespace NerfDatasetCreator
         /// </summary>
         public string BlurredFile;
 
+        /// <summary>The image <c>file_path</c> names: the blurred one with motion blur, <see cref="ColourFile"/> otherwise.</summary>
+        public string FrameImageFile => BlurredFile ?? ColourFile;
+
         /// <summary>Motion blur: <c>transform_matrix_start</c> and <c>_end</c> (each null when absent).</summary>
         public Matrix4x4d? ShutterStart, ShutterEnd;
 

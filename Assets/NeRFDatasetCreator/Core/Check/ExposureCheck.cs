@@ -35,9 +35,8 @@ namespace NerfDatasetCreator
             if (!images.HasColour) return;
             var frame = Frame(view);
             if (frame == null) return;
-            // The frame's own image (file_path): with motion blur that is the blurred one, whose clean image clean_path names;
-            // ColourFile is then the sharp image (CheckView.BlurredFile).
-            var image = view.BlurredFile ?? view.ColourFile;
+            // The frame's own image (file_path), whose clean image clean_path names; with motion blur ColourFile is the sharp one.
+            var image = view.FrameImageFile;
             var file = "./" + image;
             var hasEv = frame[ExposureKeys.Ev] != null;
             var hasWb = frame[ExposureKeys.WhiteBalance] != null;

@@ -93,7 +93,7 @@ namespace NerfDatasetCreator
                     for (var j = 0; j < Samples; j++)
                     {
                         var t = rs[0] + rs[1] * 0.5 + rs[2] * v + rs[3] * (j + 0.5) / Samples;
-                        poses[j] = new CheckCamera(PoseInterpolation.Lerp(start, end, t), w, h, mid.Focal, mid.Cx, mid.Cy, mid.Lens); // through the frame's lens, if any
+                        poses[j] = mid.At(PoseInterpolation.Lerp(start, end, t));
                     }
                 for (var x = 0; x < w; x++)
                 {

@@ -51,21 +51,8 @@ namespace NerfDatasetCreator
         /// <summary>Reads <c>labels.json</c> at <paramref name="path"/>; throws <see cref="InvalidParameterException"/> naming the file, the field and the fix.</summary>
         public static LabelTable ReadFile(string path)
         {
-            if (!File.Exists(path))
-                throw new InvalidParameterException(new[]
-                {
-                    new ValidationProblem(path, "(missing)", "does not exist, but the dataset's frames name instance/semantic maps.",
-                        "Recapture with labels on, or restore labels.json from the capture's folder."),
-                });
-            string text;
-            try
-            {
-                text = FileOps.ReadText(path);
-            }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
-            {
-                throw new InvalidParameterException(new[] { new ValidationProblem(path, "(unreadable)", "cannot be read: " + e.Message, "Check the file's permissions.") });
-            }
+            var text = MetadataText.Read(path, "does not exist, but the dataset's frames name instance/semantic maps.",
+                "Recapture with labels on, or restore labels.json from the capture's folder.", "Check the file's permissions.");
             return Parse(text, path);
         }
 

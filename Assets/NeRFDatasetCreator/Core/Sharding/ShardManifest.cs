@@ -87,21 +87,8 @@ namespace NerfDatasetCreator
         public static ShardManifest Read(string folder)
         {
             var path = Path.Combine(folder, FileName);
-            if (!File.Exists(path))
-                throw new InvalidParameterException(new[]
-                {
-                    new ValidationProblem(path, "(missing)", "does not exist, so this folder is not the output of a sharded capture.",
-                        "Pass the folders that the batch captures with -nerfShard i/N wrote; each holds a shard.json."),
-                });
-            string text;
-            try
-            {
-                text = FileOps.ReadText(path);
-            }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
-            {
-                throw new InvalidParameterException(new[] { new ValidationProblem(path, "(unreadable)", "cannot be read: " + e.Message, "Check the file's permissions, or recapture this shard.") });
-            }
+            var text = MetadataText.Read(path, "does not exist, so this folder is not the output of a sharded capture.",
+                "Pass the folders that the batch captures with -nerfShard i/N wrote; each holds a shard.json.", "Check the file's permissions, or recapture this shard.");
             return Parse(text, path);
         }
 

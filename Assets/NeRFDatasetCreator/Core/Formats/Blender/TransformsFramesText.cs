@@ -80,18 +80,7 @@ namespace NerfDatasetCreator
             Raw(MatrixStart);
             Number(rotation);
             Raw(FirstNumber);
-            for (var r = 0; r < 4; r++)
-            {
-                if (r > 0) Raw(NextRow);
-                Number(m[r, 0]);
-                Raw(NextNumber);
-                Number(m[r, 1]);
-                Raw(NextNumber);
-                Number(m[r, 2]);
-                Raw(NextNumber);
-                Number(m[r, 3]);
-            }
-            Raw(MatrixEnd);
+            Rows(m);
             if (v.Time.HasValue)
             {
                 var time = v.Time.Value;
@@ -187,6 +176,12 @@ namespace NerfDatasetCreator
                 });
             Key(name);
             Raw("[\n                [\n                    ");
+            Rows(m);
+        }
+
+        // A matrix's four rows after its opening bracket, and the closing brackets.
+        void Rows(Matrix4x4d m)
+        {
             for (var r = 0; r < 4; r++)
             {
                 if (r > 0) Raw(NextRow);
