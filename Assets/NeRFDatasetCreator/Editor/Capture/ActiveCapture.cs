@@ -2,7 +2,7 @@ using System;
 using UnityEditor;
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// The editor's one running capture. Every <see cref="CaptureSession"/> claims this slot when it begins and frees

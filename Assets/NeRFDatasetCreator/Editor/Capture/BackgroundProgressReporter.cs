@@ -1,6 +1,6 @@
 using UnityEditor;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// Progress in Unity's Background Tasks window and status bar (the editor stays usable), with its cancel button.

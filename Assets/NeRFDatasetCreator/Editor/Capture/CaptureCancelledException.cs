@@ -1,6 +1,6 @@
 using System;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// The capture was cancelled by the user, or stopped by the editor (Play mode, a script reload, quitting: then

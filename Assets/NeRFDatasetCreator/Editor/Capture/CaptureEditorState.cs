@@ -1,7 +1,7 @@
 using UnityEditor;
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// The editor-wide state a capture changes, and the one place that puts it back: each change is recorded in a

@@ -1,6 +1,6 @@
 using System;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// A capture cannot start or cannot go on. The message says what happened and what to do; by the time it is

@@ -1,4 +1,4 @@
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>What the capture camera sees. Both modes render copies in an editor preview scene; the user's scene is never modified.</summary>
     public enum CaptureIsolation

@@ -1,6 +1,6 @@
 using System;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>Which images a capture renders per view.</summary>
     [Flags]

@@ -1,6 +1,6 @@
 using System;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>Pooled pixel arrays of one capture, one pool per pass, sized for its render targets.</summary>
     sealed class CapturePools

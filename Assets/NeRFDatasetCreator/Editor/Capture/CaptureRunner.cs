@@ -3,7 +3,7 @@ using System.Collections.Generic;
 using UnityEditor;
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>Ways to drive a <see cref="CaptureSession"/>: to the end in one call, or a slice per editor update.</summary>
     public static class CaptureRunner

@@ -1,6 +1,6 @@
 using System.Globalization;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>Figures of a finished capture, for the log and the dataset's provenance (so runs can be compared).</summary>
     public sealed class CaptureSummary

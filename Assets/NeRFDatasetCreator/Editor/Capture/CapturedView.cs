@@ -1,7 +1,7 @@
 using System;
 using System.Threading;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// One view's pixels, copied out of the GPU readback into managed arrays (so they outlive the frame and can go to

@@ -1,4 +1,4 @@
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// Where a capture reports its progress and learns about a cancel. The window plugs in its own display; the

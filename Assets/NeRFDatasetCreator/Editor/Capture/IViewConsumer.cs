@@ -1,4 +1,4 @@
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// Receives each captured view on Unity's main thread, in view order. The consumer owns the view from then on and

@@ -1,4 +1,4 @@
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// Turns one captured view into files: post-processing (downsample, straight alpha, row flip), encoding and

@@ -1,7 +1,7 @@
 using System.Collections.Generic;
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// A capture uses LOD 0 only, everywhere: the measured bounds, the rendered images and the point cloud. A renderer

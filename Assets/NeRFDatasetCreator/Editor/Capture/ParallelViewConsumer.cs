@@ -1,7 +1,7 @@
 using System;
 using System.IO;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// Hands views to an <see cref="IViewWriter"/> on worker threads through a <see cref="BoundedWorkQueue"/>: the

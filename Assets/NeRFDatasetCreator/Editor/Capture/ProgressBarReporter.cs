@@ -1,6 +1,6 @@
 using UnityEditor;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// A modal cancellable progress bar, for captures that run to the end in one call (the CLI, tests). The bar is

@@ -3,7 +3,7 @@ using System.IO;
 using UnityEngine;
 using UnityEngine.Experimental.Rendering;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// A diagnostic <see cref="IViewWriter"/>: writes each view's raw passes as they came off the GPU, before any

@@ -1,6 +1,6 @@
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// The instance and class id one renderer is drawn with in the labels pass (<see cref="CapturePasses.Labels"/>), and

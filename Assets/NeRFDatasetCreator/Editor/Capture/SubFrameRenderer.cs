@@ -3,7 +3,7 @@ using System.Collections.Generic;
 using UnityEngine;
 using UnityEngine.Rendering;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// Motion blur's sub-frame loop (Core's <see cref="SubFrameSchedule"/>, Documentation~/motion-blur.md): for one view,

@@ -3,7 +3,7 @@ using UnityEngine;
 using UnityEngine.Experimental.Rendering;
 using Object = UnityEngine.Object;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// The fallback where <c>SystemInfo.supportsAsyncGPUReadback</c> is false: <c>Texture2D.ReadPixels</c> from each

@@ -1,7 +1,7 @@
 using System.Collections.Generic;
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// The meshes a capture of a target renders — one rule for checking the target, measuring it and sampling its

@@ -1,6 +1,6 @@
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// The vertical field of view that reproduces a template camera's framing of a W × H image: its

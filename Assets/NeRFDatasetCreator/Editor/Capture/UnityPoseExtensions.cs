@@ -1,6 +1,6 @@
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Capture
+namespace NerfDatasetCreator.Editor
 {
     /// <summary>The boundary between Core's double-precision poses and Unity's float transforms.</summary>
     public static class UnityPoseExtensions

@@ -1,4 +1,3 @@
-using NerfDatasetCreator.Editor.Capture;
 
 namespace NerfDatasetCreator.Editor
 {

@@ -1,5 +1,4 @@
 using System.Collections.Generic;
-using NerfDatasetCreator.Editor.Capture;
 using UnityEngine;
 
 namespace NerfDatasetCreator.Editor

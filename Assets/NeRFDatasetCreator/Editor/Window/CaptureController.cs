@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using NerfDatasetCreator.Editor.Capture;
 using UnityEditor;
 using UnityEngine;
 

@@ -35,7 +35,7 @@ namespace NerfDatasetCreator.Editor
                 var p = target.transform.position;
                 measure = new PlanTarget(new Vector3d(p.x, p.y, p.z), 0);
             }
-            var measured = NerfDatasetCreator.Editor.Capture.TargetMeshes.WorldBounds(target);
+            var measured = NerfDatasetCreator.Editor.TargetMeshes.WorldBounds(target);
             var bounds = measured ?? new Bounds(target.transform.position, Vector3.zero);
             var any = measured.HasValue;
             return new TargetInfo(measure, bounds, any);

@@ -1,9 +1,8 @@
 using System.Linq;
-using NerfDatasetCreator.Editor.Tests.Capture;
 using NUnit.Framework;
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Tests.CameraSources
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>An animated camera sampled on a copy: the clip's poses at the sample times, the user's scene untouched.</summary>
     public class AnimatedCameraTests

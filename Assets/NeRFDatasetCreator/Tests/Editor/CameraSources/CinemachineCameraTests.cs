@@ -1,14 +1,13 @@
 using System;
 using System.Collections.Generic;
 using System.Linq;
-using NerfDatasetCreator.Editor.Tests.Capture;
 using NUnit.Framework;
 using UnityEditor;
 using UnityEngine;
 using UnityEngine.Playables;
 using Object = UnityEngine.Object;
 
-namespace NerfDatasetCreator.Editor.Tests.CameraSources
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
     /// A camera with a CinemachineBrain driven by a Timeline's Cinemachine track, built by reflection (the package

@@ -2,14 +2,12 @@ using System;
 using System.IO;
 using System.Linq;
 using System.Runtime.CompilerServices;
-using NerfDatasetCreator.Editor.Capture;
-using NerfDatasetCreator.Editor.Tests.Capture;
 using Newtonsoft.Json.Linq;
 using NUnit.Framework;
 using UnityEngine;
 using UnityEngine.SceneManagement;
 
-namespace NerfDatasetCreator.Editor.Tests.CameraSources
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>Imported nerf_synthetic cameras in a real Unity scene: where the camera goes, and what a capture writes.</summary>
     public class ImportedCamerasTests

@@ -1,9 +1,8 @@
 using System.Linq;
-using NerfDatasetCreator.Editor.Tests.Capture;
 using NUnit.Framework;
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Tests.CameraSources
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>Scene cameras in a real Unity scene: which cameras count, where the views go, what is refused.</summary>
     public class SceneCamerasTests

@@ -1,11 +1,10 @@
 using System.Collections.Generic;
 using System.Linq;
-using NerfDatasetCreator.Editor.Tests.Capture;
 using NUnit.Framework;
 using UnityEngine;
 using UnityEngine.SceneManagement;
 
-namespace NerfDatasetCreator.Editor.Tests.CameraSources
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>A volume source in a real Unity scene: a box object, a BoxCollider wall across it, no camera inside the wall.</summary>
     public class VolumeSourceTests

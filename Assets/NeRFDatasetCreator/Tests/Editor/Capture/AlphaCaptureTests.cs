@@ -1,11 +1,10 @@
 using System.Collections.Generic;
-using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
 using UnityEngine;
 using UnityEngine.SceneManagement;
 using Object = UnityEngine.Object;
 
-namespace NerfDatasetCreator.Editor.Tests.Capture
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
     /// Alpha by difference matting for content the old mask-as-alpha got wrong: glass, particles, cutout holes. One

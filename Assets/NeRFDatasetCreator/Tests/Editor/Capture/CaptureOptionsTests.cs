@@ -1,8 +1,7 @@
 using System.Linq;
-using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
 
-namespace NerfDatasetCreator.Editor.Tests.Capture
+namespace NerfDatasetCreator.Editor.Tests
 {
     [TestFixture]
     public class CaptureOptionsTests

@@ -1,8 +1,7 @@
 using System;
 using System.Collections.Generic;
-using NerfDatasetCreator.Editor.Capture;
 
-namespace NerfDatasetCreator.Editor.Tests.Capture
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>A view's pixels copied out of the pooled arrays, so they can be inspected after the run.</summary>
     sealed class RecordedView

@@ -1,9 +1,8 @@
 using System.Collections.Generic;
 using System.Linq;
-using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
 
-namespace NerfDatasetCreator.Editor.Tests.Capture
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>Input checks that run before anything is created or rendered (no graphics device needed).</summary>
     [TestFixture]

@@ -1,13 +1,12 @@
 using System;
 using System.Collections.Generic;
-using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
 using UnityEngine;
 using UnityEngine.Rendering;
 using UnityEngine.SceneManagement;
 using Object = UnityEngine.Object;
 
-namespace NerfDatasetCreator.Editor.Tests.Capture
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
     /// The mask, depth and normal passes follow each material's cull mode and alpha clipping, in whichever pipeline

@@ -3,7 +3,7 @@ using NUnit.Framework;
 using UnityEngine.SceneManagement;
 using Object = UnityEngine.Object;
 
-namespace NerfDatasetCreator.Editor.Tests.Capture
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
     /// A rendering test's own scene (<see cref="TestScene"/>), opened before each test and closed after it, and the

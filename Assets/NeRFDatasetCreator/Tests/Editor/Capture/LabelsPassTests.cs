@@ -1,10 +1,9 @@
 using System;
 using System.Collections.Generic;
-using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Tests.Capture
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
     /// The labels pass draws each renderer's ids exactly: two quads side by side in front of a larger one, with ids that

@@ -7,7 +7,7 @@ using UnityEngine;
 using UnityEngine.SceneManagement;
 using Object = UnityEngine.Object;
 
-namespace NerfDatasetCreator.Editor.Tests.Capture
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
     /// A lens capture renders Core's wide pinhole (<see cref="LensCapture.WideRender"/>): the capture options take its size
@@ -57,7 +57,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         {
             var settings = Settings();
             var wide = LensCapture.WideRender(settings.Lens.ToDistortion(), settings.Intrinsics());
-            var options = new NerfDatasetCreator.Editor.Capture.CaptureOptions { Width = settings.Width, Height = settings.Height, Supersampling = 2, VerticalFieldOfViewDegrees = 60 };
+            var options = new NerfDatasetCreator.Editor.CaptureOptions { Width = settings.Width, Height = settings.Height, Supersampling = 2, VerticalFieldOfViewDegrees = 60 };
             LensOptions.Apply(settings, options);
             Assert.That(options.Width, Is.EqualTo(wide.Width));
             Assert.That(options.Height, Is.EqualTo(wide.Height));
@@ -82,16 +82,16 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
             var sphere = TestScene.LitSphere("Lens focal sphere");
             var settings = Settings();
             var wide = LensCapture.WideRender(settings.Lens.ToDistortion(), settings.Intrinsics());
-            var options = new NerfDatasetCreator.Editor.Capture.CaptureOptions
+            var options = new NerfDatasetCreator.Editor.CaptureOptions
             {
                 Width = settings.Width, Height = settings.Height, Supersampling = 2, VerticalFieldOfViewDegrees = 60,
-                Passes = NerfDatasetCreator.Editor.Capture.CapturePasses.Color | NerfDatasetCreator.Editor.Capture.CapturePasses.Mask,
+                Passes = NerfDatasetCreator.Editor.CapturePasses.Color | NerfDatasetCreator.Editor.CapturePasses.Mask,
             };
             LensOptions.Apply(settings, options);
             const double distance = 2.2, radius = 0.5;
             var poses = new System.Collections.Generic.List<UnityPose> { LookAt.FromPositions(new Vector3d(0, 0, -distance), Vector3d.Zero) };
             var consumer = new RecordingConsumer();
-            NerfDatasetCreator.Editor.Capture.CaptureRunner.RunBlocking(sphere, poses, options, consumer, new SilentProgress());
+            NerfDatasetCreator.Editor.CaptureRunner.RunBlocking(sphere, poses, options, consumer, new SilentProgress());
             var view = consumer.Views.Single();
             Assert.That(view.Width, Is.EqualTo(wide.Width * 2));
             Assert.That(view.Height, Is.EqualTo(wide.Height * 2));
@@ -107,7 +107,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
         {
             var settings = Settings();
             settings.Lens = new LensSettings();
-            var options = new NerfDatasetCreator.Editor.Capture.CaptureOptions { Width = 64, Height = 48 };
+            var options = new NerfDatasetCreator.Editor.CaptureOptions { Width = 64, Height = 48 };
             LensOptions.Apply(settings, options);
             Assert.That(options.Width, Is.EqualTo(64));
             Assert.That(options.WideVerticalFieldOfViewDegrees, Is.Null);
@@ -134,7 +134,7 @@ namespace NerfDatasetCreator.Editor.Tests.Capture
             Assert.That(result.CheckFailed, Is.False, result.Message);
         }
 
-        sealed class SilentProgress : NerfDatasetCreator.Editor.Capture.ICaptureProgress
+        sealed class SilentProgress : NerfDatasetCreator.Editor.ICaptureProgress
         {
             public void Report(ThroughputMeter meter) { }
             public bool CancelRequested => false;

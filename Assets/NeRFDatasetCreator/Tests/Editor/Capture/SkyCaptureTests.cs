@@ -1,9 +1,8 @@
 using System.Collections.Generic;
-using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Tests.Capture
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
     /// The opaque sky of an environment capture (<see cref="CaptureOptions.Skybox"/>): the colour pass renders once with

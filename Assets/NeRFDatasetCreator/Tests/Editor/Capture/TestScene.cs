@@ -1,11 +1,10 @@
-using NerfDatasetCreator.Editor.Capture;
 using NUnit.Framework;
 using UnityEditor.SceneManagement;
 using UnityEngine;
 using UnityEngine.Rendering;
 using UnityEngine.SceneManagement;
 
-namespace NerfDatasetCreator.Editor.Tests.Capture
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
     /// A scene of the test's own, made active, and closed again afterwards, without touching the user's scenes.

@@ -7,7 +7,7 @@ using UnityEngine;
 using UnityEngine.Rendering;
 using Object = UnityEngine.Object;
 
-namespace NerfDatasetCreator.Editor.Tests.Capture
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
     /// Changes the active URP asset and its default Universal Renderer for one test and puts everything back on

@@ -2,8 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using NerfDatasetCreator.Editor.Capture;
-using NerfDatasetCreator.Editor.Tests.Capture;
 using NUnit.Framework;
 using UnityEngine;
 using UnityEngine.SceneManagement;

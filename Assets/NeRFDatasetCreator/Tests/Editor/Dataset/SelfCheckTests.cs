@@ -1,7 +1,6 @@
 using System;
 using System.IO;
 using System.Linq;
-using NerfDatasetCreator.Editor.Tests.Capture;
 using Newtonsoft.Json.Linq;
 using NUnit.Framework;
 using UnityEditor;
@@ -137,7 +136,7 @@ namespace NerfDatasetCreator.Editor.Tests
             }
         }
 
-        sealed class SilentProgress : NerfDatasetCreator.Editor.Capture.ICaptureProgress
+        sealed class SilentProgress : NerfDatasetCreator.Editor.ICaptureProgress
         {
             public void Report(ThroughputMeter meter) { }
             public bool CancelRequested => false;

@@ -1,8 +1,6 @@
 using System;
 using System.IO;
 using System.Text.RegularExpressions;
-using NerfDatasetCreator.Editor.Capture;
-using NerfDatasetCreator.Editor.Tests.Capture;
 using NUnit.Framework;
 using UnityEditor;
 using UnityEditor.SceneManagement;
@@ -10,7 +8,7 @@ using UnityEngine;
 using UnityEngine.SceneManagement;
 using UnityEngine.TestTools;
 
-namespace NerfDatasetCreator.Editor.Tests.Session
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
     /// The editor's one capture (<see cref="ActiveCapture"/>): a second one is refused, and the path that Play mode,

@@ -2,15 +2,13 @@ using System;
 using System.Collections;
 using System.IO;
 using System.Linq;
-using NerfDatasetCreator.Editor.Capture;
-using NerfDatasetCreator.Editor.Tests.Capture;
 using NUnit.Framework;
 using UnityEditor;
 using UnityEditor.Compilation;
 using UnityEngine;
 using UnityEngine.TestTools;
 
-namespace NerfDatasetCreator.Editor.Tests.Session
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
     /// Real editor events in the middle of a background capture: entering Play mode, a script recompilation, and

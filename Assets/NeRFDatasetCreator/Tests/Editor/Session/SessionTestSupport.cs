@@ -1,10 +1,9 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
-using NerfDatasetCreator.Editor.Capture;
 using UnityEngine;
 
-namespace NerfDatasetCreator.Editor.Tests.Session
+namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>Small captures of the test sphere for the editor-session tests, and what they compare before and after.</summary>
     static class SessionTestSupport

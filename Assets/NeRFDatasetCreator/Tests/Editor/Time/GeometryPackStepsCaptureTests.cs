@@ -1,8 +1,6 @@
 using System;
 using System.IO;
 using System.Linq;
-using NerfDatasetCreator.Editor.Capture;
-using NerfDatasetCreator.Editor.Tests.Capture;
 using Newtonsoft.Json.Linq;
 using NUnit.Framework;
 using UnityEngine;

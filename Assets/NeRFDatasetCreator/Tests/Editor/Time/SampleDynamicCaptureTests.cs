@@ -2,8 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using NerfDatasetCreator.Editor.Capture;
-using NerfDatasetCreator.Editor.Tests.Capture;
 using Newtonsoft.Json.Linq;
 using NUnit.Framework;
 using UnityEditor;

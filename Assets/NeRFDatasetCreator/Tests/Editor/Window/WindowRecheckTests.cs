@@ -1,5 +1,4 @@
 using System.Collections;
-using NerfDatasetCreator.Editor.Tests.Capture;
 using NUnit.Framework;
 using UnityEditor;
 using UnityEngine;
