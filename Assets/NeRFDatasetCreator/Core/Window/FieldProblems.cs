@@ -26,6 +26,22 @@ namespace NerfDatasetCreator
 
         public IReadOnlyList<ValidationProblem> WarningsFor(string controlField) => Warnings.Where(p => WindowFields.Covers(controlField, p.Field)).ToList();
 
+        /// <summary>
+        /// Errors about <paramref name="controlField"/> that none of <paramref name="shownElsewhere"/> covers: what a
+        /// section lists at its end when its own fields (drawn above) show their problems under them.
+        /// </summary>
+        public IReadOnlyList<ValidationProblem> ErrorsFor(string controlField, IEnumerable<string> shownElsewhere) => Rest(Errors, controlField, shownElsewhere);
+
+        /// <summary>Warnings about <paramref name="controlField"/> that none of <paramref name="shownElsewhere"/> covers.</summary>
+        public IReadOnlyList<ValidationProblem> WarningsFor(string controlField, IEnumerable<string> shownElsewhere) => Rest(Warnings, controlField, shownElsewhere);
+
+        static IReadOnlyList<ValidationProblem> Rest(IEnumerable<ValidationProblem> problems, string controlField, IEnumerable<string> shownElsewhere)
+        {
+            if (shownElsewhere == null) throw new ArgumentNullException(nameof(shownElsewhere));
+            var others = shownElsewhere.ToList();
+            return problems.Where(p => WindowFields.Covers(controlField, p.Field) && !others.Any(f => WindowFields.Covers(f, p.Field))).ToList();
+        }
+
         /// <summary>Errors and warnings about any of <paramref name="controlFields"/> (e.g. the parameters inside a closed foldout).</summary>
         public IReadOnlyList<ValidationProblem> ErrorsForAny(IEnumerable<string> controlFields)
         {

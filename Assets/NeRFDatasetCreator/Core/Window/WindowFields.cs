@@ -41,6 +41,10 @@ namespace NerfDatasetCreator
         public const string TimeFps = "time.fps";
         /// <summary>The exposure controls (Editor ExposureSection) show every "exposure.…" problem.</summary>
         public const string Exposure = "exposure";
+        /// <summary>The Lens section (Editor LensSection) shows every "lens.…" problem: a coefficient's under its field, the rest below.</summary>
+        public const string Lens = LensSettings.Key;
+        /// <summary>The Motion blur section (Editor MotionBlurSection) shows every "motionBlur.…" problem.</summary>
+        public const string MotionBlur = MotionBlurSettingsJson.Key;
 
         /// <summary>"splits.train.count" and the like.</summary>
         public static string SplitField(DatasetSplit split, string key) => "splits." + DatasetSplits.Name(split) + "." + key;
@@ -58,7 +62,7 @@ namespace NerfDatasetCreator
                 Supersampling, Background, Seed, Name, OutputFolder, Overwrite, Loaders,
                 Normalisation, NormalisedTargetRadius, PointCloudPoints, PointCloudRadius,
                 TimeModeField, TimeSourcesField, TimeStart, TimeEnd, TimeSteps, TimeFps,
-                Exposure,
+                Exposure, Lens, MotionBlur,
             };
             foreach (var split in DatasetSplits.All)
             {
@@ -108,7 +112,7 @@ namespace NerfDatasetCreator
             if (Covers(Name, field) || Covers(OutputFolder, field) || Covers(Overwrite, field) || Covers(Loaders, field))
                 return WindowStep.OutputFolder;
             if (Covers(Normalisation, field) || Covers(NormalisedTargetRadius, field) || Covers(PointCloudPoints, field) || Covers(PointCloudRadius, field)
-                || Covers(Exposure, field))
+                || Covers(Exposure, field) || Covers(Lens, field) || Covers(MotionBlur, field))
                 return WindowStep.Outputs;
             if (Covers(Labels, field)) return WindowStep.Outputs;
             foreach (var split in DatasetSplits.All)

@@ -4,7 +4,10 @@ using UnityEngine;
 
 namespace NerfDatasetCreator.Editor
 {
-    /// <summary>Step 5: per split, the extra passes next to the RGBA image: depth and normals (PNG and/or EXR) and the mask.</summary>
+    /// <summary>
+    /// Step 5: per split, the extra passes next to the RGBA image: depth and normals (PNG and/or EXR) and the mask; then
+    /// one section per optional output (labels, exposure, lens, motion blur), the scene's scale and the geometry pack.
+    /// </summary>
     static class OutputsSection
     {
         public static void Draw(WindowContext c)
@@ -30,6 +33,8 @@ namespace NerfDatasetCreator.Editor
             }
             LabelsSection.Draw(c);
             ExposureSection.Draw(c);
+            LensSection.Draw(c);
+            MotionBlurSection.Draw(c);
             DrawScene(c);
             // "preflight" in config files (Documentation~/settings.md).
             c.Settings.Preflight = EditorGUILayout.Toggle(new GUIContent("Preflight check",

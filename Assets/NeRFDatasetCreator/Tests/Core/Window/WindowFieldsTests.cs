@@ -53,6 +53,35 @@ namespace NerfDatasetCreator.Tests
                 s.Labels.Enabled = true;
                 s.Labels.Classes.Add(new ClassRule("Car*", ""));
             }, "labels.classes[0].class", WindowStep.Outputs);
+            yield return Case("exposure list entry", s =>
+            {
+                s.Exposure.Mode = ExposureMode.List;
+                s.Exposure.Values.Add(new ViewExposure(11, 1, 1, 1));
+            }, "exposure.values[0].ev", WindowStep.Outputs);
+            yield return Case("lens coefficient of another model", s =>
+            {
+                s.Lens.Model = "opencv_fisheye";
+                s.Lens.P1 = 0.001;
+            }, "lens.p1", WindowStep.Outputs);
+            yield return Case("lens with a rolling shutter", s =>
+            {
+                s.Lens.Model = "opencv";
+                s.Lens.K1 = -0.1;
+                s.MotionBlur.Enabled = true;
+                s.MotionBlur.Camera = ShutterCameraMotion.Shake;
+                s.MotionBlur.ShakeDegrees = 2;
+                s.MotionBlur.Readout = 0.5;
+            }, "lens", WindowStep.Outputs);
+            yield return Case("motion blur shutter", s =>
+            {
+                s.MotionBlur.Enabled = true;
+                s.MotionBlur.Shutter = 1.5;
+            }, "motionBlur.shutter", WindowStep.Outputs);
+            yield return Case("motion blur still in a static capture", s =>
+            {
+                s.MotionBlur.Enabled = true;
+                s.MotionBlur.Camera = ShutterCameraMotion.Still;
+            }, "motionBlur.camera", WindowStep.Outputs);
             yield return Case("halo elevation", s =>
             {
                 s.Train.Formation.Kind = FormationKind.Halo;
@@ -124,6 +153,20 @@ namespace NerfDatasetCreator.Tests
             Assert.That(problems.StepHasErrors(WindowStep.OutputFolder), Is.True);
             Assert.That(problems.StepHasErrors(WindowStep.Rig), Is.False);
             Assert.That(new FieldProblems(SettingsValidator.Validate(new DatasetSettings()), null).FirstIncompleteStep(), Is.Null);
+        }
+
+        [Test]
+        public void ASectionsEndListsOnlyWhatItsFieldsDoNotShow()
+        {
+            var wide = new ValidationProblem("lens", "opencv", "needs a wide render.", "Use a milder lens.");
+            var k1 = new ValidationProblem("lens.k1", "NaN", "is not a finite number.", "Write a number.");
+            var k4 = new ValidationProblem("lens.k4", "0.1", "is not a coefficient.", "Remove k4.");
+            var other = new ValidationProblem("lensFlare", "1", "is unknown.", "");
+            var problems = new FieldProblems(new[] { wide, k1, k4, other }, new[] { k1 });
+            var drawn = new[] { "lens.model", "lens.k1", "lens.k2" };
+            Assert.That(problems.ErrorsFor("lens", drawn), Is.EqualTo(new[] { wide, k4 }));
+            Assert.That(problems.WarningsFor("lens", drawn), Is.Empty);
+            Assert.That(problems.WarningsFor("lens", new string[0]), Is.EqualTo(new[] { k1 }));
         }
 
         [Test]
