@@ -10,7 +10,7 @@ namespace NerfDatasetCreator.Editor
     /// <summary>
     /// Settings and a target GameObject in, a dataset on disk out — the one path the window, batch mode and tests
     /// use. Main thread only. Everything decided here lives in Core (<see cref="DatasetRun"/>,
-    /// <see cref="ViewFileWriter"/>); this class only moves data between Unity objects and Core.
+    /// <see cref="ViewPipeline"/>); this class only moves data between Unity objects and Core.
     /// </summary>
     public static class DatasetCapture
     {
@@ -167,8 +167,7 @@ namespace NerfDatasetCreator.Editor
                 return Failed(prepared, null, e, 0);
             }
             LogEarlierRuns(session);
-            var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode) { Labels = prepared.Labels };
-            using (var consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files, LensCapture.ResamplerFor(prepared.Run.Plan))))
+            using (var consumer = Writers(prepared, session, out var files))
             {
                 DatasetCaptureResult result;
                 try
@@ -182,6 +181,18 @@ namespace NerfDatasetCreator.Editor
                 }
                 return result.Succeeded ? CheckBlocking(result) : result;
             }
+        }
+
+        /// <summary>
+        /// The run's writer threads: each view's readback becomes Core raw frames (<see cref="DatasetViewWriter"/>) and goes
+        /// through Core's <see cref="ViewPipeline"/> (the plan's lens, blur/sharp, <paramref name="files"/>), one view per
+        /// worker. Both run modes write through this one pipeline.
+        /// </summary>
+        static ParallelViewConsumer Writers(PreparedCapture prepared, DatasetWriteSession session, out ViewFileWriter files)
+        {
+            var pipeline = new ViewPipeline(prepared.Run.Plan, session, UnityExr.Encode, prepared.Labels);
+            files = pipeline.Files;
+            return new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, pipeline));
         }
 
         /// <summary>The self-check of a finished dataset, blocking: a progress bar in the editor, log lines in batch mode.</summary>
@@ -231,8 +242,7 @@ namespace NerfDatasetCreator.Editor
             {
                 session = prepared.Run.Begin();
                 LogEarlierRuns(session);
-                var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode) { Labels = prepared.Labels };
-                consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files, LensCapture.ResamplerFor(prepared.Run.Plan)));
+                consumer = Writers(prepared, session, out var files);
                 var written = consumer;
                 return CaptureRunner.RunInBackground(prepared.Target, Poses(prepared), prepared.Options, consumer, (summary, error) =>
                 {
