@@ -167,13 +167,13 @@ namespace NerfDatasetCreator.Editor
                 return Failed(prepared, null, e, 0);
             }
             LogEarlierRuns(session);
-            using (var consumer = Writers(prepared, session, out var files))
+            using (var consumer = Writers(prepared, session, out var pipeline))
             {
                 DatasetCaptureResult result;
                 try
                 {
                     var summary = CaptureRunner.RunBlocking(prepared.Target, Poses(prepared), prepared.Options, consumer, progress);
-                    result = Finish(prepared, session, files, summary, tool);
+                    result = Finish(prepared, session, pipeline, summary, tool);
                 }
                 catch (Exception e)
                 {
@@ -185,13 +185,12 @@ namespace NerfDatasetCreator.Editor
 
         /// <summary>
         /// The run's writer threads: each view's readback becomes Core raw frames (<see cref="DatasetViewWriter"/>) and goes
-        /// through Core's <see cref="ViewPipeline"/> (the plan's lens, blur/sharp, <paramref name="files"/>), one view per
-        /// worker. Both run modes write through this one pipeline.
+        /// through Core's <paramref name="pipeline"/> (the plan's lens, blur/sharp, the file writer, whose statistics
+        /// <see cref="Finish"/> reads), one view per worker. Both run modes write through this one pipeline.
         /// </summary>
-        static ParallelViewConsumer Writers(PreparedCapture prepared, DatasetWriteSession session, out ViewFileWriter files)
+        static ParallelViewConsumer Writers(PreparedCapture prepared, DatasetWriteSession session, out ViewPipeline pipeline)
         {
-            var pipeline = new ViewPipeline(prepared.Run.Plan, session, UnityExr.Encode, prepared.Labels);
-            files = pipeline.Files;
+            pipeline = new ViewPipeline(prepared.Run.Plan, session, UnityExr.Encode, prepared.Labels);
             return new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, pipeline));
         }
 
@@ -242,12 +241,12 @@ namespace NerfDatasetCreator.Editor
             {
                 session = prepared.Run.Begin();
                 LogEarlierRuns(session);
-                consumer = Writers(prepared, session, out var files);
+                consumer = Writers(prepared, session, out var pipeline);
                 var written = consumer;
                 return CaptureRunner.RunInBackground(prepared.Target, Poses(prepared), prepared.Options, consumer, (summary, error) =>
                 {
                     var result = error == null
-                        ? Finish(prepared, session, files, summary, tool)
+                        ? Finish(prepared, session, pipeline, summary, tool)
                         : Failed(prepared, session, error, written.Written);
                     written.Dispose();
                     Log(result);
@@ -293,9 +292,10 @@ namespace NerfDatasetCreator.Editor
             else Debug.LogError(result.Message);
         }
 
-        static DatasetCaptureResult Finish(PreparedCapture prepared, DatasetWriteSession session, ViewFileWriter files,
+        static DatasetCaptureResult Finish(PreparedCapture prepared, DatasetWriteSession session, ViewPipeline pipeline,
             CaptureSummary summary, string tool)
         {
+            var files = pipeline.Files;
             var provenance = new Provenance(DateTime.UtcNow, Application.unityVersion, tool);
             provenance.Statistics["views"] = summary.Views;
             provenance.Statistics["seconds"] = summary.Seconds;
