@@ -9,7 +9,8 @@ namespace NerfDatasetCreator.Editor
     /// Motion blur's sub-frame loop (Core's <see cref="SubFrameSchedule"/>, Documentation~/motion-blur.md): for one view,
     /// each sub-frame poses the content (<see cref="CaptureOptions.BeforeSubFrame"/>: the dynamic capture's ContentClock at
     /// the sub-frame's time) and the camera, renders the colour pair into the view's own render textures and reads it
-    /// back at once, and Core's <see cref="SubFrameAccumulator"/> adds it in linear light. The view's mid-pose render
+    /// back at once, and Core's sub-frame average (<see cref="ViewPipeline.SubFrameAverage"/>, the pipeline's first stage) adds it
+    /// in linear light. The view's mid-pose render
     /// (colour for the sharp image, and the data passes) follows in the same textures, so the sub-frames need no
     /// textures of their own.
     /// <para>
@@ -41,7 +42,7 @@ namespace NerfDatasetCreator.Editor
             out ushort[] overBlack, out ushort[] overWhite)
         {
             int w = _options.SupersampledWidth, h = _options.SupersampledHeight;
-            var accumulator = new SubFrameAccumulator(w, h, subFrames.Count, _options.RollingShutterReadout, gammaEncoded);
+            var accumulator = ViewPipeline.SubFrameAverage(w, h, subFrames.Count, _options.RollingShutterReadout, gammaEncoded);
             foreach (var sub in subFrames)
             {
                 sub.Pose.ApplyTo(camera.transform);

@@ -10,7 +10,7 @@ namespace NerfDatasetCreator.Editor
     /// <summary>
     /// Settings and a target GameObject in, a dataset on disk out — the one path the window, batch mode and tests
     /// use. Main thread only. Everything decided here lives in Core (<see cref="DatasetRun"/>,
-    /// <see cref="ViewFileWriter"/>); this class only moves data between Unity objects and Core.
+    /// <see cref="ViewPipeline"/>); this class only moves data between Unity objects and Core.
     /// </summary>
     public static class DatasetCapture
     {
@@ -167,14 +167,13 @@ namespace NerfDatasetCreator.Editor
                 return Failed(prepared, null, e, 0);
             }
             LogEarlierRuns(session);
-            var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode) { Labels = prepared.Labels };
-            using (var consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files, LensCapture.ResamplerFor(prepared.Run.Plan))))
+            using (var consumer = Writers(prepared, session, out var pipeline))
             {
                 DatasetCaptureResult result;
                 try
                 {
                     var summary = CaptureRunner.RunBlocking(prepared.Target, Poses(prepared), prepared.Options, consumer, progress);
-                    result = Finish(prepared, session, files, summary, tool);
+                    result = Finish(prepared, session, pipeline, summary, tool);
                 }
                 catch (Exception e)
                 {
@@ -182,6 +181,17 @@ namespace NerfDatasetCreator.Editor
                 }
                 return result.Succeeded ? CheckBlocking(result) : result;
             }
+        }
+
+        /// <summary>
+        /// The run's writer threads: each view's readback becomes Core raw frames (<see cref="DatasetViewWriter"/>) and goes
+        /// through Core's <paramref name="pipeline"/> (the plan's lens, blur/sharp, the file writer, whose statistics
+        /// <see cref="Finish"/> reads), one view per worker. Both run modes write through this one pipeline.
+        /// </summary>
+        static ParallelViewConsumer Writers(PreparedCapture prepared, DatasetWriteSession session, out ViewPipeline pipeline)
+        {
+            pipeline = new ViewPipeline(prepared.Run.Plan, session, UnityExr.Encode, prepared.Labels);
+            return new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, pipeline));
         }
 
         /// <summary>The self-check of a finished dataset, blocking: a progress bar in the editor, log lines in batch mode.</summary>
@@ -231,13 +241,12 @@ namespace NerfDatasetCreator.Editor
             {
                 session = prepared.Run.Begin();
                 LogEarlierRuns(session);
-                var files = new ViewFileWriter(prepared.Run.Plan, session, UnityExr.Encode) { Labels = prepared.Labels };
-                consumer = new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, files, LensCapture.ResamplerFor(prepared.Run.Plan)));
+                consumer = Writers(prepared, session, out var pipeline);
                 var written = consumer;
                 return CaptureRunner.RunInBackground(prepared.Target, Poses(prepared), prepared.Options, consumer, (summary, error) =>
                 {
                     var result = error == null
-                        ? Finish(prepared, session, files, summary, tool)
+                        ? Finish(prepared, session, pipeline, summary, tool)
                         : Failed(prepared, session, error, written.Written);
                     written.Dispose();
                     Log(result);
@@ -283,9 +292,10 @@ namespace NerfDatasetCreator.Editor
             else Debug.LogError(result.Message);
         }
 
-        static DatasetCaptureResult Finish(PreparedCapture prepared, DatasetWriteSession session, ViewFileWriter files,
+        static DatasetCaptureResult Finish(PreparedCapture prepared, DatasetWriteSession session, ViewPipeline pipeline,
             CaptureSummary summary, string tool)
         {
+            var files = pipeline.Files;
             var provenance = new Provenance(DateTime.UtcNow, Application.unityVersion, tool);
             provenance.Statistics["views"] = summary.Views;
             provenance.Statistics["seconds"] = summary.Seconds;

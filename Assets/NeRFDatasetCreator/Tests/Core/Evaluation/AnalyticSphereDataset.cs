@@ -7,9 +7,10 @@ using System.Text;
 namespace NerfDatasetCreator.Tests
 {
     /// <summary>
-    /// A Blender-format dataset rendered analytically: a sphere of radius <see cref="Radius"/> at the output origin, seen
-    /// by cameras at distance 4 looking at it (OpenGL cameras, +Z up). Each pixel's ray through its centre is intersected
-    /// with the sphere exactly: colour = 0.5 + 0.5·n (RGBA, background transparent), z-depth (16-bit thousandths), normal
+    /// A Blender-format dataset rendered analytically: the test suite's <see cref="AnalyticScene"/> holding one sphere of
+    /// radius <see cref="Radius"/> at the output origin, seen by cameras at distance 4 looking at it (OpenGL cameras, +Z
+    /// up), written by hand (not through Core's writers: the evaluation's oracle). Each pixel's ray through its centre is
+    /// intersected with the sphere exactly: colour = 0.5 + 0.5·n (RGBA, background transparent), z-depth (16-bit thousandths), normal
     /// (8-bit, output frame) and mask PNGs, and <c>geometry/target_mesh.ply</c> a UV sphere of the same radius. Renders in
     /// each trainer's layout are made from the same pixels (<see cref="Render"/>), optionally perturbed.
     /// </summary>
@@ -44,6 +45,8 @@ namespace NerfDatasetCreator.Tests
             return new Vector3d(Math.Cos(elevation) * Math.Cos(azimuth), Math.Cos(elevation) * Math.Sin(azimuth), Math.Sin(elevation)) * Distance;
         }
 
+        static readonly AnalyticScene Sphere = AnalyticScene.OneSphere(Vector3d.Zero, Radius);
+
         public static View RenderView(Matrix4x4d c2w, int width, int height)
         {
             var focal = 0.5 * width / Math.Tan(0.5 * CameraAngleX);
@@ -54,13 +57,8 @@ namespace NerfDatasetCreator.Tests
                 {
                     var dirCam = new Vector3d((u + 0.5 - width / 2.0) / focal, -(v + 0.5 - height / 2.0) / focal, -1);
                     var d = c2w.MultiplyVector(dirCam);
-                    // |o + t d|² = R²: a t² + 2 b t + c = 0.
-                    double a = d.LengthSquared, b = Vector3d.Dot(origin, d), c = origin.LengthSquared - Radius * Radius;
-                    var disc = b * b - a * c;
-                    if (disc < 0) continue;
-                    var t = (-b - Math.Sqrt(disc)) / a; // z-depth: dirCam has z = −1
-                    var p = origin + d * t;
-                    var n = p.Normalized();
+                    // t is the z-depth (dirCam has z = −1); the camera is outside the sphere, so the hit's normal faces it.
+                    if (!Sphere.Trace(origin, d, 0, out var t, out var n, out _, out _)) continue;
                     var i = v * width + u;
                     view.Rgba[4 * i] = Byte(0.5 + 0.5 * n.X);
                     view.Rgba[4 * i + 1] = Byte(0.5 + 0.5 * n.Y);

@@ -7,8 +7,10 @@ using Newtonsoft.Json.Linq;
 namespace NerfDatasetCreator.Tests
 {
     /// <summary>
-    /// A scene of spheres in the output world, rendered exactly — one ray through each pixel centre, the nearest
-    /// root of |C + s·d − S|² = r² — into the files a capture writes (output-format.md): RGBA, 16-bit depth PNG of
+    /// The independent oracle of the COLMAP track tests, and the one test scene besides <see cref="AnalyticScene"/> (whose
+    /// ray–sphere solver it casts its rays through): coloured spheres in the output world, rendered exactly — one ray
+    /// through each pixel centre, the nearest sphere hit — and written by hand, not through Core's writers, into the
+    /// files a capture writes (output-format.md): RGBA, 16-bit depth PNG of
     /// round(z·1000) (z along the camera axis, 0 = nothing), 8-bit mask (255 = covered, edge pixels the covered
     /// fraction of 2×2 sub-samples), and a points3d.ply of points sampled uniformly by area with exact normals,
     /// recorded in dataset_config.json so that convert takes it as the target's surface. Independent of Core's
@@ -31,7 +33,15 @@ namespace NerfDatasetCreator.Tests
             public byte Blue { get; }
         }
 
-        public SphereScene(params Sphere[] spheres) => Spheres = spheres;
+        public SphereScene(params Sphere[] spheres)
+        {
+            Spheres = spheres;
+            _scene = new AnalyticScene();
+            foreach (var sphere in spheres)
+                _scene.Spheres.Add(new AnalyticScene.Sphere { Centre = sphere.Centre, Radius = sphere.Radius, Colour = new[] { sphere.Red / 255.0, sphere.Green / 255.0, sphere.Blue / 255.0 } });
+        }
+
+        readonly AnalyticScene _scene;
 
         public Sphere[] Spheres { get; }
 
@@ -41,26 +51,8 @@ namespace NerfDatasetCreator.Tests
             new Sphere(new Vector3d(1.45, 0.1, 0.3), 0.35, 40, 90, 220));
 
         /// <summary>The nearest s &gt; 0 with origin + s·direction on a sphere (direction need not be unit), and which sphere; −1 if none.</summary>
-        public int Hit(Vector3d origin, Vector3d direction, out double s)
-        {
-            s = double.PositiveInfinity;
-            var which = -1;
-            var a = Vector3d.Dot(direction, direction);
-            for (var i = 0; i < Spheres.Length; i++)
-            {
-                var o = origin - Spheres[i].Centre;
-                var b = Vector3d.Dot(o, direction);
-                var c = Vector3d.Dot(o, o) - Spheres[i].Radius * Spheres[i].Radius;
-                var disc = b * b - a * c;
-                if (disc < 0) continue;
-                var root = Math.Sqrt(disc);
-                var near = (-b - root) / a;
-                var far = (-b + root) / a;
-                var hit = near > 0 ? near : far > 0 ? far : double.NaN;
-                if (hit < s) { s = hit; which = i; }
-            }
-            return which;
-        }
+        public int Hit(Vector3d origin, Vector3d direction, out double s) =>
+            _scene.Trace(origin, direction, 0, out s, out _, out _, out _, out var id) ? id - 1 : -1;
 
         /// <summary>The world-space ray (not unit) through continuous pixel (u, v) whose camera-axis depth is the ray parameter.</summary>
         public static Vector3d Ray(Matrix4x4d cameraToWorld, CameraIntrinsics k, double u, double v)

@@ -9,7 +9,7 @@ namespace NerfDatasetCreator.Tests
     [TestFixture]
     public class LabelFileTests
     {
-        static LabelTable Table() => LabelTable.Build(LabelScene.Settings(InstanceRule.PrefabInstance, ClassSource.Tag, new ClassRule("Vehicle", "car")), LabelScene.Renderers());
+        static LabelTable Table() => LabelTable.Build(LabelHierarchy.Settings(InstanceRule.PrefabInstance, ClassSource.Tag, new ClassRule("Vehicle", "car")), LabelHierarchy.Renderers());
 
         [Test]
         public void LabelsJsonListsEveryInstanceAndClassAndReadsBackTheSame()
@@ -52,9 +52,9 @@ namespace NerfDatasetCreator.Tests
         public void DisagreeingTablesSayWhichIdDiffers()
         {
             var a = Table();
-            var b = LabelTable.Build(LabelScene.Settings(InstanceRule.PrefabInstance, ClassSource.Tag, new ClassRule("Vehicle", "car")), LabelScene.Renderers().Take(4));
+            var b = LabelTable.Build(LabelHierarchy.Settings(InstanceRule.PrefabInstance, ClassSource.Tag, new ClassRule("Vehicle", "car")), LabelHierarchy.Renderers().Take(4));
             Assert.That(LabelsJson.Difference(a, b), Is.EqualTo("instance id 4 is \"City/Lamp\" in one and missing in the other"));
-            var c = LabelTable.Build(LabelScene.Settings(InstanceRule.Renderer, ClassSource.Tag, new ClassRule("Vehicle", "car")), LabelScene.Renderers());
+            var c = LabelTable.Build(LabelHierarchy.Settings(InstanceRule.Renderer, ClassSource.Tag, new ClassRule("Vehicle", "car")), LabelHierarchy.Renderers());
             Assert.That(LabelsJson.Difference(a, c), Does.StartWith("the label rules differ"));
         }
 

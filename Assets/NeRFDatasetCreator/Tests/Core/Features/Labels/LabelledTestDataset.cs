@@ -5,7 +5,7 @@ namespace NerfDatasetCreator.Tests
 {
     /// <summary>
     /// A dataset with labels for the export tests: the analytic test dataset (real images, poses and transforms through
-    /// the capture's writers), plus labels.json of <see cref="LabelScene"/> under the "prefab" rule — ids 1 = City/Car
+    /// the capture's writers), plus labels.json of <see cref="LabelHierarchy"/> under the "prefab" rule — ids 1 = City/Car
     /// (sibling 0), 2 = City/Tree, 3 = City/Car (sibling 2), 4 = City/Lamp; two objects share the name "Car" — and
     /// beside every image an instance map drawn by <see cref="IdAt"/>, so every expected pixel is known in closed form.
     /// </summary>
@@ -17,7 +17,7 @@ namespace NerfDatasetCreator.Tests
         {
             var folder = AnalyticDataset.Write(project, name, new AnalyticDataset.Options { Width = Width, Height = Height, Supersampling = 1, Train = 3, Val = 1, Test = 2, PointCloud = 200 });
             if (!labels) return folder;
-            var table = LabelTable.Build(LabelScene.Settings(InstanceRule.PrefabInstance, ClassSource.Tag), LabelScene.Renderers());
+            var table = LabelTable.Build(LabelHierarchy.Settings(InstanceRule.PrefabInstance, ClassSource.Tag), LabelHierarchy.Renderers());
             File.WriteAllText(Path.Combine(folder, DatasetLayout.LabelsFileName), LabelsJson.Write(table));
             var frame = 0;
             foreach (var image in Images(folder))

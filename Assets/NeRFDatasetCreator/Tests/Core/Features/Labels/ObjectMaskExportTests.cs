@@ -138,7 +138,7 @@ namespace NerfDatasetCreator.Tests
         [Test]
         public void AMaskIs255OnTheObjectsIdAndAUniqueNameIsFoundInAnyCase()
         {
-            var table = LabelTable.Build(LabelScene.Settings(InstanceRule.PrefabInstance, ClassSource.Tag), LabelScene.Renderers());
+            var table = LabelTable.Build(LabelHierarchy.Settings(InstanceRule.PrefabInstance, ClassSource.Tag), LabelHierarchy.Renderers());
             var mask = ObjectMaskExport.Mask(new ushort[] { 0, 1, 2, 1 }, 1);
             Assert.That(mask, Is.EqualTo(new byte[] { 0, 255, 0, 255 }));
             Assert.That(ObjectSelection.Find(table, "Lamp").Id, Is.EqualTo(4));

@@ -5,7 +5,8 @@ using System.Linq;
 namespace NerfDatasetCreator.Tests
 {
     /// <summary>
-    /// <see cref="AnalyticScene.Layout"/> as triangle meshes in Unity's world (what the Editor's TargetSurface reads): the
+    /// <see cref="AnalyticScene.Layout"/> as triangle meshes in Unity's world (what the Editor's TargetSurface reads), from
+    /// the same layout numbers: the
     /// opaque sphere (moving 0.4 along Unity +X over normalised time), the glass sphere and the slab, around
     /// <see cref="AnalyticDataset.Centre"/>. Spheres are UV spheres fine enough that their facets stay within a few
     /// thousandths of the analytic surface the depth maps hold.
@@ -17,9 +18,9 @@ namespace NerfDatasetCreator.Tests
             var c = AnalyticDataset.Centre;
             return new[]
             {
-                Moved(AnalyticSphereDataset.UvSphere(0.45, 64, 128, "opaque"), c + new Vector3d(-0.45 + 0.4 * time, 0.35, -0.1)),
-                Moved(AnalyticSphereDataset.UvSphere(0.3, 48, 96, "glass"), c + new Vector3d(0.55, 0.15, 0.25)),
-                Box(c + new Vector3d(-0.9, -0.75, -0.6), c + new Vector3d(0.9, -0.35, 0.5)),
+                Moved(AnalyticSphereDataset.UvSphere(AnalyticScene.OpaqueRadius, 64, 128, "opaque"), c + AnalyticScene.OpaqueOffset(time)),
+                Moved(AnalyticSphereDataset.UvSphere(AnalyticScene.GlassRadius, 48, 96, "glass"), c + AnalyticScene.GlassOffset),
+                Box(c + AnalyticScene.SlabLow, c + AnalyticScene.SlabHigh),
             };
         }
 

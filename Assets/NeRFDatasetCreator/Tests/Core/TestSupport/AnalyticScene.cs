@@ -4,9 +4,14 @@ using System.Collections.Generic;
 namespace NerfDatasetCreator.Tests
 {
     /// <summary>
-    /// A small ray-traceable scene in the output world (Blender axes, output units): spheres (one may be glass, partly
-    /// transparent) and axis-aligned boxes. Made from a layout in Unity's world, converted with the plan's own
-    /// <see cref="SceneNormalisation"/>, so a dataset rendered from it is what a capture of that layout must give.
+    /// The test suite's one analytic scene, and its one ray–sphere solver (<see cref="HitSphere"/>): spheres (one may be
+    /// glass, partly transparent) and axis-aligned boxes, ray-traced exactly. The capture's test layout
+    /// (<see cref="Layout"/>) is made in Unity's world and converted with the plan's own <see cref="SceneNormalisation"/>,
+    /// so a dataset rendered from it (<see cref="AnalyticDataset"/>, through Core's ViewPipeline) is what a capture of that
+    /// layout must give; its meshes are <see cref="AnalyticSceneMeshes"/>. The evaluation's unit sphere
+    /// (<see cref="AnalyticSphereDataset"/>) is a scene of this class too. The one other scene the tests keep is
+    /// <see cref="SphereScene"/>: the independent oracle of the COLMAP track tests (it writes its dataset by hand, not
+    /// through Core's writers, with depths and masks of its own rounding), which casts its rays through this scene.
     /// </summary>
     sealed class AnalyticScene
     {
@@ -35,12 +40,12 @@ namespace NerfDatasetCreator.Tests
         public static AnalyticScene Layout(SceneNormalisation normalisation, Vector3d centre, double time = 0)
         {
             var s = normalisation.Scale;
-            Vector3d Out(double x, double y, double z) => normalisation.ApplyToUnityPoint(centre + new Vector3d(x, y, z));
+            Vector3d Out(Vector3d offset) => normalisation.ApplyToUnityPoint(centre + offset);
             var scene = new AnalyticScene();
-            scene.Spheres.Add(new Sphere { Centre = Out(-0.45 + 0.4 * time, 0.35, -0.1), Radius = 0.45 * s, Colour = new[] { 0.8, 0.25, 0.1 } });
-            scene.Spheres.Add(new Sphere { Centre = Out(0.55, 0.15, 0.25), Radius = 0.3 * s, Colour = new[] { 0.2, 0.4, 0.9 }, Alpha = 0.5 });
-            var a = Out(-0.9, -0.75, -0.6);
-            var b = Out(0.9, -0.35, 0.5);
+            scene.Spheres.Add(new Sphere { Centre = Out(OpaqueOffset(time)), Radius = OpaqueRadius * s, Colour = new[] { 0.8, 0.25, 0.1 } });
+            scene.Spheres.Add(new Sphere { Centre = Out(GlassOffset), Radius = GlassRadius * s, Colour = new[] { 0.2, 0.4, 0.9 }, Alpha = 0.5 });
+            var a = Out(SlabLow);
+            var b = Out(SlabHigh);
             scene.Boxes.Add(new Box
             {
                 Min = new Vector3d(Math.Min(a.X, b.X), Math.Min(a.Y, b.Y), Math.Min(a.Z, b.Z)),
@@ -48,6 +53,44 @@ namespace NerfDatasetCreator.Tests
                 Colour = new[] { 0.3, 0.7, 0.3 },
             });
             return scene;
+        }
+
+        /// <summary>The layout's opaque sphere: its centre's offset from the layout centre at normalised <paramref name="time"/> (Unity units), and its radius.</summary>
+        public static Vector3d OpaqueOffset(double time) => new Vector3d(-0.45 + 0.4 * time, 0.35, -0.1);
+
+        public const double OpaqueRadius = 0.45;
+
+        /// <summary>The layout's glass sphere (alpha 0.5): offset and radius.</summary>
+        public static readonly Vector3d GlassOffset = new Vector3d(0.55, 0.15, 0.25);
+
+        public const double GlassRadius = 0.3;
+
+        /// <summary>The layout's slab: the offsets of two opposite corners.</summary>
+        public static readonly Vector3d SlabLow = new Vector3d(-0.9, -0.75, -0.6), SlabHigh = new Vector3d(0.9, -0.35, 0.5);
+
+        /// <summary>A scene of one opaque sphere of <paramref name="radius"/> at <paramref name="centre"/> (white: the caller colours by normal).</summary>
+        public static AnalyticScene OneSphere(Vector3d centre, double radius)
+        {
+            var scene = new AnalyticScene();
+            scene.Spheres.Add(new Sphere { Centre = centre, Radius = radius, Colour = new[] { 1.0, 1.0, 1.0 } });
+            return scene;
+        }
+
+        /// <summary>
+        /// The one ray–sphere solver: the nearest root t &gt; <paramref name="after"/> of |o + t·d − c|² = r² (d need not be
+        /// unit), or +∞ when the ray misses the sphere beyond <paramref name="after"/>.
+        /// </summary>
+        public static double HitSphere(Vector3d o, Vector3d d, Vector3d centre, double radius, double after)
+        {
+            var oc = o - centre;
+            double a = Vector3d.Dot(d, d), b = Vector3d.Dot(oc, d), c = Vector3d.Dot(oc, oc) - radius * radius;
+            var disc = b * b - a * c;
+            if (disc < 0) return double.PositiveInfinity;
+            var root = Math.Sqrt(disc);
+            var near = (-b - root) / a;
+            if (near > after) return near;
+            var far = (-b + root) / a;
+            return far > after ? far : double.PositiveInfinity;
         }
 
         /// <summary>The nearest hit along o + t·d (t &gt; 0) beyond <paramref name="after"/>: its t, normal, colour and alpha.</summary>
@@ -71,21 +114,13 @@ namespace NerfDatasetCreator.Tests
             for (var index = 0; index < Spheres.Count; index++)
             {
                 var s = Spheres[index];
-                var oc = o - s.Centre;
-                double a = Vector3d.Dot(d, d), b = Vector3d.Dot(oc, d), c = Vector3d.Dot(oc, oc) - s.Radius * s.Radius;
-                var disc = b * b - a * c;
-                if (disc < 0) continue;
-                var root = Math.Sqrt(disc);
-                foreach (var hit in new[] { (-b - root) / a, (-b + root) / a })
-                {
-                    if (hit <= after || hit >= t) continue;
-                    t = hit;
-                    normal = (o + d * hit - s.Centre).Normalized();
-                    colour = s.Colour;
-                    alpha = s.Alpha;
-                    objectId = index + 1;
-                    break;
-                }
+                var hit = HitSphere(o, d, s.Centre, s.Radius, after);
+                if (!(hit < t)) continue;
+                t = hit;
+                normal = (o + d * hit - s.Centre).Normalized();
+                colour = s.Colour;
+                alpha = s.Alpha;
+                objectId = index + 1;
             }
             for (var index = 0; index < Boxes.Count; index++)
             {

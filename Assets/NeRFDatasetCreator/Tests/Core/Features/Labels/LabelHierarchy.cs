@@ -4,7 +4,8 @@ using System.Linq;
 namespace NerfDatasetCreator.Tests
 {
     /// <summary>
-    /// A small described scene for the label tests: the target "City" (scene root 0) holds two instances of a car
+    /// A small described hierarchy for the label tests (objects as the Unity layer describes them; nothing is rendered):
+    /// the target "City" (scene root 0) holds two instances of a car
     /// prefab (each a body and wheel renderers), a tree and a lamp; "Sun" (scene root 1) is outside the target.
     /// <code>
     /// City [0]            target
@@ -17,7 +18,7 @@ namespace NerfDatasetCreator.Tests
     ///   Lamp [3]          renderer, tag Light, layer Props
     /// </code>
     /// </summary>
-    static class LabelScene
+    static class LabelHierarchy
     {
         public static SceneNode City => new SceneNode("City", 0, "Untagged", "Default");
 

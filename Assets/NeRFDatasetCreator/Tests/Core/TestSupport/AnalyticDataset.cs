@@ -7,7 +7,8 @@ namespace NerfDatasetCreator.Tests
 {
     /// <summary>
     /// Writes a real dataset folder through the capture's own Core path — <see cref="DatasetRun"/>'s plan, transforms
-    /// and dataset_config.json, <see cref="ViewFileWriter"/> (difference matting, mask, 16-bit depth, normals, PNG),
+    /// and dataset_config.json, <see cref="ViewPipeline"/>'s per-view stages (lens, blur/sharp, then
+    /// <see cref="ViewFileWriter"/>: difference matting, mask, 16-bit depth, normals, ids, exposure, PNG),
     /// <c>points3d.ply</c> with its record — from readbacks ray-traced per sample through NeRF's own ray formula
     /// (<see cref="NerfRays"/>) from each view's written <c>transform_matrix</c> and <c>camera_angle_x</c>: exactly what a
     /// correct capture of <see cref="AnalyticScene"/> must give. With a lens, each sample is traced along its distorted
@@ -47,7 +48,7 @@ namespace NerfDatasetCreator.Tests
             /// <summary>The dataset folder relative to the project (batch mode's -nerfOut), so that shards of one config land apart; null for NeRFDatasets/&lt;name&gt;.</summary>
             public string DatasetFolder { get; set; }
 
-            /// <summary>A planted fault: the instance maps are the mean of each pixel's sample ids (a filtered downsample), not their majority.</summary>
+            /// <summary>A planted fault: the instance maps are the mean of each pixel's sample ids (a filtered downsample), not their majority. Without <see cref="ThroughWideRender"/> (it reads the rendered frame).</summary>
             public bool BlendIds { get; set; }
 
             /// <summary>The lens setting (none by default).</summary>
@@ -121,34 +122,25 @@ namespace NerfDatasetCreator.Tests
             var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project, options.Shard, options.DatasetFolder);
             Assert.That(run.Problems, Is.Empty, "the test dataset's settings");
             var session = run.Begin();
-            var writer = new ViewFileWriter(run.Plan, session, null);
             var labels = options.Labels ? LabelTable.Build(settings.Labels, LabelObjects()) : null;
-            writer.Labels = labels;
+            // The capture's own per-view stages (Core's ViewPipeline). Without ThroughWideRender a lens's distorted rays are
+            // traced here, per pixel: an independent oracle of the lens stage, whose frames are then at the output frame.
+            var pipeline = options.ThroughWideRender ? new ViewPipeline(run.Plan, session, null, labels)
+                : new ViewPipeline(new ViewFileWriter(run.Plan, session, null) { Labels = labels }, null);
             var lens = settings.Lens.ToDistortion();
-            var resampler = options.ThroughWideRender ? LensCapture.ResamplerFor(run.Plan) : null;
+            var wide = pipeline.WideRender;
             var scenes = new Dictionary<double, AnalyticScene>();
             foreach (var view in run.Plan.Views)
             {
                 var time = view.Time?.Normalised ?? 0;
                 if (!scenes.TryGetValue(time, out var scene)) scenes[time] = scene = AnalyticScene.Layout(run.Plan.Normalisation, Centre, time);
-                RayOf RaysAt(Matrix4x4d c2w) => resampler != null ? Pinhole(c2w, resampler.Wide) : Rays(c2w, run.Plan.Intrinsics, lens);
+                RayOf RaysAt(Matrix4x4d c2w) => wide != null ? Pinhole(c2w, wide) : Rays(c2w, run.Plan.Intrinsics, lens);
                 var rays = RaysAt(view.TransformMatrix);
-                int w = resampler != null ? resampler.Wide.Width : run.Plan.Intrinsics.Width, h = resampler != null ? resampler.Wide.Height : run.Plan.Intrinsics.Height;
+                int w = wide != null ? wide.Width : run.Plan.Intrinsics.Width, h = wide != null ? wide.Height : run.Plan.Intrinsics.Height;
                 var frame = Render(scene, rays, w, h, options, run.Plan.Normalisation.Scale, options.Supersampling);
                 var data = options.DataAtOutputSize && options.Supersampling > 1 ? Render(scene, rays, w, h, options, run.Plan.Normalisation.Scale, 1) : frame;
                 var blurred = view.Motion != null ? Blurred(scene, view, frame, run.Plan, options, RaysAt, w, h) : null;
-                if (resampler != null)
-                {
-                    frame = resampler.Resample(frame);
-                    data = data.Supersampling == frame.Supersampling ? frame : resampler.Resample(data);
-                    if (blurred != null) blurred = resampler.Resample(blurred);
-                }
-                if (blurred != null)
-                {
-                    writer.Write(view, blurred, data);
-                    writer.WriteSharp(view, frame);
-                }
-                else writer.Write(view, frame, data);
+                pipeline.Write(view, frame, data, blurred);
                 if (options.BlendIds) WriteBlendedIds(session, view, frame);
             }
             var cloud = options.PointCloud > 0 ? AnalyticScene.Layout(run.Plan.Normalisation, Centre).Surface(options.PointCloud) : null;
@@ -158,11 +150,11 @@ namespace NerfDatasetCreator.Tests
             return run.DatasetFolder;
         }
 
-        /// <summary>The sub-frame average of the colour renders at the schedule's poses (<see cref="SubFrameAccumulator"/>); mask, depth, normals and ids of the mid pose.</summary>
+        /// <summary>The sub-frame average of the colour renders at the schedule's poses (<see cref="ViewPipeline.SubFrameAverage"/>); mask, depth, normals and ids of the mid pose.</summary>
         static RawFrame Blurred(AnalyticScene scene, PlannedView view, RawFrame sharp, CapturePlan plan, Options options, Func<Matrix4x4d, RayOf> raysAt, int w, int h)
         {
             var blur = plan.Settings.MotionBlur;
-            var accumulator = new SubFrameAccumulator(sharp.Width, sharp.Height, blur.SubFrames, blur.Readout, false);
+            var accumulator = ViewPipeline.SubFrameAverage(sharp.Width, sharp.Height, blur.SubFrames, blur.Readout, false);
             foreach (var sub in SubFrameSchedule.For(view.Motion, blur.SubFrames))
             {
                 var render = Render(scene, raysAt(plan.Normalisation.CameraToWorld(sub.Pose)), w, h, options, plan.Normalisation.Scale, options.Supersampling);
