@@ -36,9 +36,9 @@ namespace NerfDatasetCreator
             w.WritePropertyName("target"); w.WriteValue(s.Target ?? "");
             w.WritePropertyName("camera");
             w.WriteStartObject();
-            Number(w, "verticalFovDegrees", s.Camera.VerticalFovDegrees);
-            Number(w, "nearClip", s.Camera.NearClip);
-            Number(w, "farClip", s.Camera.FarClip);
+            JsonNumbers.SettingNumber(w, "verticalFovDegrees", s.Camera.VerticalFovDegrees);
+            JsonNumbers.SettingNumber(w, "nearClip", s.Camera.NearClip);
+            JsonNumbers.SettingNumber(w, "farClip", s.Camera.FarClip);
             w.WritePropertyName("copyFromCamera"); w.WriteValue(s.Camera.CopyFromCamera ?? "");
             w.WriteEndObject();
             if (s.AutoDistance)
@@ -46,8 +46,8 @@ namespace NerfDatasetCreator
                 w.WritePropertyName("distance");
                 w.WriteValue("auto");
             }
-            else Number(w, "distance", s.Distance);
-            Number(w, "autoDistanceMargin", s.AutoDistanceMargin);
+            else JsonNumbers.SettingNumber(w, "distance", s.Distance);
+            JsonNumbers.SettingNumber(w, "autoDistanceMargin", s.AutoDistanceMargin);
             w.WritePropertyName("width"); w.WriteValue(s.Width);
             w.WritePropertyName("height"); w.WriteValue(s.Height);
             w.WritePropertyName("supersampling"); w.WriteValue(s.Supersampling);
@@ -59,10 +59,10 @@ namespace NerfDatasetCreator
             foreach (var name in TargetLoaderNames.NamesOf(s.Loaders)) w.WriteValue(name);
             w.WriteEndArray();
             w.WritePropertyName("normalisation"); w.WriteValue(NormalisationModes.IsDefined(s.Normalisation) ? NormalisationModes.Name(s.Normalisation) : ((int)s.Normalisation).ToString(System.Globalization.CultureInfo.InvariantCulture));
-            Number(w, "normalisedTargetRadius", s.NormalisedTargetRadius);
+            JsonNumbers.SettingNumber(w, "normalisedTargetRadius", s.NormalisedTargetRadius);
             w.WritePropertyName("pointCloudPoints"); w.WriteValue(s.PointCloudPoints);
             // Only when set, so object captures' configs keep their keys (0, the default, picks it from the volume boxes).
-            if (s.PointCloudRadius != 0) Number(w, "pointCloudRadius", s.PointCloudRadius);
+            if (s.PointCloudRadius != 0) JsonNumbers.SettingNumber(w, "pointCloudRadius", s.PointCloudRadius);
             // Only when turned off, so existing configs keep their keys.
             if (!s.Preflight)
             {
@@ -127,7 +127,7 @@ namespace NerfDatasetCreator
                     w.WritePropertyName(name);
                     w.WriteValue(f.UpperHemisphereOnly);
                 }
-                else Number(w, name, FormationParameter(f, name));
+                else JsonNumbers.SettingNumber(w, name, FormationParameter(f, name));
             }
             w.WriteEndObject();
             w.WritePropertyName("depth"); w.WriteValue(ExtraOutputs.Name(split.Depth));
@@ -135,15 +135,6 @@ namespace NerfDatasetCreator
             w.WritePropertyName("mask"); w.WriteValue(split.Mask);
             if (split.Source != null && !split.Source.IsFormation) CameraSourceJson.Write(w, split.Source);
             w.WriteEndObject();
-        }
-
-        static void Number(JsonWriter w, string name, double value)
-        {
-            w.WritePropertyName(name);
-            // A config may hold NaN while being edited; it is written as a string so the file stays JSON and
-            // validation (not the writer) reports it.
-            if (double.IsNaN(value) || double.IsInfinity(value)) w.WriteValue(value.ToString(System.Globalization.CultureInfo.InvariantCulture));
-            else JsonNumbers.Write(w, value);
         }
 
         static string OverwriteName(OverwritePolicy policy) => policy == OverwritePolicy.Replace ? "replace" : "never";

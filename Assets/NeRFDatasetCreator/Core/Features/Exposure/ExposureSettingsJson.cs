@@ -30,10 +30,10 @@ namespace NerfDatasetCreator
                 foreach (var v in e.Values ?? new List<ViewExposure>())
                 {
                     w.WriteStartObject();
-                    Number(w, "ev", v.Ev);
+                    JsonNumbers.SettingNumber(w, "ev", v.Ev);
                     w.WritePropertyName("whiteBalance");
                     w.WriteStartArray();
-                    Value(w, v.R); Value(w, v.G); Value(w, v.B);
+                    JsonNumbers.SettingValue(w, v.R); JsonNumbers.SettingValue(w, v.G); JsonNumbers.SettingValue(w, v.B);
                     w.WriteEndArray();
                     w.WriteEndObject();
                 }
@@ -55,22 +55,9 @@ namespace NerfDatasetCreator
         {
             w.WritePropertyName(name);
             w.WriteStartArray();
-            Value(w, a);
-            Value(w, b);
+            JsonNumbers.SettingValue(w, a);
+            JsonNumbers.SettingValue(w, b);
             w.WriteEndArray();
-        }
-
-        static void Number(JsonWriter w, string name, double value)
-        {
-            w.WritePropertyName(name);
-            Value(w, value);
-        }
-
-        // As DatasetSettingsJson: NaN is written as a string so the file stays JSON and validation reports it.
-        static void Value(JsonWriter w, double value)
-        {
-            if (double.IsNaN(value) || double.IsInfinity(value)) w.WriteValue(value.ToString(System.Globalization.CultureInfo.InvariantCulture));
-            else JsonNumbers.Write(w, value);
         }
 
         internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, ExposureSettings e)

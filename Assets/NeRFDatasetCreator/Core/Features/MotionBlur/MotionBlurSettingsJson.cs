@@ -15,19 +15,12 @@ namespace NerfDatasetCreator
             w.WriteStartObject();
             w.WritePropertyName("enabled"); w.WriteValue(m.Enabled);
             w.WritePropertyName("camera"); w.WriteValue(MotionBlurSettings.CameraName(m.Camera));
-            Number(w, "shutter", m.Shutter);
+            JsonNumbers.SettingNumber(w, "shutter", m.Shutter);
             w.WritePropertyName("subFrames"); w.WriteValue(m.SubFrames);
-            Number(w, "shakeDistance", m.ShakeDistance);
-            Number(w, "shakeDegrees", m.ShakeDegrees);
-            Number(w, "readout", m.Readout);
+            JsonNumbers.SettingNumber(w, "shakeDistance", m.ShakeDistance);
+            JsonNumbers.SettingNumber(w, "shakeDegrees", m.ShakeDegrees);
+            JsonNumbers.SettingNumber(w, "readout", m.Readout);
             w.WriteEndObject();
-        }
-
-        static void Number(JsonWriter w, string name, double value)
-        {
-            w.WritePropertyName(name);
-            if (double.IsNaN(value) || double.IsInfinity(value)) w.WriteValue(value.ToString(System.Globalization.CultureInfo.InvariantCulture));
-            else JsonNumbers.Write(w, value);
         }
 
         internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, MotionBlurSettings m)

@@ -22,24 +22,16 @@ namespace NerfDatasetCreator
             w.WriteStartArray();
             foreach (var name in TimeSourceNames.NamesOf(t.Sources)) w.WriteValue(name);
             w.WriteEndArray();
-            Number(w, "start", t.StartSeconds);
+            JsonNumbers.SettingNumber(w, "start", t.StartSeconds);
             if (t.EndAtClipLength)
             {
                 w.WritePropertyName("end");
                 w.WriteValue("clip");
             }
-            else Number(w, "end", t.EndSeconds);
+            else JsonNumbers.SettingNumber(w, "end", t.EndSeconds);
             w.WritePropertyName("steps"); w.WriteValue(t.Steps);
-            Number(w, "fps", t.Fps);
+            JsonNumbers.SettingNumber(w, "fps", t.Fps);
             w.WriteEndObject();
-        }
-
-        static void Number(JsonWriter w, string name, double value)
-        {
-            w.WritePropertyName(name);
-            // As DatasetSettingsJson: NaN is written as a string so the file stays JSON and validation reports it.
-            if (double.IsNaN(value) || double.IsInfinity(value)) w.WriteValue(value.ToString(System.Globalization.CultureInfo.InvariantCulture));
-            else JsonNumbers.Write(w, value);
         }
 
         internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, TimeSettings t)

@@ -69,12 +69,12 @@ namespace NerfDatasetCreator
                 w.CloseOutput = false;
                 w.AutoCompleteOnClose = false;
                 w.WriteStartObject();
-                Number(w, "camera_angle_x", intrinsics.CameraAngleX);
-                Number(w, "camera_angle_y", intrinsics.CameraAngleY);
-                Number(w, "fl_x", intrinsics.FlX);
-                Number(w, "fl_y", intrinsics.FlY);
-                Number(w, "cx", intrinsics.Cx);
-                Number(w, "cy", intrinsics.Cy);
+                JsonNumbers.Number(w, "camera_angle_x", intrinsics.CameraAngleX);
+                JsonNumbers.Number(w, "camera_angle_y", intrinsics.CameraAngleY);
+                JsonNumbers.Number(w, "fl_x", intrinsics.FlX);
+                JsonNumbers.Number(w, "fl_y", intrinsics.FlY);
+                JsonNumbers.Number(w, "cx", intrinsics.Cx);
+                JsonNumbers.Number(w, "cy", intrinsics.Cy);
                 w.WritePropertyName("w"); w.WriteValue(intrinsics.Width);
                 w.WritePropertyName("h"); w.WriteValue(intrinsics.Height);
                 // The lens the images were taken through (none for a pinhole capture, whose files keep their keys).
@@ -82,8 +82,8 @@ namespace NerfDatasetCreator
                 w.WritePropertyName("aabb_scale"); w.WriteValue(aabbScale);
                 if (anyDepthPng)
                 {
-                    Number(w, "integer_depth_scale", DepthUnitScale);
-                    Number(w, "depth_unit_scale_factor", DepthUnitScale);
+                    JsonNumbers.Number(w, "integer_depth_scale", DepthUnitScale);
+                    JsonNumbers.Number(w, "depth_unit_scale_factor", DepthUnitScale);
                 }
                 if (motionBlur != null) MotionBlurRecord.WriteTopLevel(w, motionBlur);
                 if (normalisation != null)
@@ -108,12 +108,6 @@ namespace NerfDatasetCreator
                 w.WriteEndArray();
             }
             w.WriteEndArray();
-        }
-
-        static void Number(JsonWriter w, string name, double value)
-        {
-            w.WritePropertyName(name);
-            JsonNumbers.Write(w, value);
         }
     }
 }
