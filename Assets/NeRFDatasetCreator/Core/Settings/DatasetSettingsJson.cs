@@ -69,38 +69,14 @@ namespace NerfDatasetCreator
                 w.WritePropertyName("preflight");
                 w.WriteValue(false);
             }
-            if (!s.GeometryPack)
-            {
-                w.WritePropertyName("geometryPack");
-                w.WriteValue(false);
-            }
-            else if (s.GeometryPackEveryStep)
-            {
-                w.WritePropertyName("geometryPack");
-                w.WriteValue(GeometryPackSteps.EveryStepValue);
-            }
-            // Only with a lens, so pinhole configs keep their keys.
-            if (s.Lens != null && s.Lens.Enabled) LensSettingsJson.WriteObject(w, s.Lens);
-            if (s.Time != null && s.Time.Enabled)
-            {
-                w.WritePropertyName(TimeSettingsJson.Key);
-                TimeSettingsJson.WriteObject(w, s.Time);
-            }
-            if (s.Labels != null && s.Labels.Enabled)
-            {
-                w.WritePropertyName(LabelSettingsJson.Key);
-                LabelSettingsJson.WriteObject(w, s.Labels);
-            }
-            if (s.Exposure != null && s.Exposure.Enabled)
-            {
-                w.WritePropertyName(ExposureSettingsJson.Key);
-                ExposureSettingsJson.WriteObject(w, s.Exposure);
-            }
-            if (s.MotionBlur != null && s.MotionBlur.Enabled)
-            {
-                w.WritePropertyName(MotionBlurSettingsJson.Key);
-                MotionBlurSettingsJson.WriteObject(w, s.MotionBlur);
-            }
+            // The optional outputs (Core/Features/<Feature>/), one line each: a section is written only when its
+            // feature is on, so configs without it keep their keys (Documentation~/settings.md, "Optional outputs").
+            GeometryPackSettingsJson.Write(w, s);
+            LensSettingsJson.Write(w, s.Lens);
+            TimeSettingsJson.Write(w, s.Time);
+            LabelSettingsJson.Write(w, s.Labels);
+            ExposureSettingsJson.Write(w, s.Exposure);
+            MotionBlurSettingsJson.Write(w, s.MotionBlur);
             w.WritePropertyName("splits");
             w.WriteStartObject();
             foreach (var split in DatasetSplits.All)
@@ -288,21 +264,7 @@ namespace NerfDatasetCreator
                 ["pointCloudPoints"] = (t, p) => s.PointCloudPoints = reader.Int(t, p),
                 ["pointCloudRadius"] = (t, p) => s.PointCloudRadius = reader.Double(t, p),
                 ["preflight"] = (t, p) => s.Preflight = reader.Bool(t, p),
-                ["geometryPack"] = (t, p) =>
-                {
-                    // true (the start time's mesh), false (none) or "everyStep" (a dynamic capture's mesh at every step).
-                    if (t.Type == JTokenType.String && (string)t == GeometryPackSteps.EveryStepValue)
-                    {
-                        s.GeometryPack = true;
-                        s.GeometryPackEveryStep = true;
-                        return;
-                    }
-                    if (t.Type != JTokenType.Boolean)
-                        throw reader.Error(t, p, "must be true, false or \"" + GeometryPackSteps.EveryStepValue + "\" (a dynamic capture's mesh at every time step), not " + Describe(t) + "." +
-                            (t.Type == JTokenType.String ? SpellingSuggestion.Sentence((string)t, new[] { GeometryPackSteps.EveryStepValue }) : ""));
-                    s.GeometryPack = reader.Bool(t, p);
-                    s.GeometryPackEveryStep = false;
-                },
+                [GeometryPackSettingsJson.Key] = (t, p) => GeometryPackSettingsJson.Read(reader, t, p, s),
                 [TimeSettingsJson.Key] = (t, p) => TimeSettingsJson.Read(reader, t, p, s.Time),
                 [LabelSettingsJson.Key] = (t, p) => LabelSettingsJson.Read(reader, t, p, s.Labels),
                 [LensSettings.Key] = (t, p) => LensSettingsJson.Read(reader, t, p, s.Lens),
@@ -353,7 +315,7 @@ namespace NerfDatasetCreator
         static int Line(JToken t) => t is IJsonLineInfo info && info.HasLineInfo() ? info.LineNumber : 0;
         static int Column(JToken t) => t is IJsonLineInfo info && info.HasLineInfo() ? info.LinePosition : 0;
 
-        static string Describe(JToken t)
+        internal static string Describe(JToken t)
         {
             switch (t.Type)
             {
@@ -407,6 +369,37 @@ namespace NerfDatasetCreator
                             "Remove it or correct its spelling; the known keys here are: " + string.Join(", ", handlers.Keys) + "." +
                             SpellingSuggestion.Sentence(property.Name, handlers.Keys)));
                 }
+            }
+
+            /// <summary>
+            /// Reads an optional output's section (Core/Features/&lt;Feature&gt;/): its own keys through
+            /// <paramref name="handlers"/>, plus the <c>"enabled": true|false</c> every feature section accepts
+            /// (Documentation~/settings.md, "Optional outputs"). Returns that value, or null when the section does not
+            /// give it — then the section's own keys decide, exactly as before the key existed.
+            /// </summary>
+            public bool? Feature(JToken token, string path, Dictionary<string, Action<JToken, string>> handlers)
+            {
+                bool? enabled = null;
+                var all = new Dictionary<string, Action<JToken, string>> { [EnabledKey] = (t, p) => enabled = Bool(t, p) };
+                foreach (var handler in handlers) all.Add(handler.Key, handler.Value);
+                Object(token, path, all);
+                return enabled;
+            }
+
+            /// <summary>The on/off key of every feature section.</summary>
+            public const string EnabledKey = "enabled";
+
+            /// <summary>
+            /// Applies a section's <c>"enabled"</c> to a feature whose own keys also say on or off (lens <c>"model"</c>,
+            /// exposure and time <c>"mode"</c>): false turns it off whatever they say; true must agree with them, since
+            /// only they say which model or mode to use (<paramref name="offBecause"/> names the key that says off and
+            /// how to turn it on).
+            /// </summary>
+            public void Switch(JToken section, string path, bool? enabled, bool onByOwnKeys, Action turnOff, string offBecause)
+            {
+                if (enabled == false) turnOff();
+                else if (enabled == true && !onByOwnKeys)
+                    throw Error(section[EnabledKey], path + "." + EnabledKey, "is true, but " + offBecause + ", or set \"enabled\": false.");
             }
 
             public void SchemaVersion(JToken t, string path)

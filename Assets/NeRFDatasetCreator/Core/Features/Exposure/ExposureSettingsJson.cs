@@ -14,6 +14,14 @@ namespace NerfDatasetCreator
     {
         public const string Key = "exposure";
 
+        /// <summary>The <c>"exposure"</c> section when exposure is on; nothing when it is off.</summary>
+        public static void Write(JsonWriter w, ExposureSettings e)
+        {
+            if (e == null || !e.Enabled) return;
+            w.WritePropertyName(Key);
+            WriteObject(w, e);
+        }
+
         public static void WriteObject(JsonWriter w, ExposureSettings e)
         {
             w.WriteStartObject();
@@ -62,9 +70,9 @@ namespace NerfDatasetCreator
 
         internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, ExposureSettings e)
         {
-            // Giving the section turns it on; "mode": "off" turns it off again.
+            // Giving the section turns it on; "mode": "off" or "enabled": false turns it off again.
             if (e.Mode == ExposureMode.Off) e.Mode = ExposureMode.Random;
-            reader.Object(token, path, new Dictionary<string, Action<JToken, string>>
+            var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
                 ["mode"] = (v, p) =>
                 {
@@ -118,6 +126,7 @@ namespace NerfDatasetCreator
                 },
                 ["writeClean"] = (v, p) => e.WriteClean = reader.Bool(v, p),
             });
+            reader.Switch(token, path, enabled, e.Enabled, () => e.Mode = ExposureMode.Off, "\"mode\" is \"off\"; give \"mode\": \"random\" or \"list\"");
         }
 
         static void ReadPair(DatasetSettingsJson.Reader reader, JToken v, string p, string what, out double min, out double max)

@@ -13,6 +13,12 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class LensSettingsJson
     {
+        /// <summary>The <c>"lens"</c> section with a lens; nothing for a pinhole capture, whose configs keep their keys.</summary>
+        public static void Write(JsonWriter w, LensSettings lens)
+        {
+            if (lens != null && lens.Enabled) WriteObject(w, lens);
+        }
+
         public static void WriteObject(JsonWriter w, LensSettings lens)
         {
             w.WritePropertyName(LensSettings.Key);
@@ -36,7 +42,8 @@ namespace NerfDatasetCreator
 
         internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, LensSettings lens)
         {
-            reader.Object(token, path, new Dictionary<string, Action<JToken, string>>
+            // "model" says none (off) or which lens; "enabled": false makes the capture pinhole whatever the model.
+            var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
                 ["model"] = (v, p) =>
                 {
@@ -53,6 +60,8 @@ namespace NerfDatasetCreator
                 ["p1"] = (v, p) => lens.P1 = reader.Double(v, p),
                 ["p2"] = (v, p) => lens.P2 = reader.Double(v, p),
             });
+            reader.Switch(token, path, enabled, lens.Enabled, () => lens.Model = LensSettings.ModelNames.None,
+                "\"model\" is \"none\" (or missing); give \"model\": \"opencv\" or \"opencv_fisheye\"");
         }
     }
 }

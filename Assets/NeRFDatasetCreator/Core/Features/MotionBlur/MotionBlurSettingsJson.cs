@@ -10,6 +10,14 @@ namespace NerfDatasetCreator
     {
         public const string Key = "motionBlur";
 
+        /// <summary>The <c>"motionBlur"</c> section when blur is on; nothing when it is off.</summary>
+        public static void Write(JsonWriter w, MotionBlurSettings m)
+        {
+            if (m == null || !m.Enabled) return;
+            w.WritePropertyName(Key);
+            WriteObject(w, m);
+        }
+
         public static void WriteObject(JsonWriter w, MotionBlurSettings m)
         {
             w.WriteStartObject();
@@ -26,10 +34,8 @@ namespace NerfDatasetCreator
         internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, MotionBlurSettings m)
         {
             // A section without "enabled" is on: writing the section is asking for blur.
-            m.Enabled = true;
-            reader.Object(token, path, new Dictionary<string, Action<JToken, string>>
+            var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
-                ["enabled"] = (v, p) => m.Enabled = reader.Bool(v, p),
                 ["camera"] = (v, p) =>
                 {
                     if (!MotionBlurSettings.TryParseCamera(reader.String(v, p), out var motion))
@@ -43,6 +49,7 @@ namespace NerfDatasetCreator
                 ["shakeDegrees"] = (v, p) => m.ShakeDegrees = reader.Double(v, p),
                 ["readout"] = (v, p) => m.Readout = reader.Double(v, p),
             });
+            m.Enabled = enabled ?? true;
         }
     }
 }

@@ -14,6 +14,14 @@ namespace NerfDatasetCreator
     {
         public const string Key = "time";
 
+        /// <summary>The <c>"time"</c> section of a dynamic capture; nothing for a static one.</summary>
+        public static void Write(JsonWriter w, TimeSettings t)
+        {
+            if (t == null || !t.Enabled) return;
+            w.WritePropertyName(Key);
+            WriteObject(w, t);
+        }
+
         public static void WriteObject(JsonWriter w, TimeSettings t)
         {
             w.WriteStartObject();
@@ -36,7 +44,8 @@ namespace NerfDatasetCreator
 
         internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, TimeSettings t)
         {
-            reader.Object(token, path, new Dictionary<string, Action<JToken, string>>
+            // "mode" says static (off) or dynamic; "enabled": false makes the capture static whatever the mode.
+            var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
                 ["mode"] = (v, p) =>
                 {
@@ -74,6 +83,7 @@ namespace NerfDatasetCreator
                 ["steps"] = (v, p) => t.Steps = reader.Int(v, p),
                 ["fps"] = (v, p) => t.Fps = reader.Double(v, p),
             });
+            reader.Switch(token, path, enabled, t.Enabled, () => t.Mode = TimeMode.Static, "\"mode\" is \"static\" (or missing); give \"mode\": \"monocular\" or \"multi-view\"");
         }
     }
 }
