@@ -447,6 +447,20 @@ namespace NerfDatasetCreator
                 return (bool)t;
             }
 
+            /// <summary>Parses a name to one of its values, or reports "must be one of …" with a spelling suggestion.</summary>
+            public delegate bool NameParser<T>(string name, out T value);
+
+            /// <summary>
+            /// One of a set of names (a mode, a rule, a source): <paramref name="tryParse"/>'s value, or "must be one of
+            /// <paramref name="nameList"/>." with the closest of <paramref name="names"/> when one is near.
+            /// </summary>
+            public T Name<T>(JToken t, string path, NameParser<T> tryParse, string nameList, IEnumerable<string> names)
+            {
+                if (!tryParse(String(t, path), out var value))
+                    throw Error(t, path, "must be one of " + nameList + "." + SpellingSuggestion.Sentence((string)t, names));
+                return value;
+            }
+
             public ExtraOutput Extra(JToken t, string path)
             {
                 if (!ExtraOutputs.TryParse(String(t, path), out var output))

@@ -74,13 +74,7 @@ namespace NerfDatasetCreator
             if (e.Mode == ExposureMode.Off) e.Mode = ExposureMode.Random;
             var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
-                ["mode"] = (v, p) =>
-                {
-                    if (!ExposureModes.TryParse(reader.String(v, p), out var mode))
-                        throw reader.Error(v, p, "must be one of " + ExposureModes.NameList() + "." +
-                            SpellingSuggestion.Sentence((string)v, ExposureModes.All.Select(ExposureModes.Name)));
-                    e.Mode = mode;
-                },
+                ["mode"] = (v, p) => e.Mode = reader.Name<ExposureMode>(v, p, ExposureModes.TryParse, ExposureModes.NameList(), ExposureModes.All.Select(ExposureModes.Name)),
                 ["splits"] = (v, p) =>
                 {
                     if (v.Type != JTokenType.Array) throw reader.Error(v, p, "must be a list of split names such as [\"train\"].");

@@ -47,20 +47,8 @@ namespace NerfDatasetCreator
             // Giving the section turns labels on; "enabled": false turns them off again.
             var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
-                ["instances"] = (v, p) =>
-                {
-                    if (!InstanceRules.TryParse(reader.String(v, p), out var rule))
-                        throw reader.Error(v, p, "must be one of " + InstanceRules.NameList() + "." +
-                            SpellingSuggestion.Sentence((string)v, InstanceRules.All.Select(InstanceRules.Name)));
-                    labels.Instances = rule;
-                },
-                ["classFrom"] = (v, p) =>
-                {
-                    if (!ClassSources.TryParse(reader.String(v, p), out var source))
-                        throw reader.Error(v, p, "must be one of " + ClassSources.NameList() + "." +
-                            SpellingSuggestion.Sentence((string)v, ClassSources.All.Select(ClassSources.Name)));
-                    labels.ClassFrom = source;
-                },
+                ["instances"] = (v, p) => labels.Instances = reader.Name<InstanceRule>(v, p, InstanceRules.TryParse, InstanceRules.NameList(), InstanceRules.All.Select(InstanceRules.Name)),
+                ["classFrom"] = (v, p) => labels.ClassFrom = reader.Name<ClassSource>(v, p, ClassSources.TryParse, ClassSources.NameList(), ClassSources.All.Select(ClassSources.Name)),
                 ["classes"] = (v, p) =>
                 {
                     if (v.Type != JTokenType.Array)

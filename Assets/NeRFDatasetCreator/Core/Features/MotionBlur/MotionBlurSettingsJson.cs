@@ -36,13 +36,7 @@ namespace NerfDatasetCreator
             // A section without "enabled" is on: writing the section is asking for blur.
             var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
-                ["camera"] = (v, p) =>
-                {
-                    if (!MotionBlurSettings.TryParseCamera(reader.String(v, p), out var motion))
-                        throw reader.Error(v, p, "must be one of " + MotionBlurSettings.CameraNameList() + "." +
-                            SpellingSuggestion.Sentence((string)v, new[] { "path", "shake", "still" }));
-                    m.Camera = motion;
-                },
+                ["camera"] = (v, p) => m.Camera = reader.Name<ShutterCameraMotion>(v, p, MotionBlurSettings.TryParseCamera, MotionBlurSettings.CameraNameList(), new[] { "path", "shake", "still" }),
                 ["shutter"] = (v, p) => m.Shutter = reader.Double(v, p),
                 ["subFrames"] = (v, p) => m.SubFrames = reader.Int(v, p),
                 ["shakeDistance"] = (v, p) => m.ShakeDistance = reader.Double(v, p),

@@ -47,13 +47,7 @@ namespace NerfDatasetCreator
             // "mode" says static (off) or dynamic; "enabled": false makes the capture static whatever the mode.
             var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
-                ["mode"] = (v, p) =>
-                {
-                    if (!TimeModes.TryParse(reader.String(v, p), out var mode))
-                        throw reader.Error(v, p, "must be one of " + TimeModes.NameList() + "." +
-                            SpellingSuggestion.Sentence((string)v, TimeModes.All.Select(TimeModes.Name)));
-                    t.Mode = mode;
-                },
+                ["mode"] = (v, p) => t.Mode = reader.Name<TimeMode>(v, p, TimeModes.TryParse, TimeModes.NameList(), TimeModes.All.Select(TimeModes.Name)),
                 ["sources"] = (v, p) =>
                 {
                     if (v.Type != JTokenType.Array) throw reader.Error(v, p, "must be a list such as [\"timeline\", \"animator\"].");
