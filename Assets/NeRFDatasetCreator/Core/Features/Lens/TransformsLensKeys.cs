@@ -12,6 +12,9 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class TransformsLensKeys
     {
+        /// <summary>The keys of <paramref name="settings"/>' lens; none for a pinhole capture or without settings.</summary>
+        public static void Write(JsonWriter w, DatasetSettings settings) => Write(w, settings?.Lens?.ToDistortion());
+
         public static void Write(JsonWriter w, LensDistortion lens)
         {
             if (lens == null) return;

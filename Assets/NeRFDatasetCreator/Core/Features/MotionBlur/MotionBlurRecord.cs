@@ -9,6 +9,12 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class MotionBlurRecord
     {
+        /// <summary>The keys when <paramref name="settings"/> blur the views (<see cref="ShutterPlanning.IsOn"/>); none otherwise.</summary>
+        public static void WriteTopLevel(JsonWriter w, DatasetSettings settings)
+        {
+            if (ShutterPlanning.IsOn(settings)) WriteTopLevel(w, settings.MotionBlur);
+        }
+
         public static void WriteTopLevel(JsonWriter w, MotionBlurSettings m)
         {
             w.WritePropertyName(MotionBlurKeys.RollingShutter);

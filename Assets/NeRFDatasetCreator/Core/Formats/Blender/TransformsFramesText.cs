@@ -16,18 +16,23 @@ namespace NerfDatasetCreator
         readonly char[] _buffer = new char[FlushAt + 4096]; // room for one whole frame past the flush point
         readonly TextWriter _output;
         int _at;
-        ExposurePlan _exposure;
+        readonly ExposurePlan _exposure;
 
-        TransformsFramesText(TextWriter output) => _output = output;
+        TransformsFramesText(TextWriter output, DatasetSettings settings)
+        {
+            _output = output;
+            _exposure = ExposurePlan.Of(settings); // drawn once per file, read per frame
+        }
 
         /// <summary>
         /// Writes <c>,\n    "frames": [ … ]\n}</c> — the last member and the end of the file's object, whose earlier
         /// members Newtonsoft wrote — with the views of <paramref name="split"/> among <paramref name="views"/>.
         /// </summary>
+        /// <param name="settings">Switch the optional outputs' per-frame keys on (null: none).</param>
         public static void Write(TextWriter output, System.Collections.Generic.IReadOnlyList<PlannedView> views, DatasetSplit? split, double rotation,
-            ExposurePlan exposure = null)
+            DatasetSettings settings = null)
         {
-            var w = new TransformsFramesText(output) { _exposure = exposure };
+            var w = new TransformsFramesText(output, settings);
             w.Raw(",\n    \"frames\": [");
             var any = false;
             for (var i = 0; i < views.Count; i++)
