@@ -36,18 +36,18 @@ namespace NerfDatasetCreator
                 {
                     w.WritePropertyName("samples"); w.WriteValue(s.Samples);
                     w.WritePropertyName("frameStep"); w.WriteValue(s.FrameStep);
-                    w.WritePropertyName("frameRate"); JsonNumbers.Write(w, s.FrameRate);
-                    w.WritePropertyName("start"); JsonNumbers.Write(w, s.Start);
-                    w.WritePropertyName("end"); JsonNumbers.Write(w, s.End);
+                    JsonNumbers.Number(w, "frameRate", s.FrameRate);
+                    JsonNumbers.Number(w, "start", s.Start);
+                    JsonNumbers.Number(w, "end", s.End);
                 }
             }
             else if (s.IsVolume)
             {
                 w.WritePropertyName("box"); w.WriteValue(s.ObjectPath ?? "");
                 w.WritePropertyName("look"); w.WriteValue(VolumePlanning.LookName(s.Look));
-                w.WritePropertyName("density"); JsonNumbers.Write(w, s.Density);
-                w.WritePropertyName("jitterDegrees"); JsonNumbers.Write(w, s.JitterDegrees);
-                w.WritePropertyName("clearance"); JsonNumbers.Write(w, s.Clearance);
+                JsonNumbers.Number(w, "density", s.Density);
+                JsonNumbers.Number(w, "jitterDegrees", s.JitterDegrees);
+                JsonNumbers.Number(w, "clearance", s.Clearance);
                 if (s.Look == VolumeLook.Path)
                 {
                     w.WritePropertyName("waypoints"); w.WriteValue(s.PathObject ?? "");

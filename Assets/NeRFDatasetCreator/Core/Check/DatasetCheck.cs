@@ -52,7 +52,7 @@ namespace NerfDatasetCreator
                 new DepthNormalsCheck(),
                 PointCloud(root, dynamic),
                 new ColourGeometryCheck(),
-                InstanceMaskCheck(root, views),
+                InstanceMaskCheck.For(root, views),
                 new ExposureCheck(root),
                 new MotionBlurCheck(),
                 new GeometryPackDepthCheck(root, dynamic),
@@ -167,22 +167,6 @@ namespace NerfDatasetCreator
             if (images.Depth != null) cache.Put(view.Number, images.Depth);
             if (images.Instance != null) idCache.Put(view.Number, images.Instance);
             return images;
-        }
-
-        /// <summary>The instance-map check with the dataset's labels.json (read only when a frame names an instance map).</summary>
-        static InstanceMaskCheck InstanceMaskCheck(string root, IReadOnlyList<CheckView> views)
-        {
-            if (!views.Any(v => v.InstanceFile != null)) return new InstanceMaskCheck(null, null);
-            var path = Path.Combine(root, DatasetLayout.LabelsFileName);
-            if (!File.Exists(path)) return new InstanceMaskCheck(null, "is missing, but frames name instance maps.");
-            try
-            {
-                return new InstanceMaskCheck(LabelsJson.ReadFile(path), null);
-            }
-            catch (InvalidParameterException e)
-            {
-                return new InstanceMaskCheck(null, "cannot be read: " + e.Problems[0].Field + " " + e.Problems[0].Value + " " + e.Problems[0].Reason);
-            }
         }
 
         static IViewCheck PointCloud(string root, bool dynamic)

@@ -87,8 +87,7 @@ namespace NerfDatasetCreator
                 throw new InvalidParameterException(new[] { new ValidationProblem("--binary, --points, --min-track", ExportTargets.Name(target), "shape the COLMAP model only.", "Drop them, or convert to colmap.") });
             // A lens the target cannot hold is refused before anything is written (LensExports).
             InvalidParameterException.ThrowIfAny(LensExports.Refusal(scene.Lens, target, depths));
-            var blur = MotionBlurExports.Warning(scene, target);
-            if (blur != null) warnings.Add(blur);
+            warnings.AddRange(MotionBlurExports.Warnings(scene, target));
             var output = OutputFolder(scene.RootDirectory, target, outDir);
             // Label exports need labels.json and every instance map: refused before the output folder is made.
             var labelled = target == ExportTarget.GaussianGrouping ? LabelledDataset.Load(scene, GaussianGroupingExport.What) : null;

@@ -36,9 +36,9 @@ namespace NerfDatasetCreator
             w.WritePropertyName("target"); w.WriteValue(s.Target ?? "");
             w.WritePropertyName("camera");
             w.WriteStartObject();
-            Number(w, "verticalFovDegrees", s.Camera.VerticalFovDegrees);
-            Number(w, "nearClip", s.Camera.NearClip);
-            Number(w, "farClip", s.Camera.FarClip);
+            JsonNumbers.SettingNumber(w, "verticalFovDegrees", s.Camera.VerticalFovDegrees);
+            JsonNumbers.SettingNumber(w, "nearClip", s.Camera.NearClip);
+            JsonNumbers.SettingNumber(w, "farClip", s.Camera.FarClip);
             w.WritePropertyName("copyFromCamera"); w.WriteValue(s.Camera.CopyFromCamera ?? "");
             w.WriteEndObject();
             if (s.AutoDistance)
@@ -46,8 +46,8 @@ namespace NerfDatasetCreator
                 w.WritePropertyName("distance");
                 w.WriteValue("auto");
             }
-            else Number(w, "distance", s.Distance);
-            Number(w, "autoDistanceMargin", s.AutoDistanceMargin);
+            else JsonNumbers.SettingNumber(w, "distance", s.Distance);
+            JsonNumbers.SettingNumber(w, "autoDistanceMargin", s.AutoDistanceMargin);
             w.WritePropertyName("width"); w.WriteValue(s.Width);
             w.WritePropertyName("height"); w.WriteValue(s.Height);
             w.WritePropertyName("supersampling"); w.WriteValue(s.Supersampling);
@@ -59,48 +59,24 @@ namespace NerfDatasetCreator
             foreach (var name in TargetLoaderNames.NamesOf(s.Loaders)) w.WriteValue(name);
             w.WriteEndArray();
             w.WritePropertyName("normalisation"); w.WriteValue(NormalisationModes.IsDefined(s.Normalisation) ? NormalisationModes.Name(s.Normalisation) : ((int)s.Normalisation).ToString(System.Globalization.CultureInfo.InvariantCulture));
-            Number(w, "normalisedTargetRadius", s.NormalisedTargetRadius);
+            JsonNumbers.SettingNumber(w, "normalisedTargetRadius", s.NormalisedTargetRadius);
             w.WritePropertyName("pointCloudPoints"); w.WriteValue(s.PointCloudPoints);
             // Only when set, so object captures' configs keep their keys (0, the default, picks it from the volume boxes).
-            if (s.PointCloudRadius != 0) Number(w, "pointCloudRadius", s.PointCloudRadius);
+            if (s.PointCloudRadius != 0) JsonNumbers.SettingNumber(w, "pointCloudRadius", s.PointCloudRadius);
             // Only when turned off, so existing configs keep their keys.
             if (!s.Preflight)
             {
                 w.WritePropertyName("preflight");
                 w.WriteValue(false);
             }
-            if (!s.GeometryPack)
-            {
-                w.WritePropertyName("geometryPack");
-                w.WriteValue(false);
-            }
-            else if (s.GeometryPackEveryStep)
-            {
-                w.WritePropertyName("geometryPack");
-                w.WriteValue(GeometryPackSteps.EveryStepValue);
-            }
-            // Only with a lens, so pinhole configs keep their keys.
-            if (s.Lens != null && s.Lens.Enabled) LensSettingsJson.WriteObject(w, s.Lens);
-            if (s.Time != null && s.Time.Enabled)
-            {
-                w.WritePropertyName(TimeSettingsJson.Key);
-                TimeSettingsJson.WriteObject(w, s.Time);
-            }
-            if (s.Labels != null && s.Labels.Enabled)
-            {
-                w.WritePropertyName(LabelSettingsJson.Key);
-                LabelSettingsJson.WriteObject(w, s.Labels);
-            }
-            if (s.Exposure != null && s.Exposure.Enabled)
-            {
-                w.WritePropertyName(ExposureSettingsJson.Key);
-                ExposureSettingsJson.WriteObject(w, s.Exposure);
-            }
-            if (s.MotionBlur != null && s.MotionBlur.Enabled)
-            {
-                w.WritePropertyName(MotionBlurSettingsJson.Key);
-                MotionBlurSettingsJson.WriteObject(w, s.MotionBlur);
-            }
+            // The optional outputs (Core/Features/<Feature>/), one line each: a section is written only when its
+            // feature is on, so configs without it keep their keys (Documentation~/settings.md, "Optional outputs").
+            GeometryPackSettingsJson.Write(w, s);
+            LensSettingsJson.Write(w, s.Lens);
+            TimeSettingsJson.Write(w, s.Time);
+            LabelSettingsJson.Write(w, s.Labels);
+            ExposureSettingsJson.Write(w, s.Exposure);
+            MotionBlurSettingsJson.Write(w, s.MotionBlur);
             w.WritePropertyName("splits");
             w.WriteStartObject();
             foreach (var split in DatasetSplits.All)
@@ -127,7 +103,7 @@ namespace NerfDatasetCreator
                     w.WritePropertyName(name);
                     w.WriteValue(f.UpperHemisphereOnly);
                 }
-                else Number(w, name, FormationParameter(f, name));
+                else JsonNumbers.SettingNumber(w, name, FormationParameter(f, name));
             }
             w.WriteEndObject();
             w.WritePropertyName("depth"); w.WriteValue(ExtraOutputs.Name(split.Depth));
@@ -135,15 +111,6 @@ namespace NerfDatasetCreator
             w.WritePropertyName("mask"); w.WriteValue(split.Mask);
             if (split.Source != null && !split.Source.IsFormation) CameraSourceJson.Write(w, split.Source);
             w.WriteEndObject();
-        }
-
-        static void Number(JsonWriter w, string name, double value)
-        {
-            w.WritePropertyName(name);
-            // A config may hold NaN while being edited; it is written as a string so the file stays JSON and
-            // validation (not the writer) reports it.
-            if (double.IsNaN(value) || double.IsInfinity(value)) w.WriteValue(value.ToString(System.Globalization.CultureInfo.InvariantCulture));
-            else JsonNumbers.Write(w, value);
         }
 
         static string OverwriteName(OverwritePolicy policy) => policy == OverwritePolicy.Replace ? "replace" : "never";
@@ -297,21 +264,7 @@ namespace NerfDatasetCreator
                 ["pointCloudPoints"] = (t, p) => s.PointCloudPoints = reader.Int(t, p),
                 ["pointCloudRadius"] = (t, p) => s.PointCloudRadius = reader.Double(t, p),
                 ["preflight"] = (t, p) => s.Preflight = reader.Bool(t, p),
-                ["geometryPack"] = (t, p) =>
-                {
-                    // true (the start time's mesh), false (none) or "everyStep" (a dynamic capture's mesh at every step).
-                    if (t.Type == JTokenType.String && (string)t == GeometryPackSteps.EveryStepValue)
-                    {
-                        s.GeometryPack = true;
-                        s.GeometryPackEveryStep = true;
-                        return;
-                    }
-                    if (t.Type != JTokenType.Boolean)
-                        throw reader.Error(t, p, "must be true, false or \"" + GeometryPackSteps.EveryStepValue + "\" (a dynamic capture's mesh at every time step), not " + Describe(t) + "." +
-                            (t.Type == JTokenType.String ? SpellingSuggestion.Sentence((string)t, new[] { GeometryPackSteps.EveryStepValue }) : ""));
-                    s.GeometryPack = reader.Bool(t, p);
-                    s.GeometryPackEveryStep = false;
-                },
+                [GeometryPackSettingsJson.Key] = (t, p) => GeometryPackSettingsJson.Read(reader, t, p, s),
                 [TimeSettingsJson.Key] = (t, p) => TimeSettingsJson.Read(reader, t, p, s.Time),
                 [LabelSettingsJson.Key] = (t, p) => LabelSettingsJson.Read(reader, t, p, s.Labels),
                 [LensSettings.Key] = (t, p) => LensSettingsJson.Read(reader, t, p, s.Lens),
@@ -362,7 +315,7 @@ namespace NerfDatasetCreator
         static int Line(JToken t) => t is IJsonLineInfo info && info.HasLineInfo() ? info.LineNumber : 0;
         static int Column(JToken t) => t is IJsonLineInfo info && info.HasLineInfo() ? info.LinePosition : 0;
 
-        static string Describe(JToken t)
+        internal static string Describe(JToken t)
         {
             switch (t.Type)
             {
@@ -418,6 +371,37 @@ namespace NerfDatasetCreator
                 }
             }
 
+            /// <summary>
+            /// Reads an optional output's section (Core/Features/&lt;Feature&gt;/): its own keys through
+            /// <paramref name="handlers"/>, plus the <c>"enabled": true|false</c> every feature section accepts
+            /// (Documentation~/settings.md, "Optional outputs"). Returns that value, or null when the section does not
+            /// give it — then the section's own keys decide, exactly as before the key existed.
+            /// </summary>
+            public bool? Feature(JToken token, string path, Dictionary<string, Action<JToken, string>> handlers)
+            {
+                bool? enabled = null;
+                var all = new Dictionary<string, Action<JToken, string>> { [EnabledKey] = (t, p) => enabled = Bool(t, p) };
+                foreach (var handler in handlers) all.Add(handler.Key, handler.Value);
+                Object(token, path, all);
+                return enabled;
+            }
+
+            /// <summary>The on/off key of every feature section.</summary>
+            public const string EnabledKey = "enabled";
+
+            /// <summary>
+            /// Applies a section's <c>"enabled"</c> to a feature whose own keys also say on or off (lens <c>"model"</c>,
+            /// exposure and time <c>"mode"</c>): false turns it off whatever they say; true must agree with them, since
+            /// only they say which model or mode to use (<paramref name="offBecause"/> names the key that says off and
+            /// how to turn it on).
+            /// </summary>
+            public void Switch(JToken section, string path, bool? enabled, bool onByOwnKeys, Action turnOff, string offBecause)
+            {
+                if (enabled == false) turnOff();
+                else if (enabled == true && !onByOwnKeys)
+                    throw Error(section[EnabledKey], path + "." + EnabledKey, "is true, but " + offBecause + ", or set \"enabled\": false.");
+            }
+
             public void SchemaVersion(JToken t, string path)
             {
                 var version = Int(t, path);
@@ -461,6 +445,20 @@ namespace NerfDatasetCreator
             {
                 if (t.Type != JTokenType.Boolean) throw Error(t, path, "must be true or false, not " + Describe(t) + ".");
                 return (bool)t;
+            }
+
+            /// <summary>Parses a name to one of its values, or reports "must be one of …" with a spelling suggestion.</summary>
+            public delegate bool NameParser<T>(string name, out T value);
+
+            /// <summary>
+            /// One of a set of names (a mode, a rule, a source): <paramref name="tryParse"/>'s value, or "must be one of
+            /// <paramref name="nameList"/>." with the closest of <paramref name="names"/> when one is near.
+            /// </summary>
+            public T Name<T>(JToken t, string path, NameParser<T> tryParse, string nameList, IEnumerable<string> names)
+            {
+                if (!tryParse(String(t, path), out var value))
+                    throw Error(t, path, "must be one of " + nameList + "." + SpellingSuggestion.Sentence((string)t, names));
+                return value;
             }
 
             public ExtraOutput Extra(JToken t, string path)

@@ -57,11 +57,7 @@ namespace NerfDatasetCreator
                     if (merged["frames"] == null) merged["frames"] = new JArray(frames.Where(f => f.Split == split).Select(f => f.Json.DeepClone()));
                     WriteJson(Path.Combine(staging, ShardMerger.TransformsFileName(split)), merged);
                 }
-                if (labels != null)
-                {
-                    FileOps.CopyFile(labels, Path.Combine(staging, DatasetLayout.LabelsFileName));
-                    LabelFiles.WritePreviews(staging);
-                }
+                MergeLabels.Write(labels, staging);
                 var config = shards.FirstOrDefault(s => s.Config != null);
                 if (config != null) WriteJson(Path.Combine(staging, ShardMerger.ConfigFileName), MergedConfig(config.Config, shards));
                 journal.State = OperationJournal.Committing;
@@ -102,10 +98,7 @@ namespace NerfDatasetCreator
             var cloud = shards.Select(s => (s.Config as JObject)?[PointCloudRecord.Key]).FirstOrDefault(r => r != null);
             if (cloud != null) merged[PointCloudRecord.Key] = cloud.DeepClone();
             else merged.Remove(PointCloudRecord.Key);
-            // Likewise the geometry pack (shard 0's, carried over unchanged by MergeGeometry).
-            var pack = (MergeGeometry.Owner(shards)?.Config as JObject)?[GeometryPackRecord.Key];
-            if (pack != null) merged[GeometryPackRecord.Key] = pack.DeepClone();
-            else merged.Remove(GeometryPackRecord.Key);
+            MergeGeometry.CarryRecord(merged, shards);
             var rendered = shards.Select(s => (s.Config as JObject)?["imagesRendered"]).ToList();
             if (rendered.All(r => r != null && r.Type == JTokenType.Boolean))
                 merged["imagesRendered"] = rendered.All(r => (bool)r);

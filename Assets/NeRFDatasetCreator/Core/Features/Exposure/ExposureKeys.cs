@@ -7,6 +7,18 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class ExposureKeys
     {
+        /// <summary>The view's exposure and white balance in a transforms frame, when <paramref name="exposure"/> modifies its split.</summary>
+        internal static void WriteFrame(TransformsFramesText frame, PlannedView v, ExposurePlan exposure)
+        {
+            if (exposure == null || !exposure.Applies(v.Split)) return;
+            var e = exposure.For(v.Split, v.Index);
+            frame.NumberKey(Ev, e.Ev);
+            frame.TripleKey(WhiteBalance, e.R, e.G, e.B);
+        }
+
+        /// <summary>The view's unmodified image's key, when it is written.</summary>
+        internal static void WriteFrameFiles(TransformsFramesText frame, PlannedView v) => frame.FileKey(v, DatasetFileKind.CleanColor, CleanPath);
+
         /// <summary>The view's exposure in stops (a number).</summary>
         public const string Ev = "exposure_ev";
 

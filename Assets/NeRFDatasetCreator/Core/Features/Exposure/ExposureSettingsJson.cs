@@ -14,6 +14,14 @@ namespace NerfDatasetCreator
     {
         public const string Key = "exposure";
 
+        /// <summary>The <c>"exposure"</c> section when exposure is on; nothing when it is off.</summary>
+        public static void Write(JsonWriter w, ExposureSettings e)
+        {
+            if (e == null || !e.Enabled) return;
+            w.WritePropertyName(Key);
+            WriteObject(w, e);
+        }
+
         public static void WriteObject(JsonWriter w, ExposureSettings e)
         {
             w.WriteStartObject();
@@ -30,10 +38,10 @@ namespace NerfDatasetCreator
                 foreach (var v in e.Values ?? new List<ViewExposure>())
                 {
                     w.WriteStartObject();
-                    Number(w, "ev", v.Ev);
+                    JsonNumbers.SettingNumber(w, "ev", v.Ev);
                     w.WritePropertyName("whiteBalance");
                     w.WriteStartArray();
-                    Value(w, v.R); Value(w, v.G); Value(w, v.B);
+                    JsonNumbers.SettingValue(w, v.R); JsonNumbers.SettingValue(w, v.G); JsonNumbers.SettingValue(w, v.B);
                     w.WriteEndArray();
                     w.WriteEndObject();
                 }
@@ -55,37 +63,18 @@ namespace NerfDatasetCreator
         {
             w.WritePropertyName(name);
             w.WriteStartArray();
-            Value(w, a);
-            Value(w, b);
+            JsonNumbers.SettingValue(w, a);
+            JsonNumbers.SettingValue(w, b);
             w.WriteEndArray();
-        }
-
-        static void Number(JsonWriter w, string name, double value)
-        {
-            w.WritePropertyName(name);
-            Value(w, value);
-        }
-
-        // As DatasetSettingsJson: NaN is written as a string so the file stays JSON and validation reports it.
-        static void Value(JsonWriter w, double value)
-        {
-            if (double.IsNaN(value) || double.IsInfinity(value)) w.WriteValue(value.ToString(System.Globalization.CultureInfo.InvariantCulture));
-            else JsonNumbers.Write(w, value);
         }
 
         internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, ExposureSettings e)
         {
-            // Giving the section turns it on; "mode": "off" turns it off again.
+            // Giving the section turns it on; "mode": "off" or "enabled": false turns it off again.
             if (e.Mode == ExposureMode.Off) e.Mode = ExposureMode.Random;
-            reader.Object(token, path, new Dictionary<string, Action<JToken, string>>
+            var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
-                ["mode"] = (v, p) =>
-                {
-                    if (!ExposureModes.TryParse(reader.String(v, p), out var mode))
-                        throw reader.Error(v, p, "must be one of " + ExposureModes.NameList() + "." +
-                            SpellingSuggestion.Sentence((string)v, ExposureModes.All.Select(ExposureModes.Name)));
-                    e.Mode = mode;
-                },
+                ["mode"] = (v, p) => e.Mode = reader.Name<ExposureMode>(v, p, ExposureModes.TryParse, ExposureModes.NameList(), ExposureModes.All.Select(ExposureModes.Name)),
                 ["splits"] = (v, p) =>
                 {
                     if (v.Type != JTokenType.Array) throw reader.Error(v, p, "must be a list of split names such as [\"train\"].");
@@ -131,6 +120,7 @@ namespace NerfDatasetCreator
                 },
                 ["writeClean"] = (v, p) => e.WriteClean = reader.Bool(v, p),
             });
+            reader.Switch(token, path, enabled, e.Enabled, () => e.Mode = ExposureMode.Off, "\"mode\" is \"off\"; give \"mode\": \"random\" or \"list\"");
         }
 
         static void ReadPair(DatasetSettingsJson.Reader reader, JToken v, string p, string what, out double min, out double max)

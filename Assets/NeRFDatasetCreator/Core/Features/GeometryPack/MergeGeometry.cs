@@ -19,6 +19,17 @@ namespace NerfDatasetCreator
         public static ShardFolder Owner(IEnumerable<ShardFolder> shards) =>
             shards.FirstOrDefault(s => (s.Config as JObject)?[GeometryPackRecord.Key] is JObject);
 
+        /// <summary>
+        /// The merged dataset_config.json's geometry record: the owner's (shard 0's, carried over unchanged with its
+        /// files), or none.
+        /// </summary>
+        public static void CarryRecord(JObject merged, IEnumerable<ShardFolder> shards)
+        {
+            var pack = (Owner(shards)?.Config as JObject)?[GeometryPackRecord.Key];
+            if (pack != null) merged[GeometryPackRecord.Key] = pack.DeepClone();
+            else merged.Remove(GeometryPackRecord.Key);
+        }
+
         /// <param name="add">Adds a transfer: source path, path relative to the merged dataset, owner's name.</param>
         /// <param name="claim">Marks a shard entry (the geometry folder) as handled, so it is not reported as an extra.</param>
         public static void Plan(List<ShardFolder> shards, Action<string, string, string> add, Action<string> claim,

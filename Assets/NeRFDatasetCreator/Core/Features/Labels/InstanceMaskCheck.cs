@@ -1,4 +1,6 @@
 using System.Collections.Generic;
+using System.IO;
+using System.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -37,6 +39,22 @@ namespace NerfDatasetCreator
         {
             _labels = labels;
             _labelsProblem = labelsProblem;
+        }
+
+        /// <summary>The check with the dataset's labels.json (read only when a frame names an instance map).</summary>
+        public static InstanceMaskCheck For(string root, IReadOnlyList<CheckView> views)
+        {
+            if (!views.Any(v => v.InstanceFile != null)) return new InstanceMaskCheck(null, null);
+            var path = Path.Combine(root, DatasetLayout.LabelsFileName);
+            if (!File.Exists(path)) return new InstanceMaskCheck(null, "is missing, but frames name instance maps.");
+            try
+            {
+                return new InstanceMaskCheck(LabelsJson.ReadFile(path), null);
+            }
+            catch (InvalidParameterException e)
+            {
+                return new InstanceMaskCheck(null, "cannot be read: " + e.Problems[0].Field + " " + e.Problems[0].Value + " " + e.Problems[0].Reason);
+            }
         }
 
         public string Name => CheckName;

@@ -6,6 +6,13 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class LabelFrameKeys
     {
+        /// <summary>The view's id-map keys in a transforms frame, for the maps it writes.</summary>
+        internal static void WriteFrameFiles(TransformsFramesText frame, PlannedView v)
+        {
+            frame.FileKey(v, DatasetFileKind.InstancePng, Instance);
+            frame.FileKey(v, DatasetFileKind.SemanticPng, Semantic);
+        }
+
         public const string Instance = "instance_path";
         public const string Semantic = "semantic_path";
     }

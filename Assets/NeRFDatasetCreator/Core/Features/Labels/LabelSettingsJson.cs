@@ -8,12 +8,20 @@ namespace NerfDatasetCreator
 {
     /// <summary>
     /// The config-file form of <see cref="LabelSettings"/>, the <c>"labels"</c> object of a settings file
-    /// (Documentation~/labels.md). Its presence turns labels on; written only when they are on, so other configs keep
+    /// (Documentation~/labels.md). Its presence turns labels on (<c>"enabled": false</c> off again); written only when they are on, so other configs keep
     /// their shape. <c>{"instances": "prefab", "classFrom": "tag", "classes": [{"match": "Car*", "class": "car"}], "otherClass": ""}</c>
     /// </summary>
     public static class LabelSettingsJson
     {
         public const string Key = "labels";
+
+        /// <summary>The <c>"labels"</c> section when labels are on; nothing when they are off.</summary>
+        public static void Write(JsonWriter w, LabelSettings labels)
+        {
+            if (labels == null || !labels.Enabled) return;
+            w.WritePropertyName(Key);
+            WriteObject(w, labels);
+        }
 
         public static void WriteObject(JsonWriter w, LabelSettings labels)
         {
@@ -36,23 +44,11 @@ namespace NerfDatasetCreator
 
         internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, LabelSettings labels)
         {
-            labels.Enabled = true;
-            reader.Object(token, path, new Dictionary<string, Action<JToken, string>>
+            // Giving the section turns labels on; "enabled": false turns them off again.
+            var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
-                ["instances"] = (v, p) =>
-                {
-                    if (!InstanceRules.TryParse(reader.String(v, p), out var rule))
-                        throw reader.Error(v, p, "must be one of " + InstanceRules.NameList() + "." +
-                            SpellingSuggestion.Sentence((string)v, InstanceRules.All.Select(InstanceRules.Name)));
-                    labels.Instances = rule;
-                },
-                ["classFrom"] = (v, p) =>
-                {
-                    if (!ClassSources.TryParse(reader.String(v, p), out var source))
-                        throw reader.Error(v, p, "must be one of " + ClassSources.NameList() + "." +
-                            SpellingSuggestion.Sentence((string)v, ClassSources.All.Select(ClassSources.Name)));
-                    labels.ClassFrom = source;
-                },
+                ["instances"] = (v, p) => labels.Instances = reader.Name<InstanceRule>(v, p, InstanceRules.TryParse, InstanceRules.NameList(), InstanceRules.All.Select(InstanceRules.Name)),
+                ["classFrom"] = (v, p) => labels.ClassFrom = reader.Name<ClassSource>(v, p, ClassSources.TryParse, ClassSources.NameList(), ClassSources.All.Select(ClassSources.Name)),
                 ["classes"] = (v, p) =>
                 {
                     if (v.Type != JTokenType.Array)
@@ -74,6 +70,7 @@ namespace NerfDatasetCreator
                 },
                 ["otherClass"] = (v, p) => labels.OtherClass = reader.String(v, p),
             });
+            labels.Enabled = enabled ?? true;
         }
     }
 }

@@ -12,6 +12,14 @@ namespace NerfDatasetCreator
     /// </summary>
     static class MergeLabels
     {
+        /// <summary>Copies the shards' common labels.json (<see cref="Check"/>'s; never moved) into the merged dataset with new previews of its whole splits; nothing for null.</summary>
+        public static void Write(string labels, string staging)
+        {
+            if (labels == null) return;
+            FileOps.CopyFile(labels, Path.Combine(staging, DatasetLayout.LabelsFileName));
+            LabelFiles.WritePreviews(staging);
+        }
+
         /// <summary>The labels.json to carry over (the first shard's), or null when no shard has one; disagreements are problems.</summary>
         public static string Check(List<ShardFolder> shards, List<ValidationProblem> problems)
         {

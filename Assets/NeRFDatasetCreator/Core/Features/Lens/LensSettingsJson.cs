@@ -13,33 +13,37 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class LensSettingsJson
     {
+        /// <summary>The <c>"lens"</c> section with a lens; nothing for a pinhole capture, whose configs keep their keys.</summary>
+        public static void Write(JsonWriter w, LensSettings lens)
+        {
+            if (lens != null && lens.Enabled) WriteObject(w, lens);
+        }
+
         public static void WriteObject(JsonWriter w, LensSettings lens)
         {
             w.WritePropertyName(LensSettings.Key);
             w.WriteStartObject();
             w.WritePropertyName("model"); w.WriteValue(lens.Model ?? LensSettings.ModelNames.None);
             var fisheye = LensSettings.ModelNames.TryParse(lens.Model, out var model) && model == LensModel.OpenCvFisheye;
-            Number(w, "k1", lens.K1, true);
-            Number(w, "k2", lens.K2, true);
-            Number(w, "p1", lens.P1, !fisheye);
-            Number(w, "p2", lens.P2, !fisheye);
-            Number(w, "k3", lens.K3, true);
-            Number(w, "k4", lens.K4, fisheye);
+            Coefficient(w, "k1", lens.K1, true);
+            Coefficient(w, "k2", lens.K2, true);
+            Coefficient(w, "p1", lens.P1, !fisheye);
+            Coefficient(w, "p2", lens.P2, !fisheye);
+            Coefficient(w, "k3", lens.K3, true);
+            Coefficient(w, "k4", lens.K4, fisheye);
             w.WriteEndObject();
         }
 
-        static void Number(JsonWriter w, string name, double value, bool always)
+        // The model's own coefficients always; another only when non-zero, so validation still sees it after a round trip.
+        static void Coefficient(JsonWriter w, string name, double value, bool always)
         {
-            if (!always && value == 0) return;
-            w.WritePropertyName(name);
-            // As DatasetSettingsJson: NaN is written as a string so the file stays JSON and validation reports it.
-            if (double.IsNaN(value) || double.IsInfinity(value)) w.WriteValue(value.ToString(System.Globalization.CultureInfo.InvariantCulture));
-            else JsonNumbers.Write(w, value);
+            if (always || value != 0) JsonNumbers.SettingNumber(w, name, value);
         }
 
         internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, LensSettings lens)
         {
-            reader.Object(token, path, new Dictionary<string, Action<JToken, string>>
+            // "model" says none (off) or which lens; "enabled": false makes the capture pinhole whatever the model.
+            var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
                 ["model"] = (v, p) =>
                 {
@@ -56,6 +60,8 @@ namespace NerfDatasetCreator
                 ["p1"] = (v, p) => lens.P1 = reader.Double(v, p),
                 ["p2"] = (v, p) => lens.P2 = reader.Double(v, p),
             });
+            reader.Switch(token, path, enabled, lens.Enabled, () => lens.Model = LensSettings.ModelNames.None,
+                "\"model\" is \"none\" (or missing); give \"model\": \"opencv\" or \"opencv_fisheye\"");
         }
     }
 }

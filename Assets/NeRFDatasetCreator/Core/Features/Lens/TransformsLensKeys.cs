@@ -12,6 +12,9 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class TransformsLensKeys
     {
+        /// <summary>The keys of <paramref name="settings"/>' lens; none for a pinhole capture or without settings.</summary>
+        public static void Write(JsonWriter w, DatasetSettings settings) => Write(w, settings?.Lens?.ToDistortion());
+
         public static void Write(JsonWriter w, LensDistortion lens)
         {
             if (lens == null) return;
@@ -19,17 +22,17 @@ namespace NerfDatasetCreator
             if (lens.Model == LensModel.OpenCvFisheye)
             {
                 w.WritePropertyName("is_fisheye"); w.WriteValue(true);
-                Number(w, "k1", lens.K1); Number(w, "k2", lens.K2); Number(w, "k3", lens.K3); Number(w, "k4", lens.K4);
+                JsonNumbers.Number(w, "k1", lens.K1);
+                JsonNumbers.Number(w, "k2", lens.K2);
+                JsonNumbers.Number(w, "k3", lens.K3);
+                JsonNumbers.Number(w, "k4", lens.K4);
                 return;
             }
-            Number(w, "k1", lens.K1); Number(w, "k2", lens.K2); Number(w, "p1", lens.P1); Number(w, "p2", lens.P2);
-            if (lens.K3 != 0) Number(w, "k3", lens.K3);
-        }
-
-        static void Number(JsonWriter w, string name, double value)
-        {
-            w.WritePropertyName(name);
-            JsonNumbers.Write(w, value);
+            JsonNumbers.Number(w, "k1", lens.K1);
+            JsonNumbers.Number(w, "k2", lens.K2);
+            JsonNumbers.Number(w, "p1", lens.P1);
+            JsonNumbers.Number(w, "p2", lens.P2);
+            if (lens.K3 != 0) JsonNumbers.Number(w, "k3", lens.K3);
         }
     }
 }

@@ -45,6 +45,13 @@ namespace NerfDatasetCreator
 
         static bool Blurred(ExportScene scene) => scene.Frames.Any(f => f.ShutterStart != null || f.ShutterEnd != null);
 
+        /// <summary>The converter's warnings for <paramref name="target"/>: <see cref="Warning"/>'s, if any.</summary>
+        public static IEnumerable<ValidationProblem> Warnings(ExportScene scene, ExportTarget target)
+        {
+            var warning = Warning(scene, target);
+            if (warning != null) yield return warning;
+        }
+
         /// <summary>The warning for a target that cannot hold the blur, or null.</summary>
         public static ValidationProblem Warning(ExportScene scene, ExportTarget target)
         {

@@ -10,6 +10,37 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class MotionBlurKeys
     {
+        /// <summary>
+        /// The view's shutter keys in a transforms frame — instant-ngp's transform_matrix_start / _end
+        /// (src/nerf_loader.cu reads them per frame), and the content times — for a view with motion.
+        /// </summary>
+        internal static void WriteFrame(TransformsFramesText frame, PlannedView v)
+        {
+            var motion = v.Motion;
+            if (motion == null) return;
+            Matrix(frame, Start, motion.StartMatrix, v);
+            Matrix(frame, End, motion.EndMatrix, v);
+            if (motion.OpenSeconds.HasValue && motion.CloseSeconds.HasValue)
+            {
+                frame.NumberKey(OpenSeconds, motion.OpenSeconds.Value);
+                frame.NumberKey(CloseSeconds, motion.CloseSeconds.Value);
+            }
+        }
+
+        /// <summary>The view's sharp image's key, when it is written.</summary>
+        internal static void WriteFrameFiles(TransformsFramesText frame, PlannedView v) => frame.FileKey(v, DatasetFileKind.SharpPng, SharpPath);
+
+        static void Matrix(TransformsFramesText frame, string name, Matrix4x4d m, PlannedView v)
+        {
+            if (!m.IsFinite)
+                throw new InvalidParameterException(new[]
+                {
+                    new ValidationProblem(DatasetSplits.Name(v.Split) + "[" + v.Index + "]." + name, m.ToString(),
+                        "is not finite; JSON cannot hold it.", "Check the motion blur settings that moved this camera."),
+                });
+            frame.MatrixKey(name, m);
+        }
+
         public const string Start = "transform_matrix_start";
         public const string End = "transform_matrix_end";
         public const string OpenSeconds = "shutter_open_seconds";

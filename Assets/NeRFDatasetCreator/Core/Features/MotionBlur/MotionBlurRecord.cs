@@ -9,6 +9,12 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class MotionBlurRecord
     {
+        /// <summary>The keys when <paramref name="settings"/> blur the views (<see cref="ShutterPlanning.IsOn"/>); none otherwise.</summary>
+        public static void WriteTopLevel(JsonWriter w, DatasetSettings settings)
+        {
+            if (ShutterPlanning.IsOn(settings)) WriteTopLevel(w, settings.MotionBlur);
+        }
+
         public static void WriteTopLevel(JsonWriter w, MotionBlurSettings m)
         {
             w.WritePropertyName(MotionBlurKeys.RollingShutter);
@@ -18,9 +24,9 @@ namespace NerfDatasetCreator
             w.WritePropertyName(MotionBlurKeys.Record);
             w.WriteStartObject();
             w.WritePropertyName("camera"); w.WriteValue(MotionBlurSettings.CameraName(m.Camera));
-            w.WritePropertyName("shutter"); JsonNumbers.Write(w, m.Shutter);
+            JsonNumbers.Number(w, "shutter", m.Shutter);
             w.WritePropertyName("sub_frames"); w.WriteValue(m.SubFrames);
-            w.WritePropertyName("readout"); JsonNumbers.Write(w, m.Readout);
+            JsonNumbers.Number(w, "readout", m.Readout);
             w.WritePropertyName("meaning");
             w.WriteValue("file_path is the average in linear light of sub_frames renders at t = (k + 0.5) / sub_frames between transform_matrix_start (t = 0) and " +
                          "transform_matrix_end (t = 1), rotation slerped and position linear; the row at v = (row + 0.5) / h (top = 0) sees t in " +

@@ -10,46 +10,40 @@ namespace NerfDatasetCreator
     {
         public const string Key = "motionBlur";
 
+        /// <summary>The <c>"motionBlur"</c> section when blur is on; nothing when it is off.</summary>
+        public static void Write(JsonWriter w, MotionBlurSettings m)
+        {
+            if (m == null || !m.Enabled) return;
+            w.WritePropertyName(Key);
+            WriteObject(w, m);
+        }
+
         public static void WriteObject(JsonWriter w, MotionBlurSettings m)
         {
             w.WriteStartObject();
             w.WritePropertyName("enabled"); w.WriteValue(m.Enabled);
             w.WritePropertyName("camera"); w.WriteValue(MotionBlurSettings.CameraName(m.Camera));
-            Number(w, "shutter", m.Shutter);
+            JsonNumbers.SettingNumber(w, "shutter", m.Shutter);
             w.WritePropertyName("subFrames"); w.WriteValue(m.SubFrames);
-            Number(w, "shakeDistance", m.ShakeDistance);
-            Number(w, "shakeDegrees", m.ShakeDegrees);
-            Number(w, "readout", m.Readout);
+            JsonNumbers.SettingNumber(w, "shakeDistance", m.ShakeDistance);
+            JsonNumbers.SettingNumber(w, "shakeDegrees", m.ShakeDegrees);
+            JsonNumbers.SettingNumber(w, "readout", m.Readout);
             w.WriteEndObject();
-        }
-
-        static void Number(JsonWriter w, string name, double value)
-        {
-            w.WritePropertyName(name);
-            if (double.IsNaN(value) || double.IsInfinity(value)) w.WriteValue(value.ToString(System.Globalization.CultureInfo.InvariantCulture));
-            else JsonNumbers.Write(w, value);
         }
 
         internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, MotionBlurSettings m)
         {
             // A section without "enabled" is on: writing the section is asking for blur.
-            m.Enabled = true;
-            reader.Object(token, path, new Dictionary<string, Action<JToken, string>>
+            var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
-                ["enabled"] = (v, p) => m.Enabled = reader.Bool(v, p),
-                ["camera"] = (v, p) =>
-                {
-                    if (!MotionBlurSettings.TryParseCamera(reader.String(v, p), out var motion))
-                        throw reader.Error(v, p, "must be one of " + MotionBlurSettings.CameraNameList() + "." +
-                            SpellingSuggestion.Sentence((string)v, new[] { "path", "shake", "still" }));
-                    m.Camera = motion;
-                },
+                ["camera"] = (v, p) => m.Camera = reader.Name<ShutterCameraMotion>(v, p, MotionBlurSettings.TryParseCamera, MotionBlurSettings.CameraNameList(), new[] { "path", "shake", "still" }),
                 ["shutter"] = (v, p) => m.Shutter = reader.Double(v, p),
                 ["subFrames"] = (v, p) => m.SubFrames = reader.Int(v, p),
                 ["shakeDistance"] = (v, p) => m.ShakeDistance = reader.Double(v, p),
                 ["shakeDegrees"] = (v, p) => m.ShakeDegrees = reader.Double(v, p),
                 ["readout"] = (v, p) => m.Readout = reader.Double(v, p),
             });
+            m.Enabled = enabled ?? true;
         }
     }
 }

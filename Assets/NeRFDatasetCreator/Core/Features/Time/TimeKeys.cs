@@ -9,6 +9,18 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class TimeKeys
     {
+        /// <summary>A dynamic view's time keys in a transforms frame; nothing for a static view.</summary>
+        internal static void WriteFrame(TransformsFramesText frame, PlannedView v)
+        {
+            if (!v.Time.HasValue) return;
+            var time = v.Time.Value;
+            frame.NumberKey(Time, time.Normalised);
+            frame.NumberKey(Seconds, time.Seconds);
+            if (time.Camera < 0) return;
+            frame.IntegerKey(Step, time.Step);
+            frame.IntegerKey(Camera, time.Camera);
+        }
+
         public const string Time = "time";
         public const string Seconds = "time_seconds";
         public const string Step = "time_step";

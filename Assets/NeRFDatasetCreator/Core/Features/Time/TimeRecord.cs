@@ -18,8 +18,8 @@ namespace NerfDatasetCreator
             w.WriteStartArray();
             foreach (var name in TimeSourceNames.NamesOf(range.Sources)) w.WriteValue(name);
             w.WriteEndArray();
-            w.WritePropertyName("startSeconds"); JsonNumbers.Write(w, range.StartSeconds);
-            w.WritePropertyName("endSeconds"); JsonNumbers.Write(w, range.EndSeconds);
+            JsonNumbers.Number(w, "startSeconds", range.StartSeconds);
+            JsonNumbers.Number(w, "endSeconds", range.EndSeconds);
             w.WritePropertyName("endFrom"); w.WriteValue(requested.EndAtClipLength ? "clip" : "settings");
             w.WritePropertyName("steps"); w.WriteValue(range.Steps);
             w.WritePropertyName("fps");

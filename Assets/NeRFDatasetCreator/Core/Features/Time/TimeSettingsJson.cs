@@ -14,6 +14,14 @@ namespace NerfDatasetCreator
     {
         public const string Key = "time";
 
+        /// <summary>The <c>"time"</c> section of a dynamic capture; nothing for a static one.</summary>
+        public static void Write(JsonWriter w, TimeSettings t)
+        {
+            if (t == null || !t.Enabled) return;
+            w.WritePropertyName(Key);
+            WriteObject(w, t);
+        }
+
         public static void WriteObject(JsonWriter w, TimeSettings t)
         {
             w.WriteStartObject();
@@ -22,37 +30,24 @@ namespace NerfDatasetCreator
             w.WriteStartArray();
             foreach (var name in TimeSourceNames.NamesOf(t.Sources)) w.WriteValue(name);
             w.WriteEndArray();
-            Number(w, "start", t.StartSeconds);
+            JsonNumbers.SettingNumber(w, "start", t.StartSeconds);
             if (t.EndAtClipLength)
             {
                 w.WritePropertyName("end");
                 w.WriteValue("clip");
             }
-            else Number(w, "end", t.EndSeconds);
+            else JsonNumbers.SettingNumber(w, "end", t.EndSeconds);
             w.WritePropertyName("steps"); w.WriteValue(t.Steps);
-            Number(w, "fps", t.Fps);
+            JsonNumbers.SettingNumber(w, "fps", t.Fps);
             w.WriteEndObject();
-        }
-
-        static void Number(JsonWriter w, string name, double value)
-        {
-            w.WritePropertyName(name);
-            // As DatasetSettingsJson: NaN is written as a string so the file stays JSON and validation reports it.
-            if (double.IsNaN(value) || double.IsInfinity(value)) w.WriteValue(value.ToString(System.Globalization.CultureInfo.InvariantCulture));
-            else JsonNumbers.Write(w, value);
         }
 
         internal static void Read(DatasetSettingsJson.Reader reader, JToken token, string path, TimeSettings t)
         {
-            reader.Object(token, path, new Dictionary<string, Action<JToken, string>>
+            // "mode" says static (off) or dynamic; "enabled": false makes the capture static whatever the mode.
+            var enabled = reader.Feature(token, path, new Dictionary<string, Action<JToken, string>>
             {
-                ["mode"] = (v, p) =>
-                {
-                    if (!TimeModes.TryParse(reader.String(v, p), out var mode))
-                        throw reader.Error(v, p, "must be one of " + TimeModes.NameList() + "." +
-                            SpellingSuggestion.Sentence((string)v, TimeModes.All.Select(TimeModes.Name)));
-                    t.Mode = mode;
-                },
+                ["mode"] = (v, p) => t.Mode = reader.Name<TimeMode>(v, p, TimeModes.TryParse, TimeModes.NameList(), TimeModes.All.Select(TimeModes.Name)),
                 ["sources"] = (v, p) =>
                 {
                     if (v.Type != JTokenType.Array) throw reader.Error(v, p, "must be a list such as [\"timeline\", \"animator\"].");
@@ -82,6 +77,7 @@ namespace NerfDatasetCreator
                 ["steps"] = (v, p) => t.Steps = reader.Int(v, p),
                 ["fps"] = (v, p) => t.Fps = reader.Double(v, p),
             });
+            reader.Switch(token, path, enabled, t.Enabled, () => t.Mode = TimeMode.Static, "\"mode\" is \"static\" (or missing); give \"mode\": \"monocular\" or \"multi-view\"");
         }
     }
 }

@@ -39,8 +39,7 @@ namespace NerfDatasetCreator
         /// alone: a plan's views of a split all write the files its settings name (<see cref="DatasetLayout.FileKinds"/>).</remarks>
         public static void Write(CapturePlan plan, DatasetSplit split, System.IO.TextWriter output) =>
             Write(plan.Intrinsics, plan.RotationOf(split), plan.ViewsOf(split), split,
-                ExtraOutputs.HasPng(plan.Settings.Split(split).Depth), plan.AabbScale, plan.Normalisation, output, scanViewsForDepth: false,
-                plan.Settings.Lens?.ToDistortion(), ExposurePlan.Of(plan.Settings), ShutterPlanning.IsOn(plan.Settings) ? plan.Settings.MotionBlur : null);
+                ExtraOutputs.HasPng(plan.Settings.Split(split).Depth), plan.AabbScale, plan.Normalisation, output, scanViewsForDepth: false, plan.Settings);
 
         /// <param name="aabbScale">instant-ngp's scene cube (<see cref="NerfDatasetCreator.AabbScale"/>); 1 for one object at nerf_synthetic's scale.</param>
         /// <param name="normalisation">Written as <c>scene_normalisation</c>, which every loader ignores; null writes none.</param>
@@ -55,9 +54,9 @@ namespace NerfDatasetCreator
         }
 
         // The views of split (all views when null) among views: a plan's split is written without a list of its own.
+        // settings (null: none) switch the optional outputs' keys on; each feature reads its own from them.
         static void Write(CameraIntrinsics intrinsics, double rotation, IReadOnlyList<PlannedView> views, DatasetSplit? split, bool declareDepthScale,
-            int aabbScale, SceneNormalisation normalisation, System.IO.TextWriter text, bool scanViewsForDepth, LensDistortion lens = null,
-            ExposurePlan exposure = null, MotionBlurSettings motionBlur = null)
+            int aabbScale, SceneNormalisation normalisation, System.IO.TextWriter text, bool scanViewsForDepth, DatasetSettings settings = null)
         {
             if (intrinsics == null) throw new ArgumentNullException(nameof(intrinsics));
             var anyDepthPng = declareDepthScale;
@@ -69,23 +68,23 @@ namespace NerfDatasetCreator
                 w.CloseOutput = false;
                 w.AutoCompleteOnClose = false;
                 w.WriteStartObject();
-                Number(w, "camera_angle_x", intrinsics.CameraAngleX);
-                Number(w, "camera_angle_y", intrinsics.CameraAngleY);
-                Number(w, "fl_x", intrinsics.FlX);
-                Number(w, "fl_y", intrinsics.FlY);
-                Number(w, "cx", intrinsics.Cx);
-                Number(w, "cy", intrinsics.Cy);
+                JsonNumbers.Number(w, "camera_angle_x", intrinsics.CameraAngleX);
+                JsonNumbers.Number(w, "camera_angle_y", intrinsics.CameraAngleY);
+                JsonNumbers.Number(w, "fl_x", intrinsics.FlX);
+                JsonNumbers.Number(w, "fl_y", intrinsics.FlY);
+                JsonNumbers.Number(w, "cx", intrinsics.Cx);
+                JsonNumbers.Number(w, "cy", intrinsics.Cy);
                 w.WritePropertyName("w"); w.WriteValue(intrinsics.Width);
                 w.WritePropertyName("h"); w.WriteValue(intrinsics.Height);
                 // The lens the images were taken through (none for a pinhole capture, whose files keep their keys).
-                TransformsLensKeys.Write(w, lens);
+                TransformsLensKeys.Write(w, settings);
                 w.WritePropertyName("aabb_scale"); w.WriteValue(aabbScale);
                 if (anyDepthPng)
                 {
-                    Number(w, "integer_depth_scale", DepthUnitScale);
-                    Number(w, "depth_unit_scale_factor", DepthUnitScale);
+                    JsonNumbers.Number(w, "integer_depth_scale", DepthUnitScale);
+                    JsonNumbers.Number(w, "depth_unit_scale_factor", DepthUnitScale);
                 }
-                if (motionBlur != null) MotionBlurRecord.WriteTopLevel(w, motionBlur);
+                MotionBlurRecord.WriteTopLevel(w, settings);
                 if (normalisation != null)
                 {
                     w.WritePropertyName(SceneNormalisationKey);
@@ -93,7 +92,7 @@ namespace NerfDatasetCreator
                 }
                 w.Flush();
             }
-            TransformsFramesText.Write(text, views, split, rotation, exposure);
+            TransformsFramesText.Write(text, views, split, rotation, settings);
             text.Write("\n");
         }
 
@@ -108,12 +107,6 @@ namespace NerfDatasetCreator
                 w.WriteEndArray();
             }
             w.WriteEndArray();
-        }
-
-        static void Number(JsonWriter w, string name, double value)
-        {
-            w.WritePropertyName(name);
-            JsonNumbers.Write(w, value);
         }
     }
 }

@@ -16,18 +16,23 @@ namespace NerfDatasetCreator
         readonly char[] _buffer = new char[FlushAt + 4096]; // room for one whole frame past the flush point
         readonly TextWriter _output;
         int _at;
-        ExposurePlan _exposure;
+        readonly ExposurePlan _exposure;
 
-        TransformsFramesText(TextWriter output) => _output = output;
+        TransformsFramesText(TextWriter output, DatasetSettings settings)
+        {
+            _output = output;
+            _exposure = ExposurePlan.Of(settings); // drawn once per file, read per frame
+        }
 
         /// <summary>
         /// Writes <c>,\n    "frames": [ … ]\n}</c> — the last member and the end of the file's object, whose earlier
         /// members Newtonsoft wrote — with the views of <paramref name="split"/> among <paramref name="views"/>.
         /// </summary>
+        /// <param name="settings">Switch the optional outputs' per-frame keys on (null: none).</param>
         public static void Write(TextWriter output, System.Collections.Generic.IReadOnlyList<PlannedView> views, DatasetSplit? split, double rotation,
-            ExposurePlan exposure = null)
+            DatasetSettings settings = null)
         {
-            var w = new TransformsFramesText(output) { _exposure = exposure };
+            var w = new TransformsFramesText(output, settings);
             w.Raw(",\n    \"frames\": [");
             var any = false;
             for (var i = 0; i < views.Count; i++)
@@ -81,102 +86,64 @@ namespace NerfDatasetCreator
             Number(rotation);
             Raw(FirstNumber);
             Rows(m);
-            if (v.Time.HasValue)
-            {
-                var time = v.Time.Value;
-                Key(TimeKeys.Time);
-                Number(time.Normalised);
-                Key(TimeKeys.Seconds);
-                Number(time.Seconds);
-                if (time.Camera >= 0)
-                {
-                    Key(TimeKeys.Step);
-                    Integer(time.Step);
-                    Key(TimeKeys.Camera);
-                    Integer(time.Camera);
-                }
-            }
-            if (_exposure != null && _exposure.Applies(v.Split))
-            {
-                var e = _exposure.For(v.Split, v.Index);
-                Key(ExposureKeys.Ev);
-                Number(e.Ev);
-                Key(ExposureKeys.WhiteBalance);
-                Raw("[\n                ");
-                Number(e.R);
-                Raw(",\n                ");
-                Number(e.G);
-                Raw(",\n                ");
-                Number(e.B);
-                Raw("\n            ]");
-            }
-            if (v.Motion != null) MotionKeys(v);
-            if (v.Writes(DatasetFileKind.DepthPng))
-            {
-                Key("depth_path");
-                FilePath(v.Split, v.Index, DatasetFileKind.DepthPng);
-                Key("depth_file_path");
-                FilePath(v.Split, v.Index, DatasetFileKind.DepthPng);
-            }
-            if (v.Writes(DatasetFileKind.NormalPng))
-            {
-                Key("normal_path");
-                FilePath(v.Split, v.Index, DatasetFileKind.NormalPng);
-            }
-            if (v.Writes(DatasetFileKind.MaskPng))
-            {
-                Key("mask_path");
-                FilePath(v.Split, v.Index, DatasetFileKind.MaskPng);
-            }
-            if (v.Writes(DatasetFileKind.InstancePng))
-            {
-                Key(LabelFrameKeys.Instance);
-                FilePath(v.Split, v.Index, DatasetFileKind.InstancePng);
-            }
-            if (v.Writes(DatasetFileKind.SemanticPng))
-            {
-                Key(LabelFrameKeys.Semantic);
-                FilePath(v.Split, v.Index, DatasetFileKind.SemanticPng);
-            }
-            if (v.Writes(DatasetFileKind.CleanColor))
-            {
-                Key(ExposureKeys.CleanPath);
-                FilePath(v.Split, v.Index, DatasetFileKind.CleanColor);
-            }
-            if (v.Writes(DatasetFileKind.SharpPng))
-            {
-                Key(MotionBlurKeys.SharpPath);
-                FilePath(v.Split, v.Index, DatasetFileKind.SharpPng);
-            }
+            // The optional outputs' keys (Core/Features/<Feature>/…Keys.cs), one line each, in the files' key order:
+            // values after the pose, file paths after the core outputs' paths.
+            TimeKeys.WriteFrame(this, v);
+            ExposureKeys.WriteFrame(this, v, _exposure);
+            MotionBlurKeys.WriteFrame(this, v);
+            FileKey(v, DatasetFileKind.DepthPng, "depth_path");
+            FileKey(v, DatasetFileKind.DepthPng, "depth_file_path");
+            FileKey(v, DatasetFileKind.NormalPng, "normal_path");
+            FileKey(v, DatasetFileKind.MaskPng, "mask_path");
+            LabelFrameKeys.WriteFrameFiles(this, v);
+            ExposureKeys.WriteFrameFiles(this, v);
+            MotionBlurKeys.WriteFrameFiles(this, v);
             Raw("\n        }");
         }
 
-        // instant-ngp's transform_matrix_start / _end (src/nerf_loader.cu reads them per frame), and the content times.
-        void MotionKeys(PlannedView v)
+        // The feature keys' writers (Core/Features/<Feature>/…Keys.cs) write through the members below.
+
+        /// <summary><c>"key": "./split/r_i_suffix"</c> when <paramref name="v"/> writes a file of <paramref name="kind"/>.</summary>
+        internal void FileKey(PlannedView v, DatasetFileKind kind, string key)
         {
-            var motion = v.Motion;
-            MatrixKey(MotionBlurKeys.Start, motion.StartMatrix, v);
-            MatrixKey(MotionBlurKeys.End, motion.EndMatrix, v);
-            if (motion.OpenSeconds.HasValue && motion.CloseSeconds.HasValue)
-            {
-                Key(MotionBlurKeys.OpenSeconds);
-                Number(motion.OpenSeconds.Value);
-                Key(MotionBlurKeys.CloseSeconds);
-                Number(motion.CloseSeconds.Value);
-            }
+            if (!v.Writes(kind)) return;
+            Key(key);
+            FilePath(v.Split, v.Index, kind);
         }
 
-        void MatrixKey(string name, Matrix4x4d m, PlannedView v)
+        /// <summary><c>"name": [[…], …]</c>, a 4×4 matrix as the rows <c>transform_matrix</c> is written in.</summary>
+        internal void MatrixKey(string name, Matrix4x4d m)
         {
-            if (!m.IsFinite)
-                throw new InvalidParameterException(new[]
-                {
-                    new ValidationProblem(DatasetSplits.Name(v.Split) + "[" + v.Index + "]." + name, m.ToString(),
-                        "is not finite; JSON cannot hold it.", "Check the motion blur settings that moved this camera."),
-                });
             Key(name);
             Raw("[\n                [\n                    ");
             Rows(m);
+        }
+
+        /// <summary><c>"name": [a, b, c]</c>, a list of three numbers on lines of their own, as Newtonsoft indents it.</summary>
+        internal void TripleKey(string name, double a, double b, double c)
+        {
+            Key(name);
+            Raw("[\n                ");
+            Number(a);
+            Raw(",\n                ");
+            Number(b);
+            Raw(",\n                ");
+            Number(c);
+            Raw("\n            ]");
+        }
+
+        /// <summary><c>"name": value</c>.</summary>
+        internal void NumberKey(string name, double value)
+        {
+            Key(name);
+            Number(value);
+        }
+
+        /// <summary><c>"name": value</c> for a whole number.</summary>
+        internal void IntegerKey(string name, int value)
+        {
+            Key(name);
+            Integer(value);
         }
 
         // A matrix's four rows after its opening bracket, and the closing brackets.

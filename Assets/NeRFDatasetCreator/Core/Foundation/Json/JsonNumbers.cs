@@ -23,6 +23,34 @@ namespace NerfDatasetCreator
 
         public static void Write(JsonWriter writer, double value) => writer.WriteRawValue(Format(value));
 
+        /// <summary>
+        /// <c>"name": value</c> through <see cref="Format"/>: the one way a dataset file's number key is written (throws
+        /// on NaN or infinity, which a dataset file cannot hold).
+        /// </summary>
+        public static void Number(JsonWriter writer, string name, double value)
+        {
+            writer.WritePropertyName(name);
+            Write(writer, value);
+        }
+
+        /// <summary>
+        /// A settings file's <c>"name": value</c>: as <see cref="Number"/>, but NaN and infinity are written as strings
+        /// ("NaN") — a config may hold one while being edited, the file stays JSON, and validation (not the writer)
+        /// reports it; the settings reader reads such a string back as the number.
+        /// </summary>
+        public static void SettingNumber(JsonWriter writer, string name, double value)
+        {
+            writer.WritePropertyName(name);
+            SettingValue(writer, value);
+        }
+
+        /// <summary>The value of <see cref="SettingNumber"/> alone (in a list such as <c>[r, g, b]</c>).</summary>
+        public static void SettingValue(JsonWriter writer, double value)
+        {
+            if (double.IsNaN(value) || double.IsInfinity(value)) writer.WriteValue(value.ToString(CultureInfo.InvariantCulture));
+            else Write(writer, value);
+        }
+
         /// <summary>A JSON tree (e.g. <see cref="SceneNormalisation.ToJson"/>) with every double through <see cref="Format"/>.</summary>
         public static void WriteToken(JsonWriter writer, Newtonsoft.Json.Linq.JToken token)
         {
