@@ -10,15 +10,47 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class CheckCommand
     {
-        public static int Run(ToolInvocation invocation, TextWriter stdout, TextWriter stderr)
+        public static readonly ToolCommand Command = ToolCommand.Of("check", "check <dir> [--split S] [--json FILE] [--max-views N]",
+            "decode the images and check that alpha, masks, depth, normals, poses and point cloud agree", Parse, Run);
+
+        public sealed class Options
         {
-            var folder = invocation.DatasetFolder;
+            public string DatasetFolder { get; set; }
+
+            /// <summary><c>--split train|val|test</c>: only that split; null for all.</summary>
+            public string Split { get; set; }
+
+            /// <summary><c>--json &lt;file&gt;</c>: where to write the whole report (a file that must not exist yet); null for none.</summary>
+            public string JsonReport { get; set; }
+
+            /// <summary><c>--max-views N</c>: at most N views per split, spread evenly; 0 for all.</summary>
+            public int MaxViews { get; set; }
+        }
+
+        static Options Parse(ToolArguments arguments)
+        {
+            arguments.RefuseUnknownOptions("split", "json", "max-views");
+            return new Options
+            {
+                DatasetFolder = arguments.OnePositional("check needs exactly one dataset folder."),
+                Split = arguments.Split(),
+                JsonReport = arguments.OptionalPath("json", "--json is empty; name the report file to write, e.g. --json report.json."),
+                MaxViews = arguments.WholeNumber("max-views", 1, max => "--max-views " + max + ": is not a whole number of at least 1.") ?? 0,
+            };
+        }
+
+        /// <summary>The command line of the Dataset Tools' Check button: <c>check &lt;dataset&gt;</c>.</summary>
+        public static string[] Arguments(string datasetFolder) => new[] { Command.Name, ToolArguments.Required(datasetFolder) };
+
+        public static int Run(Options options, TextWriter stdout, TextWriter stderr)
+        {
+            var folder = options.DatasetFolder;
             if (!Directory.Exists(folder))
             {
                 stderr.WriteLine("error: " + folder + " is not an existing folder. Pass the dataset folder that holds transforms_train.json.");
                 return ToolExitCodes.Failure;
             }
-            var json = invocation.JsonReport == null ? null : Path.GetFullPath(invocation.JsonReport);
+            var json = options.JsonReport == null ? null : Path.GetFullPath(options.JsonReport);
             if (json != null && (File.Exists(json) || Directory.Exists(json)))
             {
                 stderr.WriteLine("error: " + json + " already exists; check never replaces a file. Name a new file for --json, or move that one away.");
@@ -30,7 +62,7 @@ namespace NerfDatasetCreator
                 return ToolExitCodes.Failure;
             }
 
-            var report = DatasetCheck.Run(folder, new DatasetCheckOptions { Split = invocation.Split, MaxViews = invocation.MaxViews });
+            var report = DatasetCheck.Run(folder, new DatasetCheckOptions { Split = options.Split, MaxViews = options.MaxViews });
             stdout.WriteLine("check " + Path.GetFullPath(folder) + ": " + report.ViewsChecked + " views in " +
                              report.TotalSeconds.ToString("0.0", System.Globalization.CultureInfo.InvariantCulture) + " s (decoding " +
                              report.DecodeSeconds.ToString("0.0", System.Globalization.CultureInfo.InvariantCulture) + " s)");

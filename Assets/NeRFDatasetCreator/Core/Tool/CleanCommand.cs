@@ -10,6 +10,37 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class CleanCommand
     {
+        public static readonly ToolCommand Command = ToolCommand.Of("clean", "clean <dir> [--dry-run]",
+            "finish or roll back interrupted runs, remove their leftover folders", Parse, Run, DryRunFlag);
+
+        const string DryRunFlag = "dry-run";
+
+        public sealed class Options
+        {
+            /// <summary>The folder holding the datasets (e.g. NeRFDatasets), or a dataset.</summary>
+            public string Folder { get; set; }
+
+            /// <summary><c>--dry-run</c>: list the leftovers without changing anything.</summary>
+            public bool DryRun { get; set; }
+        }
+
+        static Options Parse(ToolArguments arguments)
+        {
+            arguments.RefuseUnknownOptions(DryRunFlag);
+            return new Options
+            {
+                Folder = arguments.OnePositional("clean needs exactly one folder: the one holding the datasets (e.g. NeRFDatasets) or a dataset."),
+                // Given at all: --dry-run=anything is a dry run too, as it always was (the safe reading).
+                DryRun = arguments.Has(DryRunFlag),
+            };
+        }
+
+        /// <summary>The command line of the Dataset Tools' Clean and dry-run buttons.</summary>
+        public static string[] Arguments(string folder, bool dryRun = false) =>
+            dryRun ? new[] { Command.Name, ToolArguments.Required(folder), "--" + DryRunFlag } : new[] { Command.Name, ToolArguments.Required(folder) };
+
+        public static int Run(Options options, TextWriter stdout, TextWriter stderr) => Run(options.Folder, options.DryRun, stdout, stderr);
+
         public static int Run(string folder, bool dryRun, TextWriter stdout, TextWriter stderr)
         {
             LeftoverCleaner.Result result;

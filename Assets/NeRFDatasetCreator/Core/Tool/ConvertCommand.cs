@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 
@@ -11,8 +12,99 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class ConvertCommand
     {
+        public static readonly ToolCommand Command = ToolCommand.Of("convert",
+            "convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping [--out <dir>] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>]",
+            "write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object)",
+            Parse, Run, "depths", "binary");
+
+        public sealed class Options
+        {
+            /// <summary>The Blender-format dataset to read.</summary>
+            public string DatasetFolder { get; set; }
+
+            /// <summary><c>--to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping</c>.</summary>
+            public ExportTarget? Target { get; set; }
+
+            /// <summary><c>--out &lt;dir&gt;</c>: where the export goes; null for the format's default place inside the dataset.</summary>
+            public string OutputFolder { get; set; }
+
+            /// <summary><c>--depths</c>: also write 3DGS's inverse-depth maps and depth_params.json (colmap).</summary>
+            public bool Depths { get; set; }
+
+            /// <summary><c>--binary</c>: cameras.bin, images.bin, points3D.bin instead of the text model.</summary>
+            public bool Binary { get; set; }
+
+            /// <summary><c>--points N</c>: the first N points of points3d.ply; null = all.</summary>
+            public int? ColmapPoints { get; set; }
+
+            /// <summary><c>--min-track N</c>: null = <see cref="ColmapOptions.DefaultMinTrackLength"/>.</summary>
+            public int? MinTrackLength { get; set; }
+
+            /// <summary>The COLMAP model options given, or null when none was.</summary>
+            public ColmapOptions ColmapModelOptions => Binary || ColmapPoints.HasValue || MinTrackLength.HasValue
+                ? new ColmapOptions(Binary, ColmapPoints, MinTrackLength ?? ColmapOptions.DefaultMinTrackLength)
+                : null;
+
+            /// <summary><c>--object &lt;name|id&gt;</c>: mask every frame to this labelled object (nerfstudio); null for none.</summary>
+            public string ObjectName { get; set; }
+        }
+
+        static Options Parse(ToolArguments arguments)
+        {
+            arguments.RefuseUnknownOptions("to", "out", "depths", "binary", "points", "min-track", "object");
+            var options = new Options();
+            ColmapModelOptions(arguments, options);
+            options.Depths = arguments.Flag("depths");
+            options.DatasetFolder = arguments.OnePositional("convert needs exactly one dataset folder.");
+            if (!arguments.TryGet("to", out var to)) arguments.Error("convert needs --to " + string.Join("|", ExportTargets.Names) + ".");
+            else
+            {
+                options.Target = ExportTargets.Parse(to, out var problem);
+                if (problem != null) arguments.Error(problem.ToString()); // ValidationProblem formats its numbers with the invariant culture
+                else if (options.Depths && options.Target != ExportTarget.Colmap)
+                    arguments.Error("--depths writes 3D Gaussian Splatting's inverse-depth maps, which read a COLMAP source: use it with --to colmap (nerfstudio and ngp exports carry depth on their own).");
+            }
+            if (arguments.TryGet("object", out var objectName))
+            {
+                if (string.IsNullOrWhiteSpace(objectName)) arguments.Error("--object is empty: give a labelled object's name, hierarchy path or instance id (labels.json).");
+                else if (options.Target.HasValue && options.Target != ExportTarget.Nerfstudio)
+                    arguments.Error("--object writes nerfstudio's per-frame mask_path: use it with --to nerfstudio (--to gaussian-grouping writes masks of every object).");
+                else options.ObjectName = objectName;
+            }
+            options.OutputFolder = arguments.OptionalPath("out", "--out is empty; leave it out to write into the dataset folder.");
+            return options;
+        }
+
+        /// <summary><c>--binary</c>, <c>--points N</c>, <c>--min-track N</c>: the COLMAP model's shape (<see cref="ColmapOptions"/>).</summary>
+        static void ColmapModelOptions(ToolArguments arguments, Options options)
+        {
+            var given = arguments.Has("binary") || arguments.Has("points") || arguments.Has("min-track");
+            options.Binary = arguments.Flag("binary");
+            options.ColmapPoints = arguments.WholeNumber("points", 1, points => "--points " + points + ": give how many points of points3d.ply the COLMAP model uses, a whole number of at least 1.");
+            options.MinTrackLength = arguments.WholeNumber("min-track", 0, minTrack => "--min-track " + minTrack + ": give the fewest images a COLMAP point must be seen in, a whole number (0 keeps every point; default " +
+                                                                               ColmapOptions.DefaultMinTrackLength + ").");
+            if (given && arguments.TryGet("to", out var to) && ExportTargets.Parse(to, out var problem) != ExportTarget.Colmap && problem == null)
+                arguments.Error("--binary, --points and --min-track shape the COLMAP model: use them with --to colmap.");
+        }
+
+        /// <summary>
+        /// The command line of the Dataset Tools' export buttons: <c>convert &lt;dataset&gt; --to &lt;target&gt; [--out &lt;folder&gt;] [--depths] [--object &lt;name&gt;]</c>;
+        /// an empty <paramref name="outputFolder"/> is the format's default place in the dataset.
+        /// </summary>
+        public static string[] Arguments(string datasetFolder, ExportTarget target, string outputFolder = null, bool depths = false, string objectName = null)
+        {
+            var args = new List<string> { Command.Name, ToolArguments.Required(datasetFolder), "--to", ExportTargets.Name(target) };
+            if (!string.IsNullOrWhiteSpace(outputFolder)) args.AddRange(new[] { "--out", outputFolder });
+            if (depths) args.Add("--depths");
+            if (!string.IsNullOrWhiteSpace(objectName)) args.AddRange(new[] { "--object", objectName.Trim() });
+            return args.ToArray();
+        }
+
         /// <summary>A folder with more written files than this is summarised as a count (COLMAP's image copies).</summary>
         const int FilesListedPerFolder = 5;
+
+        public static int Run(Options options, TextWriter stdout, TextWriter stderr) =>
+            Run(options.DatasetFolder, options.Target.Value, options.OutputFolder, stdout, stderr, options.Depths, options.ColmapModelOptions, options.ObjectName);
 
         public static int Run(string datasetFolder, ExportTarget target, string outputFolder, TextWriter stdout, TextWriter stderr, bool depths = false, ColmapOptions colmap = null,
             string objectName = null)

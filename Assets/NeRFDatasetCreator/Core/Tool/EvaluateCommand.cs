@@ -10,6 +10,60 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class EvaluateCommand
     {
+        public static readonly ToolCommand Command = ToolCommand.Of("evaluate",
+            "evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
+            "score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html", Parse, Run);
+
+        /// <summary><c>evaluate &lt;dataset&gt; --renders &lt;dir&gt; [options]</c> → <see cref="EvaluationOptions"/>.</summary>
+        static EvaluationOptions Parse(ToolArguments arguments)
+        {
+            arguments.RefuseUnknownOptions("renders", "split", "out", "layout", "background", "render-depth", "geometry", "gt-mesh", "threshold", "step");
+            var e = new EvaluationOptions();
+            e.DatasetFolder = arguments.OnePositional("evaluate needs exactly one dataset folder, e.g. evaluate NeRFDatasets/lego --renders output/lego.");
+            if (!arguments.TryGet("renders", out var renders) || string.IsNullOrWhiteSpace(renders))
+                arguments.Error("evaluate needs --renders <folder>: the trainer's renders of the split (3DGS model folder, ns-render dataset's --output-path, instant-ngp --screenshot_dir, or r_<i>.png files).");
+            e.RendersFolder = renders;
+            e.Split = arguments.Split() ?? e.Split;
+            e.OutFolder = arguments.OptionalPath("out", "--out is empty; leave it out to write into <renders>/evaluation-<split>.");
+            if (arguments.TryGet("layout", out var layout))
+            {
+                if (RenderLayouts.TryParse(layout, out var parsed)) e.Layout = parsed;
+                else arguments.Error("--layout = " + layout + ": is not " + string.Join(", ", RenderLayouts.Names) + ".");
+            }
+            if (arguments.TryGet("background", out var background))
+            {
+                if (Array.IndexOf(EvaluationBackground.Names, background) < 0) arguments.Error("--background = " + background + ": is not white, black or dataset.");
+                else e.Background = background;
+            }
+            if (arguments.TryGet("render-depth", out var depth))
+            {
+                if (depth == "ray") e.DepthAlongRay = true;
+                else if (depth != "z") arguments.Error("--render-depth = " + depth + ": is not z (z-depth, splatfacto) or ray (distance along the ray, nerfacto).");
+            }
+            arguments.TryGet("geometry", out var geometry);
+            e.GeometryPath = geometry;
+            if (arguments.TryGet("gt-mesh", out var mesh))
+            {
+                e.TruthMeshPath = mesh;
+                if (geometry == null) arguments.Error("--gt-mesh is the ground truth for --geometry; give --geometry <reconstruction> too.");
+            }
+            if (arguments.Has("threshold"))
+            {
+                e.Threshold = arguments.PositiveNumber("threshold", t => "--threshold = " + t + ": must be a distance > 0 in output units, e.g. 0.01.");
+                if (geometry == null) arguments.Error("--threshold is the F-score threshold of --geometry; give --geometry <reconstruction> too.");
+            }
+            if (arguments.Has("step"))
+            {
+                e.Step = arguments.WholeNumber("step", 0, k => "--step = " + k + ": must be a time step number ≥ 0 (the train views' time_step), e.g. --step 0.");
+                if (geometry == null) arguments.Error("--step picks the time step of --geometry; give --geometry <reconstruction> too.");
+            }
+            return e;
+        }
+
+        /// <summary>The command line of the Dataset Tools' Evaluate button: <c>evaluate &lt;dataset&gt; --renders &lt;folder&gt;</c> with the tool's defaults (test split, layout detected, white background).</summary>
+        public static string[] Arguments(string datasetFolder, string rendersFolder) =>
+            new[] { Command.Name, ToolArguments.Required(datasetFolder), "--renders", ToolArguments.Required(rendersFolder) };
+
         public static int Run(EvaluationOptions options, TextWriter stdout, TextWriter stderr)
         {
             EvaluationResult result;

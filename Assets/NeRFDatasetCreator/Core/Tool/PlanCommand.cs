@@ -10,6 +10,31 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class PlanCommand
     {
+        public static readonly ToolCommand Command = ToolCommand.Of("plan", "plan --config <settings.json> --out <dir>",
+            "the JSON files and a rig preview, no images", Parse, Run);
+
+        public sealed class Options
+        {
+            /// <summary><c>--config &lt;file&gt;</c>: the settings file.</summary>
+            public string ConfigPath { get; set; }
+
+            /// <summary><c>--out &lt;dir&gt;</c>: the dataset folder to create.</summary>
+            public string OutputFolder { get; set; }
+        }
+
+        static Options Parse(ToolArguments arguments)
+        {
+            arguments.RefuseUnknownOptions("config", "out");
+            if (arguments.Positionals.Count > 0) arguments.Error("plan takes no positional argument ('" + arguments.Positionals[0] + "').");
+            return new Options
+            {
+                ConfigPath = arguments.RequiredPath("config", "plan needs --config <settings.json>."),
+                OutputFolder = arguments.RequiredPath("out", "plan needs --out <dataset-folder>."),
+            };
+        }
+
+        public static int Run(Options options, TextWriter stdout, TextWriter stderr) => Run(options.ConfigPath, options.OutputFolder, stdout, stderr);
+
         public static int Run(string configPath, string outputFolder, TextWriter stdout, TextWriter stderr)
         {
             SettingsReadResult read;

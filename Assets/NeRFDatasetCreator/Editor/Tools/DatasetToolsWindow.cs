@@ -69,9 +69,9 @@ namespace NerfDatasetCreator.Editor
                 {
                     EditorGUILayout.BeginHorizontal();
                     if (GUILayout.Button(new GUIContent("Validate", "nerf-dataset validate: every problem a loader would trip on.")))
-                        Run("validate", DatasetToolArguments.Validate(datasetFolder));
+                        Run("validate", ValidateCommand.Arguments(datasetFolder));
                     if (GUILayout.Button(new GUIContent("Check", "nerf-dataset check: decodes the images and checks that alpha, masks, depth, normals, poses and point cloud agree (Documentation~/check.md).")))
-                        Run("check", DatasetToolArguments.Check(datasetFolder));
+                        Run("check", CheckCommand.Arguments(datasetFolder));
                     EditorGUILayout.EndHorizontal();
                     exportFolder = FolderField("Export into", exportFolder, "Empty: the format's default folder inside the dataset (nerfstudio/, colmap/, ngp/, dynamic3dgs/). Nothing is ever overwritten.", f => exportFolder = f);
                     DrawExportButtons(datasetFolder, exportFolder);
@@ -80,25 +80,25 @@ namespace NerfDatasetCreator.Editor
                     objectName = EditorGUILayout.TextField(new GUIContent("One object", "A labelled object's name, hierarchy path or instance id (labels.json)."), objectName);
                     using (new EditorGUI.DisabledScope(string.IsNullOrWhiteSpace(objectName)))
                         if (GUILayout.Button(new GUIContent("nerfstudio masks", "transforms.json whose mask_path keeps only this object, so nerfstudio trains it alone."), GUILayout.Width(130)))
-                            Run("export of " + objectName, DatasetToolArguments.Convert(datasetFolder, ExportTarget.Nerfstudio, exportFolder, objectName: objectName));
+                            Run("export of " + objectName, ConvertCommand.Arguments(datasetFolder, ExportTarget.Nerfstudio, exportFolder, objectName: objectName));
                     EditorGUILayout.EndHorizontal();
                     rendersFolder = FolderField("Trained renders", rendersFolder, "A trainer's renders of the test split: a 3DGS model folder, ns-render dataset output, instant-ngp screenshots or r_<i>.png files (Documentation~/evaluate.md).", f => rendersFolder = f);
                     using (new EditorGUI.DisabledScope(string.IsNullOrWhiteSpace(rendersFolder)))
                         if (GUILayout.Button(new GUIContent("Evaluate renders", "nerf-dataset evaluate: PSNR, SSIM, masked PSNR, depth and normal errors; writes metrics.json, error maps and report.html beside the renders.")))
-                            Run("evaluate", DatasetToolArguments.Evaluate(datasetFolder, rendersFolder));
+                            Run("evaluate", EvaluateCommand.Arguments(datasetFolder, rendersFolder));
                 }
 
                 EditorGUILayout.Space();
                 EditorGUILayout.LabelField("Merge the shards of a batch capture", EditorStyles.boldLabel);
                 shardsFolder = FolderField("Shards folder", shardsFolder, "The folder holding the shard folders (each with its shard.json).", f => shardsFolder = f);
-                var shards = DatasetToolArguments.ShardFoldersIn(shardsFolder);
+                var shards = MergeCommand.ShardFoldersIn(shardsFolder);
                 if (!string.IsNullOrWhiteSpace(shardsFolder))
                     EditorGUILayout.LabelField(" ", shards.Count == 0 ? "No shard folder (with shard.json) inside." : shards.Count + " shard folders: " + string.Join(", ", shards.Select(Path.GetFileName)), EditorStyles.wordWrappedMiniLabel);
                 mergedFolder = FolderField("Merged dataset", mergedFolder, "A folder that does not exist yet.", f => mergedFolder = f);
                 moveFiles = EditorGUILayout.Toggle(new GUIContent("Move the images", "Move instead of copy: no extra disk space, and the shards are emptied."), moveFiles);
                 using (new EditorGUI.DisabledScope(shards.Count == 0 || string.IsNullOrWhiteSpace(mergedFolder)))
                     if (GUILayout.Button("Merge"))
-                        Run("merge", DatasetToolArguments.Merge(mergedFolder, shards, moveFiles));
+                        Run("merge", MergeCommand.Arguments(mergedFolder, shards, moveFiles));
 
                 EditorGUILayout.Space();
                 EditorGUILayout.LabelField("Leftovers of interrupted runs", EditorStyles.boldLabel);
@@ -106,8 +106,8 @@ namespace NerfDatasetCreator.Editor
                 using (new EditorGUI.DisabledScope(string.IsNullOrWhiteSpace(cleanFolder)))
                 {
                     EditorGUILayout.BeginHorizontal();
-                    if (GUILayout.Button("List them (dry run)")) Run("clean --dry-run", DatasetToolArguments.Clean(cleanFolder, dryRun: true));
-                    if (GUILayout.Button("Clean")) Run("clean", DatasetToolArguments.Clean(cleanFolder));
+                    if (GUILayout.Button("List them (dry run)")) Run("clean --dry-run", CleanCommand.Arguments(cleanFolder, dryRun: true));
+                    if (GUILayout.Button("Clean")) Run("clean", CleanCommand.Arguments(cleanFolder));
                     EditorGUILayout.EndHorizontal();
                 }
             }
@@ -129,7 +129,7 @@ namespace NerfDatasetCreator.Editor
                 }
                 var export = Exports[i];
                 if (GUILayout.Button(new GUIContent(export.Label, export.Tooltip)))
-                    Run("export for " + export.Label, DatasetToolArguments.Convert(folder, export.Target, outputFolder, export.Depths));
+                    Run("export for " + export.Label, ConvertCommand.Arguments(folder, export.Target, outputFolder, export.Depths));
             }
             EditorGUILayout.EndHorizontal();
         }

@@ -23,7 +23,7 @@ namespace NerfDatasetCreator.Editor
                 if (GUILayout.Button(new GUIContent("Validate", "nerf-dataset validate on the dataset just written.")))
                 {
                     var folder = result.DatasetFolder;
-                    EditorApplication.delayCall += () => DatasetToolRunner.Start("validate", DatasetToolArguments.Validate(folder));
+                    EditorApplication.delayCall += () => DatasetToolRunner.Start("validate", ValidateCommand.Arguments(folder));
                 }
                 if (GUILayout.Button(new GUIContent("More tools…", "Window ▸ NeRF Dataset Tools on this dataset: another export folder, merge, clean.")))
                 {

@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using System.Text;
 
 namespace NerfDatasetCreator
 {
@@ -33,7 +32,8 @@ namespace NerfDatasetCreator
         {
             using (var file = File.OpenRead(path))
             {
-                var header = ReadHeader(file);
+                // The header is compared as text with the one PlyWriter writes, so it is read no further than a header can be long.
+                var header = PlyHeader.Read(file, maxBytes: MaxHeaderBytes).Text;
                 var count = ParseCount(header, path);
                 var expected = WithoutComments(PlyWriter.Header(count));
                 if (WithoutComments(header) != expected)
@@ -45,33 +45,20 @@ namespace NerfDatasetCreator
                     throw Problem(path, "is truncated: its header declares " + count + " points (" + ((long)count * VertexBytes) + " bytes), but only " +
                                         available + " bytes follow the header.");
                 var points = new List<CloudPoint>(count);
-                using (var reader = new BinaryReader(file, Encoding.ASCII, leaveOpen: true))
+                var values = new PlyValueReader(file, "binary_little_endian", reason => Problem(path, reason));
+                const PlyScalar f = PlyScalar.Float32, u = PlyScalar.UInt8;
+                for (var i = 0; i < count; i++)
                 {
-                    for (var i = 0; i < count; i++)
-                    {
-                        var p = new Vector3d(reader.ReadSingle(), reader.ReadSingle(), reader.ReadSingle());
-                        var n = new Vector3d(reader.ReadSingle(), reader.ReadSingle(), reader.ReadSingle());
-                        points.Add(new CloudPoint(p, n, reader.ReadByte(), reader.ReadByte(), reader.ReadByte()));
-                    }
+                    var p = new Vector3d(values.Read(f), values.Read(f), values.Read(f));
+                    var n = new Vector3d(values.Read(f), values.Read(f), values.Read(f));
+                    points.Add(new CloudPoint(p, n, (byte)values.Read(u), (byte)values.Read(u), (byte)values.Read(u)));
                 }
                 return points;
             }
         }
 
-        static string ReadHeader(Stream stream)
-        {
-            var header = new StringBuilder();
-            const string end = "end_header\n";
-            while (header.Length < 4096)
-            {
-                var b = stream.ReadByte();
-                if (b < 0) break;
-                header.Append((char)b);
-                if (header.Length >= end.Length && header.ToString(header.Length - end.Length, end.Length) == end)
-                    return header.ToString();
-            }
-            return header.ToString();
-        }
+        /// <summary>Longer than any header <see cref="PlyWriter"/> or 3DGS's storePly writes.</summary>
+        const int MaxHeaderBytes = 4096;
 
         /// <summary>The header without its <c>comment</c> lines (3DGS's storePly writes none, ours one).</summary>
         static string WithoutComments(string header) =>

@@ -56,18 +56,11 @@ namespace NerfDatasetCreator
             catch (System.Exception e) when (e is IOException || e is System.UnauthorizedAccessException) { return null; } // no readable record: not ours
         }
 
+        /// <summary>Whether one of the header's first 16 lines is our signature comment (<see cref="PlyWriter.Signature"/>).</summary>
         static bool HasSignature(string path)
         {
-            using (var reader = new StreamReader(path, System.Text.Encoding.ASCII))
-            {
-                for (var i = 0; i < 16; i++)
-                {
-                    var line = reader.ReadLine();
-                    if (line == null || line == "end_header") return false;
-                    if (line == "comment " + PlyWriter.Signature) return true;
-                }
-            }
-            return false;
+            using (var file = File.OpenRead(path))
+                return PlyHeader.Read(file, maxLines: 16).Lines.Contains("comment " + PlyWriter.Signature);
         }
     }
 }

@@ -11,7 +11,7 @@ namespace NerfDatasetCreator
     /// <c>x y z nx ny nz</c> per vertex and <c>uchar int vertex_indices</c> per face, faces counter-clockwise seen from
     /// outside (the right-hand rule gives the outward normal, as MeshLab, Open3D and trimesh expect). The meshes are
     /// concatenated; one <c>comment object &lt;name&gt; &lt;first face&gt; &lt;faces&gt;</c> line per source mesh says which
-    /// faces came from which object. <see cref="GeometryFile.ReadPly"/> reads it back.
+    /// faces came from which object. <see cref="PlyMesh"/> reads it back (<see cref="GeometryFile.ReadPly"/>).
     /// </summary>
     public static class TargetMeshPly
     {

@@ -1,3 +1,4 @@
+using System.Linq;
 using NUnit.Framework;
 
 namespace NerfDatasetCreator.Tests
@@ -11,8 +12,9 @@ namespace NerfDatasetCreator.Tests
             var p = ToolCommandLine.Parse(new[] { "plan", "--config", "s.json", "--out", "out/lego" });
             Assert.That(p.Errors, Is.Empty);
             Assert.That(p.Command, Is.EqualTo("plan"));
-            Assert.That(p.ConfigPath, Is.EqualTo("s.json"));
-            Assert.That(p.OutputFolder, Is.EqualTo("out/lego"));
+            var options = (PlanCommand.Options)p.Options;
+            Assert.That(options.ConfigPath, Is.EqualTo("s.json"));
+            Assert.That(options.OutputFolder, Is.EqualTo("out/lego"));
         }
 
         [Test]
@@ -20,8 +22,9 @@ namespace NerfDatasetCreator.Tests
         {
             var p = ToolCommandLine.Parse(new[] { "plan", "--out=d", "--config=c.json" });
             Assert.That(p.Errors, Is.Empty);
-            Assert.That(p.ConfigPath, Is.EqualTo("c.json"));
-            Assert.That(p.OutputFolder, Is.EqualTo("d"));
+            var options = (PlanCommand.Options)p.Options;
+            Assert.That(options.ConfigPath, Is.EqualTo("c.json"));
+            Assert.That(options.OutputFolder, Is.EqualTo("d"));
         }
 
         [Test]
@@ -30,7 +33,7 @@ namespace NerfDatasetCreator.Tests
             var p = ToolCommandLine.Parse(new[] { "validate", "data/lego" });
             Assert.That(p.Errors, Is.Empty);
             Assert.That(p.Command, Is.EqualTo("validate"));
-            Assert.That(p.DatasetFolder, Is.EqualTo("data/lego"));
+            Assert.That(((ValidateCommand.Options)p.Options).DatasetFolder, Is.EqualTo("data/lego"));
         }
 
         [Test]
@@ -39,9 +42,10 @@ namespace NerfDatasetCreator.Tests
             var p = ToolCommandLine.Parse(new[] { "merge", "--out", "lego", "shards/shard-0", "shards/shard-1" });
             Assert.That(p.Errors, Is.Empty);
             Assert.That(p.Command, Is.EqualTo("merge"));
-            Assert.That(p.OutputFolder, Is.EqualTo("lego"));
-            Assert.That(p.ShardFolders, Is.EqualTo(new[] { "shards/shard-0", "shards/shard-1" }));
-            Assert.That(p.MoveFiles, Is.False);
+            var options = (MergeCommand.Options)p.Options;
+            Assert.That(options.OutputFolder, Is.EqualTo("lego"));
+            Assert.That(options.ShardFolders, Is.EqualTo(new[] { "shards/shard-0", "shards/shard-1" }));
+            Assert.That(options.MoveFiles, Is.False);
         }
 
         [TestCase("copy", false)]
@@ -50,8 +54,9 @@ namespace NerfDatasetCreator.Tests
         {
             var p = ToolCommandLine.Parse(new[] { "merge", "s0", "--files", files, "s1", "--out=lego" });
             Assert.That(p.Errors, Is.Empty);
-            Assert.That(p.MoveFiles, Is.EqualTo(move));
-            Assert.That(p.ShardFolders, Is.EqualTo(new[] { "s0", "s1" }), "shard folders may come before, between and after options");
+            var options = (MergeCommand.Options)p.Options;
+            Assert.That(options.MoveFiles, Is.EqualTo(move));
+            Assert.That(options.ShardFolders, Is.EqualTo(new[] { "s0", "s1" }), "shard folders may come before, between and after options");
         }
 
         [TestCase("nerfstudio", ExportTarget.Nerfstudio)]
@@ -62,9 +67,10 @@ namespace NerfDatasetCreator.Tests
             var p = ToolCommandLine.Parse(new[] { "convert", "data/lego", "--to", to });
             Assert.That(p.Errors, Is.Empty);
             Assert.That(p.Command, Is.EqualTo("convert"));
-            Assert.That(p.DatasetFolder, Is.EqualTo("data/lego"));
-            Assert.That(p.Target, Is.EqualTo(target));
-            Assert.That(p.OutputFolder, Is.Null, "the format's default place");
+            var options = (ConvertCommand.Options)p.Options;
+            Assert.That(options.DatasetFolder, Is.EqualTo("data/lego"));
+            Assert.That(options.Target, Is.EqualTo(target));
+            Assert.That(options.OutputFolder, Is.Null, "the format's default place");
         }
 
         [Test]
@@ -72,8 +78,9 @@ namespace NerfDatasetCreator.Tests
         {
             var p = ToolCommandLine.Parse(new[] { "convert", "--to=colmap", "--out", "exports/lego-colmap", "data/lego" });
             Assert.That(p.Errors, Is.Empty);
-            Assert.That(p.OutputFolder, Is.EqualTo("exports/lego-colmap"));
-            Assert.That(p.DatasetFolder, Is.EqualTo("data/lego"));
+            var options = (ConvertCommand.Options)p.Options;
+            Assert.That(options.OutputFolder, Is.EqualTo("exports/lego-colmap"));
+            Assert.That(options.DatasetFolder, Is.EqualTo("data/lego"));
         }
 
         [Test]
@@ -81,9 +88,10 @@ namespace NerfDatasetCreator.Tests
         {
             var p = ToolCommandLine.Parse(new[] { "convert", "data/lego", "--depths", "--to", "colmap" });
             Assert.That(p.Errors, Is.Empty);
-            Assert.That(p.Depths, Is.True);
-            Assert.That(p.DatasetFolder, Is.EqualTo("data/lego"), "--depths does not swallow the next argument");
-            Assert.That(ToolCommandLine.Parse(new[] { "convert", "data/lego", "--to", "colmap" }).Depths, Is.False);
+            var options = (ConvertCommand.Options)p.Options;
+            Assert.That(options.Depths, Is.True);
+            Assert.That(options.DatasetFolder, Is.EqualTo("data/lego"), "--depths does not swallow the next argument");
+            Assert.That(((ConvertCommand.Options)ToolCommandLine.Parse(new[] { "convert", "data/lego", "--to", "colmap" }).Options).Depths, Is.False);
         }
 
         [TestCase(new string[0], "no command")]
@@ -113,6 +121,68 @@ namespace NerfDatasetCreator.Tests
         {
             var p = ToolCommandLine.Parse(args);
             Assert.That(p.Errors, Has.Some.Contain(error));
+        }
+
+        /// <summary>The help text as released (0.x), word for word and space for space: the table's lines must add up to it.</summary>
+        const string ReleasedUsage =
+            "usage: nerf-dataset <command> [arguments]\n" +
+            "  plan --config <settings.json> --out <dir>               the JSON files and a rig preview, no images\n" +
+            "  validate <dir>                                          check a Blender-format dataset\n" +
+            "  merge --out <dir> [--files copy|move] <shard-dir>...    join the folders of a sharded capture\n" +
+            "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping [--out <dir>] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object)\n" +
+            "  clean <dir> [--dry-run]                                 finish or roll back interrupted runs, remove their leftover folders\n" +
+            "  check <dir> [--split S] [--json FILE] [--max-views N]   decode the images and check that alpha, masks, depth, normals, poses and point cloud agree\n" +
+            "  evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]  score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html\n" +
+            "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
+
+        [Test]
+        public void TheHelpTextIsBuiltFromTheCommandTableAsReleased()
+        {
+            Assert.That(ToolCommands.Usage, Is.EqualTo(ReleasedUsage));
+            Assert.That(ToolCommands.All.Select(c => c.Name), Is.EqualTo(new[] { "plan", "validate", "merge", "convert", "clean", "check", "evaluate" }));
+        }
+
+        [Test]
+        public void EveryCommandInTheTableIsFoundByItsNameAndParsesIntoItsOwnOptions()
+        {
+            foreach (var command in ToolCommands.All)
+            {
+                Assert.That(ToolCommands.Find(command.Name), Is.SameAs(command));
+                Assert.That(ToolCommandLine.Parse(new[] { command.Name }).Command, Is.EqualTo(command.Name));
+            }
+            Assert.That(ToolCommands.Find("Check"), Is.Null, "command names are case-sensitive");
+            Assert.That(ToolCommandLine.Parse(new[] { "check", "d" }).Options, Is.TypeOf<CheckCommand.Options>());
+            Assert.That(ToolCommandLine.Parse(new[] { "evaluate", "d", "--renders", "r" }).Options, Is.TypeOf<EvaluationOptions>());
+        }
+
+        /// <summary><c>--split</c> is read by one parser: the same names, the same refusal, in check and evaluate.</summary>
+        [TestCase("check", "training")]
+        [TestCase("check", "Train")]
+        [TestCase("evaluate", "TEST")]
+        [TestCase("evaluate", "all")]
+        public void SplitIsRefusedTheSameWayByEveryCommand(string command, string split)
+        {
+            var args = command == "evaluate" ? new[] { command, "d", "--renders", "r", "--split", split } : new[] { command, "d", "--split", split };
+            var p = ToolCommandLine.Parse(args);
+            Assert.That(p.Errors, Is.EqualTo(new[] { "--split = " + split + ": is not train, val or test." }));
+        }
+
+        [TestCase("train")]
+        [TestCase("val")]
+        [TestCase("test")]
+        public void SplitNamesAreReadTheSameWayByEveryCommand(string split)
+        {
+            Assert.That(((CheckCommand.Options)ToolCommandLine.Parse(new[] { "check", "d", "--split", split }).Options).Split, Is.EqualTo(split));
+            Assert.That(((EvaluationOptions)ToolCommandLine.Parse(new[] { "evaluate", "d", "--renders", "r", "--split", split }).Options).Split, Is.EqualTo(split));
+        }
+
+        [Test]
+        public void AFlagOfOneCommandIsNeverReadAsTakingAValueByAnother()
+        {
+            // --dry-run is clean's, --depths convert's: validate refuses them without swallowing the folder after them.
+            var p = ToolCommandLine.Parse(new[] { "validate", "--dry-run", "d" });
+            Assert.That(p.Errors, Is.EqualTo(new[] { "validate does not know the option --dry-run." }));
+            Assert.That(((ValidateCommand.Options)p.Options).DatasetFolder, Is.EqualTo("d"));
         }
 
         [TestCase("help")]

@@ -6,7 +6,7 @@ namespace NerfDatasetCreator.Tests
 {
     /// <summary>
     /// Unity's Dataset Tools run the tool's own command lines in-process (<see cref="ToolTranscript"/>), built by
-    /// <see cref="DatasetToolArguments"/>: the same parsing, commands, files and lines as <c>nerf-dataset</c>.
+    /// each command's <c>Arguments</c> (<see cref="ConvertCommand.Arguments"/> …): the same parsing, commands, files and lines as <c>nerf-dataset</c>.
     /// </summary>
     [TestFixture]
     public class ToolTranscriptTests
@@ -27,7 +27,7 @@ namespace NerfDatasetCreator.Tests
             {
                 var folder = temp.Combine("lego");
                 TestDatasets.FromPlan(folder, CapturePlan.Build(Small(), new PlanTarget(Vector3d.Zero, 0.5)));
-                var run = ToolTranscript.Run(DatasetToolArguments.Validate(folder));
+                var run = ToolTranscript.Run(ValidateCommand.Arguments(folder));
                 var stdout = new StringWriter { NewLine = "\n" };
                 var code = ToolCommands.Run(new[] { "validate", folder }, stdout, new StringWriter());
                 Assert.That(run.ExitCode, Is.EqualTo(code));
@@ -45,7 +45,7 @@ namespace NerfDatasetCreator.Tests
             {
                 var folder = temp.Combine("lego");
                 TestDatasets.FromPlan(folder, CapturePlan.Build(Small(), new PlanTarget(Vector3d.Zero, 0.5)));
-                var args = DatasetToolArguments.Convert(folder, ExportTarget.Colmap);
+                var args = ConvertCommand.Arguments(folder, ExportTarget.Colmap);
                 Assert.That(args, Is.EqualTo(new[] { "convert", folder, "--to", "colmap" }));
                 var run = ToolTranscript.Run(args);
                 Assert.That(run.ExitCode, Is.EqualTo(ToolExitCodes.Success), string.Join("\n", run.Lines));
@@ -66,21 +66,21 @@ namespace NerfDatasetCreator.Tests
         [Test]
         public void ButtonsBuildTheCommandLinesAUserWouldType()
         {
-            Assert.That(DatasetToolArguments.Check("d"), Is.EqualTo(new[] { "check", "d" }));
-            Assert.That(DatasetToolArguments.Evaluate("d", "r"), Is.EqualTo(new[] { "evaluate", "d", "--renders", "r" }));
-            Assert.That(DatasetToolArguments.Convert("d", ExportTarget.Colmap, null, depths: true), Is.EqualTo(new[] { "convert", "d", "--to", "colmap", "--depths" }));
-            Assert.That(DatasetToolArguments.Convert("d", ExportTarget.Ngp, "out"), Is.EqualTo(new[] { "convert", "d", "--to", "ngp", "--out", "out" }));
-            Assert.That(DatasetToolArguments.Convert("d", ExportTarget.Dynamic3dgs), Is.EqualTo(new[] { "convert", "d", "--to", "dynamic3dgs" }));
-            Assert.That(DatasetToolArguments.Convert("d", ExportTarget.GaussianGrouping), Is.EqualTo(new[] { "convert", "d", "--to", "gaussian-grouping" }));
-            Assert.That(DatasetToolArguments.Convert("d", ExportTarget.Nerfstudio, objectName: " Street/Car 3 "), Is.EqualTo(new[] { "convert", "d", "--to", "nerfstudio", "--object", "Street/Car 3" }));
-            Assert.That(DatasetToolArguments.Merge("m", new[] { "s0", "s1" }, moveFiles: true), Is.EqualTo(new[] { "merge", "--out", "m", "--files", "move", "s0", "s1" }));
-            Assert.That(DatasetToolArguments.Clean("NeRFDatasets", dryRun: true), Is.EqualTo(new[] { "clean", "NeRFDatasets", "--dry-run" }));
+            Assert.That(CheckCommand.Arguments("d"), Is.EqualTo(new[] { "check", "d" }));
+            Assert.That(EvaluateCommand.Arguments("d", "r"), Is.EqualTo(new[] { "evaluate", "d", "--renders", "r" }));
+            Assert.That(ConvertCommand.Arguments("d", ExportTarget.Colmap, null, depths: true), Is.EqualTo(new[] { "convert", "d", "--to", "colmap", "--depths" }));
+            Assert.That(ConvertCommand.Arguments("d", ExportTarget.Ngp, "out"), Is.EqualTo(new[] { "convert", "d", "--to", "ngp", "--out", "out" }));
+            Assert.That(ConvertCommand.Arguments("d", ExportTarget.Dynamic3dgs), Is.EqualTo(new[] { "convert", "d", "--to", "dynamic3dgs" }));
+            Assert.That(ConvertCommand.Arguments("d", ExportTarget.GaussianGrouping), Is.EqualTo(new[] { "convert", "d", "--to", "gaussian-grouping" }));
+            Assert.That(ConvertCommand.Arguments("d", ExportTarget.Nerfstudio, objectName: " Street/Car 3 "), Is.EqualTo(new[] { "convert", "d", "--to", "nerfstudio", "--object", "Street/Car 3" }));
+            Assert.That(MergeCommand.Arguments("m", new[] { "s0", "s1" }, moveFiles: true), Is.EqualTo(new[] { "merge", "--out", "m", "--files", "move", "s0", "s1" }));
+            Assert.That(CleanCommand.Arguments("NeRFDatasets", dryRun: true), Is.EqualTo(new[] { "clean", "NeRFDatasets", "--dry-run" }));
             // Every one parses without a usage error.
             foreach (var args in new[]
                      {
-                         DatasetToolArguments.Validate("d"), DatasetToolArguments.Convert("d", ExportTarget.Colmap, "o", true),
-                         DatasetToolArguments.Convert("d", ExportTarget.Nerfstudio, objectName: "Car"),
-                         DatasetToolArguments.Merge("m", new[] { "s0" }, true), DatasetToolArguments.Clean("c", true),
+                         ValidateCommand.Arguments("d"), ConvertCommand.Arguments("d", ExportTarget.Colmap, "o", true),
+                         ConvertCommand.Arguments("d", ExportTarget.Nerfstudio, objectName: "Car"),
+                         MergeCommand.Arguments("m", new[] { "s0" }, true), CleanCommand.Arguments("c", true),
                      })
                 Assert.That(ToolCommandLine.Parse(args).Errors, Is.Empty, string.Join(" ", args));
         }
@@ -101,8 +101,8 @@ namespace NerfDatasetCreator.Tests
                 foreach (var name in new[] { "shard-1", "shard-0", "notes" }) Directory.CreateDirectory(temp.Combine(name));
                 File.WriteAllText(temp.Combine("shard-1", ShardManifest.FileName), "{}");
                 File.WriteAllText(temp.Combine("shard-0", ShardManifest.FileName), "{}");
-                Assert.That(DatasetToolArguments.ShardFoldersIn(temp.Path), Is.EqualTo(new[] { temp.Combine("shard-0"), temp.Combine("shard-1") }));
-                Assert.That(DatasetToolArguments.ShardFoldersIn(temp.Combine("missing")), Is.Empty);
+                Assert.That(MergeCommand.ShardFoldersIn(temp.Path), Is.EqualTo(new[] { temp.Combine("shard-0"), temp.Combine("shard-1") }));
+                Assert.That(MergeCommand.ShardFoldersIn(temp.Combine("missing")), Is.Empty);
             }
         }
     }

@@ -51,13 +51,13 @@ namespace NerfDatasetCreator.Editor.Tests
         public IEnumerator ConvertInTheEditorPrintsTheToolsLinesAndLogsThem()
         {
             var folder = Planned();
-            var args = DatasetToolArguments.Convert(folder, ExportTarget.Colmap);
+            var args = ConvertCommand.Arguments(folder, ExportTarget.Colmap);
             var expected = ToolTranscript.Run(args); // refused: a plan has no images
             Assume.That(expected.ExitCode, Is.EqualTo(ToolExitCodes.Failure));
             LogAssert.Expect(LogType.Error, new Regex("^NeRF Dataset Creator: nerf-dataset convert .* --to colmap \\(exit 1\\)"));
 
             Assert.That(DatasetToolRunner.Start("export for COLMAP", args), Is.True);
-            Assert.That(DatasetToolRunner.Start("a second command", DatasetToolArguments.Validate(folder)), Is.False, "one command at a time");
+            Assert.That(DatasetToolRunner.Start("a second command", ValidateCommand.Arguments(folder)), Is.False, "one command at a time");
             yield return UntilDone();
 
             var last = DatasetToolRunner.Last;
@@ -72,7 +72,7 @@ namespace NerfDatasetCreator.Editor.Tests
         {
             Planned();
             LogAssert.Expect(LogType.Log, new Regex("^NeRF Dataset Creator: nerf-dataset clean .* --dry-run \\(exit 0\\)"));
-            Assert.That(DatasetToolRunner.Start("clean --dry-run", DatasetToolArguments.Clean(_root, dryRun: true)), Is.True);
+            Assert.That(DatasetToolRunner.Start("clean --dry-run", CleanCommand.Arguments(_root, dryRun: true)), Is.True);
             yield return UntilDone();
             Assert.That(DatasetToolRunner.Last.Succeeded, Is.True);
             Assert.That(DatasetToolRunner.Last.Output, Does.StartWith("nothing to clean in "));

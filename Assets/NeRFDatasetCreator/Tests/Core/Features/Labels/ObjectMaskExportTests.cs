@@ -129,10 +129,10 @@ namespace NerfDatasetCreator.Tests
         {
             var ok = ToolCommandLine.Parse(new[] { "convert", "d", "--to", "nerfstudio", "--object", "Car 2" });
             Assert.That(ok.Errors, Is.Empty);
-            Assert.That(ok.ObjectName, Is.EqualTo("Car 2"));
+            Assert.That(((ConvertCommand.Options)ok.Options).ObjectName, Is.EqualTo("Car 2"));
             var wrong = ToolCommandLine.Parse(new[] { "convert", "d", "--to", "colmap", "--object", "Car" });
             Assert.That(wrong.Errors.Single(), Does.Contain("--to nerfstudio"));
-            Assert.That(ToolCommandLine.Parse(new[] { "convert", "d", "--to", "gaussian-grouping" }).Target, Is.EqualTo(ExportTarget.GaussianGrouping));
+            Assert.That(((ConvertCommand.Options)ToolCommandLine.Parse(new[] { "convert", "d", "--to", "gaussian-grouping" }).Options).Target, Is.EqualTo(ExportTarget.GaussianGrouping));
         }
 
         [Test]

@@ -10,7 +10,7 @@ namespace NerfDatasetCreator.Tests
         {
             var run = ToolCommandLine.Parse(new[] { "convert", "ds", "--to", "colmap", "--binary", "--points", "5000", "--min-track", "3" });
             Assert.That(run.Errors, Is.Empty);
-            var options = run.ColmapModelOptions;
+            var options = ((ConvertCommand.Options)run.Options).ColmapModelOptions;
             Assert.That((options.Binary, options.MaxPoints, options.MinTrackLength), Is.EqualTo((true, (int?)5000, 3)));
         }
 
@@ -19,7 +19,7 @@ namespace NerfDatasetCreator.Tests
         {
             var run = ToolCommandLine.Parse(new[] { "convert", "ds", "--to", "colmap" });
             Assert.That(run.Errors, Is.Empty);
-            Assert.That(run.ColmapModelOptions, Is.Null);
+            Assert.That(((ConvertCommand.Options)run.Options).ColmapModelOptions, Is.Null);
             Assert.That(ColmapOptions.Default.MinTrackLength, Is.EqualTo(2));
             Assert.That(ColmapOptions.Default.Binary, Is.False);
         }
