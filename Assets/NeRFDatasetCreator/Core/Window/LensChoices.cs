@@ -50,11 +50,15 @@ namespace NerfDatasetCreator
 
         /// <summary>
         /// The coefficient fields to draw: the model's own, and any other that is not 0 (a config may give one), so that
-        /// the validator's "is not a coefficient of …" appears under a field where it can be set to 0.
+        /// the validator's "is not a coefficient of …" appears under a field where it can be set to 0. None for a
+        /// pinhole, even one a config gives coefficients: the settings file and the window's undo step hold no lens
+        /// without a model (DatasetSettingsJson writes "lens" only with one), so an edit there would be lost; the
+        /// validator's error under the model says to pick one, and choosing None again clears them (<see cref="ChangeModel"/>).
         /// </summary>
         public static IReadOnlyList<string> Shown(LensSettings lens)
         {
             if (lens == null) throw new ArgumentNullException(nameof(lens));
+            if (!lens.Enabled) return Array.Empty<string>();
             var own = Coefficients(lens.Model);
             var shown = new List<string>();
             foreach (var key in AllCoefficients)

@@ -241,7 +241,7 @@ namespace NerfDatasetCreator.Tests
                     Directory.CreateDirectory(Path.Combine(output, "test", "raw-depth"));
                     File.WriteAllBytes(Path.Combine(output, "test", "rgb", "r_" + i + ".png"), PngWriter.Encode(AnalyticSphereDataset.Render(views[i], W, H, 2), W, H, PngPixelFormat.Rgb8));
                     var rows = i == 2 ? H / 2 : H;
-                    GeometryFileTests.WriteNpyGz(Path.Combine(output, "test", "raw-depth", "r_" + i + ".npy.gz"), new[] { rows, W, 1 }, views[i].Depth.Take(rows * W).Select(d => d / 1000f).ToArray());
+                    NpyReaderTests.WriteNpyGz(Path.Combine(output, "test", "raw-depth", "r_" + i + ".npy.gz"), new[] { rows, W, 1 }, views[i].Depth.Take(rows * W).Select(d => d / 1000f).ToArray());
                 }
                 var options = Options(dataset, output);
                 options.Threads = 1;
@@ -249,7 +249,7 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(Directory.Exists(Path.Combine(output, "evaluation-test")), Is.False, "the error maps of views 0 and 1 are gone with the folder");
 
                 // With the array fixed the same folder evaluates, depth scored from the arrays.
-                GeometryFileTests.WriteNpyGz(Path.Combine(output, "test", "raw-depth", "r_2.npy.gz"), new[] { H, W, 1 }, views[2].Depth.Select(d => d / 1000f).ToArray());
+                NpyReaderTests.WriteNpyGz(Path.Combine(output, "test", "raw-depth", "r_2.npy.gz"), new[] { H, W, 1 }, views[2].Depth.Select(d => d / 1000f).ToArray());
                 var result = RenderEvaluator.Run(options);
                 Assert.That(result.Renders.Layout, Is.EqualTo(RenderLayout.Nerfstudio));
                 Assert.That(result.Views.Select(v => v.Depth.AbsRel), Is.All.LessThan(1e-9), "the arrays hold the ground truth's depth");

@@ -77,7 +77,7 @@ namespace NerfDatasetCreator.Tests
                     Png(Path.Combine(output, "test", "gt-rgb", name + ".png"));
                     Png(Path.Combine(output, "test", "depth", name + ".png"));
                     Directory.CreateDirectory(Path.Combine(output, "test", "raw-depth"));
-                    GeometryFileTests.WriteNpyGz(Path.Combine(output, "test", "raw-depth", name + ".npy.gz"), new[] { 3, 4, 1 }, new float[12]);
+                    NpyReaderTests.WriteNpyGz(Path.Combine(output, "test", "raw-depth", name + ".npy.gz"), new[] { 3, 4, 1 }, new float[12]);
                 }
                 var set = RenderFolder.Read(output, null, "test", Frames);
                 Assert.That(set.Layout, Is.EqualTo(RenderLayout.Nerfstudio));

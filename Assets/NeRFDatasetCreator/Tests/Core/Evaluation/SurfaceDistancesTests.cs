@@ -1,7 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
-using System.IO.Compression;
 using System.Linq;
 using System.Text;
 using NUnit.Framework;
@@ -89,7 +88,7 @@ namespace NerfDatasetCreator.Tests
         }
     }
 
-    /// <summary>The geometry pack's mesh PLY, the general PLY / OBJ reader and the NumPy reader.</summary>
+    /// <summary>The geometry pack's mesh PLY and the general PLY / OBJ reader (the NumPy reader: NpyReaderTests).</summary>
     public class GeometryFileTests
     {
         [Test]
@@ -180,40 +179,6 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(mesh.Triangles, Is.EqualTo(new[] { 0, 1, 2, 0, 2, 3, 0, 2, 3 }));
                 File.WriteAllText(path, "v 0 0 0\nf 1 2 3\n");
                 Assert.That(() => GeometryFile.Read(path), Throws.TypeOf<InvalidParameterException>().With.Message.Contains("not defined"));
-            }
-        }
-
-        [Test]
-        public void NpyReaderReadsNerfstudiosGzippedFloatArrays()
-        {
-            using (var temp = new TempFolder())
-            {
-                var path = temp.Combine("r_0.npy.gz");
-                WriteNpyGz(path, new[] { 2, 3, 1 }, new[] { 1f, 2f, 3f, 4f, 5.5f, -1f });
-                var array = NpyReader.ReadGz(path);
-                Assert.That(array.Shape, Is.EqualTo(new[] { 2, 3, 1 }));
-                Assert.That(array.Values, Is.EqualTo(new[] { 1f, 2f, 3f, 4f, 5.5f, -1f }));
-            }
-        }
-
-        /// <summary>np.save's v1.0 layout: magic, version, little-endian header length, a dict padded with spaces to a multiple of 64 ending in '\n'.</summary>
-        internal static void WriteNpyGz(string path, int[] shape, float[] values)
-        {
-            var dict = "{'descr': '<f4', 'fortran_order': False, 'shape': (" + string.Join(", ", shape) + (shape.Length == 1 ? "," : "") + "), }";
-            var total = 10 + dict.Length + 1;
-            var padded = dict + new string(' ', (64 - total % 64) % 64) + "\n";
-            using (var file = File.Create(path))
-            using (var gz = new GZipStream(file, CompressionMode.Compress))
-            {
-                var head = new List<byte> { 0x93 };
-                head.AddRange(Encoding.ASCII.GetBytes("NUMPY"));
-                head.Add(1);
-                head.Add(0);
-                head.Add((byte)(padded.Length & 0xff));
-                head.Add((byte)(padded.Length >> 8));
-                head.AddRange(Encoding.ASCII.GetBytes(padded));
-                gz.Write(head.ToArray(), 0, head.Count);
-                foreach (var v in values) gz.Write(BitConverter.GetBytes(v), 0, 4);
             }
         }
     }

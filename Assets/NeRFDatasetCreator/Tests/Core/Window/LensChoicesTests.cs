@@ -39,6 +39,20 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void APinholeWithCoefficientsShowsNoFieldsItsErrorIsUnderTheModel()
+        {
+            var settings = new DatasetSettings();
+            settings.Lens.K1 = -0.1; // a config's { "model": "none", "k1": -0.1 }
+            Assert.That(LensChoices.Shown(settings.Lens), Is.Empty);
+            Assert.That(LensSettingsValidator.Validate(settings).Select(p => p.Field), Is.EqualTo(new[] { LensChoices.Field("model") }));
+            // The way out in the window: a model (the coefficients appear), then None, which clears them.
+            LensChoices.ChangeModel(settings.Lens, "opencv");
+            Assert.That(LensChoices.Shown(settings.Lens), Has.Member("k1"));
+            LensChoices.ChangeModel(settings.Lens, "none");
+            Assert.That(LensSettingsValidator.Validate(settings), Is.Empty);
+        }
+
+        [Test]
         public void ChangingTheModelKeepsSharedCoefficientsAndClearsTheOthers()
         {
             var lens = new LensSettings { Model = "opencv", K1 = -0.12, K2 = 0.03, K3 = 0.001, P1 = 0.0005, P2 = -0.0003 };
