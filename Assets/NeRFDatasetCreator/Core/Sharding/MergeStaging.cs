@@ -91,22 +91,22 @@ namespace NerfDatasetCreator
 
         /// <summary>
         /// The first shard's config made to describe the whole dataset: <c>imagesRendered</c> (a boolean, see
-        /// <see cref="DatasetConfigWriter"/>) true only when every shard rendered its images, and the per-shard
+        /// <see cref="DatasetConfig.Write"/>) true only when every shard rendered its images, and the per-shard
         /// <c>statistics</c> dropped; the <c>pointCloud</c> record of the shard that wrote points3d.ply.
         /// </summary>
-        static JToken MergedConfig(JToken first, List<ShardFolder> shards)
+        static JObject MergedConfig(DatasetConfig first, List<ShardFolder> shards)
         {
-            if (!(first.DeepClone() is JObject merged)) return first.DeepClone();
+            var merged = (JObject)first.Json.DeepClone();
             merged.Remove("statistics");
             // Only shard 0 writes points3d.ply (merge carries that file over unchanged), so its record describes the merged dataset.
-            var cloud = shards.Select(s => (s.Config as JObject)?[PointCloudRecord.Key]).FirstOrDefault(r => r != null);
+            var cloud = shards.Select(s => s.Config?.Json[PointCloudRecord.Key]).FirstOrDefault(r => r != null);
             if (cloud != null) merged[PointCloudRecord.Key] = cloud.DeepClone();
             else merged.Remove(PointCloudRecord.Key);
             // Likewise the geometry pack (shard 0's, carried over unchanged by MergeGeometry).
-            var pack = (MergeGeometry.Owner(shards)?.Config as JObject)?[GeometryPackRecord.Key];
+            var pack = MergeGeometry.Owner(shards)?.Config.GeometryRecord;
             if (pack != null) merged[GeometryPackRecord.Key] = pack.DeepClone();
             else merged.Remove(GeometryPackRecord.Key);
-            var rendered = shards.Select(s => (s.Config as JObject)?["imagesRendered"]).ToList();
+            var rendered = shards.Select(s => s.Config?.Json["imagesRendered"]).ToList();
             if (rendered.All(r => r != null && r.Type == JTokenType.Boolean))
                 merged["imagesRendered"] = rendered.All(r => (bool)r);
             return merged;

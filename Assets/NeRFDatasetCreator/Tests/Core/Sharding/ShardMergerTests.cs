@@ -74,7 +74,7 @@ namespace NerfDatasetCreator.Tests
             Assert.That(File.ReadAllBytes(Path.Combine(output, "test", "r_3_depth.png")), Is.EqualTo(ShardFolders.ImageBytes("test-depth", 3)));
             var config = ShardFolders.ReadJson(Path.Combine(output, "dataset_config.json"));
             Assert.That((int)config["seed"], Is.EqualTo(42));
-            Assert.That(config["imagesRendered"].Type, Is.EqualTo(JTokenType.Boolean), "still the boolean DatasetConfigWriter writes, so validate and convert read it");
+            Assert.That(config["imagesRendered"].Type, Is.EqualTo(JTokenType.Boolean), "still the boolean DatasetConfig.Write writes, so validate and convert read it");
             Assert.That((bool)config["imagesRendered"], Is.True);
             Assert.That(config["statistics"], Is.Null, "per-shard timings describe no single run of the whole dataset");
             Assert.That(File.ReadAllText(Path.Combine(output, "dataset_config.json")), Does.Contain("\"createdUtc\": \"2026-01-01T10:00:00.000Z\""), "shard 0's date, verbatim");
