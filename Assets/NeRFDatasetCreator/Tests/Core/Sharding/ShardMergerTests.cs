@@ -179,6 +179,25 @@ namespace NerfDatasetCreator.Tests
             Assert.That(result.Problems[0].Reason, Does.Contain("which has 42"));
         }
 
+        [TestCase("[1, 2]", "(not an object)", "is not a JSON object.")]
+        [TestCase("{\"seed\": ", "(unreadable)", "is not valid JSON: Unexpected end")]
+        public void AConfigThatIsNoObjectIsAProblemNamingTheFile(string text, string value, string reason)
+        {
+            var shards = ShardFolders.Create(root, 2, Counts);
+            var path = Path.Combine(shards[1], "dataset_config.json");
+            File.WriteAllText(path, text);
+            var before = ShardFolders.Snapshot(root);
+
+            var result = ShardMerger.Merge(shards, output);
+
+            Assert.That(result.Succeeded, Is.False);
+            var problem = result.Problems.Single(p => p.Field == path);
+            Assert.That(problem.Value, Is.EqualTo(value));
+            Assert.That(problem.Reason, Does.StartWith(reason));
+            Assert.That(problem.Fix, Is.EqualTo("Recapture this shard."));
+            Assert.That(ShardFolders.Snapshot(root), Is.EqualTo(before), "a refused merge changes no file");
+        }
+
         [Test]
         public void ADifferentUnityVersionIsOnlyAWarning()
         {
