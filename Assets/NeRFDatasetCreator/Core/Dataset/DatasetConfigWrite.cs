@@ -88,5 +88,11 @@ namespace NerfDatasetCreator
                 return text.ToString() + "\n"; // the writer's text, formatted by CreateText's invariant culture
             }
         }
+
+        /// <summary>
+        /// The config as text again, indented and ending in a newline: how merge writes the merged dataset's config (the
+        /// first shard's, its strings verbatim, with the records that describe the whole dataset; see MergeStaging).
+        /// </summary>
+        public string ToText() => Json.ToString(Formatting.Indented) + "\n";
     }
 }

@@ -63,7 +63,7 @@ namespace NerfDatasetCreator
                     LabelFiles.WritePreviews(staging);
                 }
                 var config = shards.FirstOrDefault(s => s.Config != null);
-                if (config != null) WriteJson(Path.Combine(staging, ShardMerger.ConfigFileName), MergedConfig(config.Config, shards));
+                if (config != null) FileOps.WriteText(Path.Combine(staging, ShardMerger.ConfigFileName), new DatasetConfig(MergedConfig(config.Config, shards)).ToText());
                 journal.State = OperationJournal.Committing;
                 journal.Save(staging);
                 FileOps.MoveDirectory(staging, output);
