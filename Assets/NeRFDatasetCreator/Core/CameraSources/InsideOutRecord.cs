@@ -1,5 +1,3 @@
-using System.IO;
-using Newtonsoft.Json;
 using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
@@ -11,20 +9,13 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class InsideOutRecord
     {
-        public static bool Read(string datasetDirectory)
-        {
-            var path = Path.Combine(datasetDirectory, DatasetLayout.ConfigFileName);
-            if (!File.Exists(path)) return false;
-            try { return FromConfig(JObject.Parse(FileOps.ReadText(path))); }
-            catch (JsonException) { return false; } // DatasetTargetReach already warns about a broken config
-            catch (System.Exception e) when (e is IOException || e is System.UnauthorizedAccessException) { return false; } // … and an unreadable one
-        }
-
+        /// <summary>The record in a parsed dataset_config.json (<see cref="DatasetConfig.InsideOut"/>); null reads as false.</summary>
         public static bool FromConfig(JObject config)
         {
-            if (!(config?["settings"]?["splits"] is JObject splits)) return false;
+            // Objects all the way down: a list or a number where an object belongs reads as "not recorded", never a crash.
+            if (!((config?["settings"] as JObject)?["splits"] is JObject splits)) return false;
             foreach (var split in splits.Properties())
-                if (split.Value["source"]?["kind"] is JValue kind && kind.Type == JTokenType.String &&
+                if (((split.Value as JObject)?["source"] as JObject)?["kind"] is JValue kind && kind.Type == JTokenType.String &&
                     (string)kind == CameraSourceSettings.KindName(CameraSourceKind.Volume))
                     return true;
             return false;

@@ -4,7 +4,6 @@ using System.Diagnostics;
 using System.IO;
 using System.Linq;
 using System.Threading;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -45,17 +44,19 @@ namespace NerfDatasetCreator
                     "has no frames to check (is this a Blender-format dataset with transforms_*.json?)."));
 
             var dynamic = views.Any(v => v.Time != null);
+            var config = DatasetConfig.Read(root);
             var checks = new List<IViewCheck>
             {
-                new AlphaMaskCheck(OpaqueBackground(root)),
+                // A capture over a solid background (or the sky) has alpha 255 everywhere by design.
+                new AlphaMaskCheck(config.Config?.OpaqueBackground == true),
                 new DepthMaskCheck(),
                 new DepthNormalsCheck(),
-                PointCloud(root, dynamic),
+                PointCloud(root, config, dynamic),
                 new ColourGeometryCheck(),
                 InstanceMaskCheck.For(root, views),
                 new ExposureCheck(root),
                 new MotionBlurCheck(),
-                new GeometryPackDepthCheck(root, dynamic),
+                new GeometryPackDepthCheck(root, config, dynamic),
             };
             var multiView = new MultiViewGeometryCheck();
             var reprojection = new InstanceReprojectionCheck();
@@ -169,11 +170,11 @@ namespace NerfDatasetCreator
             return images;
         }
 
-        static IViewCheck PointCloud(string root, bool dynamic)
+        static IViewCheck PointCloud(string root, DatasetConfigFile config, bool dynamic)
         {
             if (!File.Exists(Path.Combine(root, PointCloudOwnership.FileName))) return new PointCloudMaskCheck(null, "the dataset has no " + PointCloudOwnership.FileName);
             var warnings = new List<ValidationProblem>();
-            if (!PointCloudOwnership.IsOwn(root, warnings))
+            if (!PointCloudOwnership.IsOwn(root, config, warnings))
                 return new PointCloudMaskCheck(null, PointCloudOwnership.FileName + " is not this plugin's (no matching record in " + DatasetLayout.ConfigFileName + "): a foreign cloud, e.g. 3DGS's random one, is not the target's surface");
             if (dynamic) return new PointCloudMaskCheck(null, "a dynamic dataset: the cloud is sampled once, and moving content leaves it");
             try
@@ -183,22 +184,6 @@ namespace NerfDatasetCreator
             catch (Exception e) when (e is InvalidDataException || e is IOException || e is InvalidParameterException)
             {
                 return new PointCloudMaskCheck(null, PointCloudOwnership.FileName + " cannot be read: " + e.Message);
-            }
-        }
-
-        /// <summary>True when dataset_config.json says the capture was over a solid background (alpha 255 everywhere by design).</summary>
-        static bool OpaqueBackground(string root)
-        {
-            var path = Path.Combine(root, DatasetLayout.ConfigFileName);
-            if (!File.Exists(path)) return false;
-            try
-            {
-                var background = JObject.Parse(File.ReadAllText(path))["settings"]?["background"];
-                return background?.Type == JTokenType.String && (string)background != "transparent";
-            }
-            catch (Exception e) when (e is Newtonsoft.Json.JsonException || e is IOException || e is UnauthorizedAccessException)
-            {
-                return false;
             }
         }
     }

@@ -15,7 +15,7 @@ namespace NerfDatasetCreator
                 var s = split;
                 session.WriteText(DatasetLayout.TransformsFileName(split), text => BlenderTransformsWriter.Write(plan, s, text));
             }
-            session.WriteText(DatasetLayout.ConfigFileName, DatasetConfigWriter.Write(plan, provenance, pointCloud, geometry));
+            session.WriteText(DatasetLayout.ConfigFileName, DatasetConfig.Write(plan, provenance, pointCloud, geometry));
         }
     }
 }

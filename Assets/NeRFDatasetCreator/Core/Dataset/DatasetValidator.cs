@@ -26,10 +26,11 @@ namespace NerfDatasetCreator
                 report.Problems.Add(new DatasetProblem(folder, -1, null, "the dataset folder does not exist."));
                 return report;
             }
-            var unreadableConfig = UnreadableConfig(folder);
-            if (unreadableConfig != null)
-                report.Problems.Add(new DatasetProblem(DatasetLayout.ConfigFileName, -1, null, "cannot be read: " + unreadableConfig + " (check the file's permissions)."));
-            var state = new ImageState { SkipFiles = IsPlanOnly(folder) };
+            // Read once; the checks below take it (a malformed config is not validate's concern, an unreadable one is).
+            var config = DatasetConfig.Read(folder);
+            if (config.State == DatasetConfigState.Unreadable)
+                report.Problems.Add(new DatasetProblem(DatasetLayout.ConfigFileName, -1, null, "cannot be read: " + config.Error + " (check the file's permissions)."));
+            var state = new ImageState { SkipFiles = config.IsPlanOnly };
             if (state.SkipFiles)
                 report.Warnings.Add(new DatasetProblem(DatasetLayout.ConfigFileName, -1, null,
                     "says the images were not rendered (a plan from `nerf-dataset plan`): image and extra-file checks are skipped."));
@@ -38,7 +39,7 @@ namespace NerfDatasetCreator
             // The object's size is not in a Blender-format dataset, so the check is for its centre at the origin
             // (where the loaders assume it): a camera nearer than NeRF's near 2 or beyond its far 6 cannot see it.
             var cameraCentres = new LoaderRangeCheck.Tally(0);
-            var timeRecord = TimeDatasetChecks.HasTimeRecord(folder);
+            var timeRecord = config.Config?.Time != null;
             var timeFramesBySplit = new Dictionary<DatasetSplit, IReadOnlyList<JObject>>();
             var labelMaps = false;
             foreach (var split in DatasetSplits.All)
@@ -130,9 +131,9 @@ namespace NerfDatasetCreator
                         "; instant-ngp needs it above 0 (0.001 for millimetre PNGs)."));
             }
             var cloudWarnings = new List<ValidationProblem>();
-            PointCloudOwnership.IsOwn(folder, cloudWarnings);
+            PointCloudOwnership.IsOwn(folder, config, cloudWarnings);
             foreach (var w in cloudWarnings) report.Warnings.Add(new DatasetProblem(w.Field, -1, null, w.Reason + " " + w.Fix));
-            GeometryPackChecks.Check(folder, state.SkipFiles, report);
+            GeometryPackChecks.Check(folder, config, state.SkipFiles, report);
             if (!state.SkipFiles)
             {
                 if (state.First != null && state.ColourImages > 0 && state.SixteenBitColour == state.ColourImages)
@@ -144,7 +145,7 @@ namespace NerfDatasetCreator
             foreach (var range in cameraCentres.Check())
                 report.Warnings.Add(new DatasetProblem("transforms_*.json", -1, null,
                     "(object size unknown here: the target is taken as a point at the origin) " + range));
-            TimeDatasetChecks.Check(folder, report, timeFramesBySplit);
+            TimeDatasetChecks.Check(config.Config, report, timeFramesBySplit);
             if (labelMaps && !state.SkipFiles) LabelsValidation.Check(folder, report);
             return report;
         }
@@ -158,39 +159,6 @@ namespace NerfDatasetCreator
                 case DatasetSplit.Train: return "all loaders";
                 case DatasetSplit.Val: return "bmild/nerf, nerf-pytorch and nerfstudio (its default evaluation split)";
                 default: return "bmild/nerf and nerf-pytorch";
-            }
-        }
-
-        /// <summary>True when dataset_config.json marks the folder as a plan without images (false when it cannot be read).</summary>
-        public static bool IsPlanOnly(string folder)
-        {
-            var path = Path.Combine(folder, DatasetLayout.ConfigFileName);
-            if (!File.Exists(path)) return false;
-            try
-            {
-                var config = Newtonsoft.Json.Linq.JObject.Parse(FileOps.ReadText(path));
-                var rendered = config["imagesRendered"];
-                return rendered != null && rendered.Type == Newtonsoft.Json.Linq.JTokenType.Boolean && !(bool)rendered;
-            }
-            catch (Exception e) when (e is Newtonsoft.Json.JsonException || e is IOException || e is UnauthorizedAccessException)
-            {
-                return false;
-            }
-        }
-
-        /// <summary>Why dataset_config.json cannot be read, or null (also when there is none).</summary>
-        static string UnreadableConfig(string folder)
-        {
-            var path = Path.Combine(folder, DatasetLayout.ConfigFileName);
-            if (!File.Exists(path)) return null;
-            try
-            {
-                FileOps.ReadText(path);
-                return null;
-            }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
-            {
-                return e.Message;
             }
         }
 

@@ -1,5 +1,4 @@
 using System;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -36,14 +35,14 @@ namespace NerfDatasetCreator
         public static EvaluationBackground Black => new EvaluationBackground("black", 0, 0, 0, true);
 
         /// <summary>The background named on the command line; for "dataset" the colour recorded in <paramref name="config"/>.</summary>
-        public static EvaluationBackground Parse(string name, JObject config)
+        public static EvaluationBackground Parse(string name, DatasetConfig config)
         {
             switch ((name ?? "white").ToLowerInvariant())
             {
                 case "white": return White;
                 case "black": return Black;
                 case "dataset":
-                    var text = config?["settings"]?["background"]?.Type == JTokenType.String ? (string)config["settings"]["background"] : null;
+                    var text = config?.BackgroundText;
                     var settings = BackgroundSettings.Parse(text);
                     if (settings != null && !settings.Transparent && !settings.Sky)
                         return new EvaluationBackground("dataset (" + text + ")", settings.R, settings.G, settings.B, true);

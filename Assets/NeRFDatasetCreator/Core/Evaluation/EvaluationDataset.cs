@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using Newtonsoft.Json;
 using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
@@ -43,8 +42,8 @@ namespace NerfDatasetCreator
         /// <summary>Output units per depth-PNG step (<c>integer_depth_scale</c>, 0.001 by default).</summary>
         public double DepthScale { get; private set; }
 
-        /// <summary>The parsed <c>dataset_config.json</c>, or null.</summary>
-        public JObject Config { get; private set; }
+        /// <summary>The dataset's <c>dataset_config.json</c>, or null when it has none or it is not JSON.</summary>
+        public DatasetConfig Config { get; private set; }
 
         public bool HasDepth => Frames.Count > 0 && Frames.All(f => f.DepthPath != null);
         public bool HasNormals => Frames.Count > 0 && Frames.All(f => f.NormalPath != null);
@@ -95,12 +94,8 @@ namespace NerfDatasetCreator
                 });
             }
             result.Frames = frames;
-            var configPath = Path.Combine(root, DatasetLayout.ConfigFileName);
-            if (File.Exists(configPath))
-            {
-                try { result.Config = JObject.Parse(FileOps.ReadText(configPath)); }
-                catch (JsonException) { result.Config = null; }
-            }
+            // A malformed config is ignored (a dataset without one is evaluated too); an unreadable one fails the read.
+            result.Config = DatasetConfig.Read(root).ThrowIfUnreadable().Config;
             return result;
         }
 

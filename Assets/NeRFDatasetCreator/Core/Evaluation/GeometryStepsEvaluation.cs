@@ -23,7 +23,7 @@ namespace NerfDatasetCreator
         /// <summary>Each reconstruction with its resolved ground truth, in step order; refuses as the summary says.</summary>
         public static IReadOnlyList<KeyValuePair<string, GeometryTruth>> Match(EvaluationDataset dataset, string folder)
         {
-            if (!GeometryPackStepRecord.IsPerStep(dataset.Config))
+            if (dataset.Config?.GeometryIsPerStep != true)
                 throw Refuse(folder, "is a folder of per-step reconstructions, but " + dataset.Root + " has no per-step geometry pack (dataset_config.json's geometry lists no steps).",
                     "Capture with \"geometryPack\": \"everyStep\", or pass one reconstruction file (with --step on a dynamic dataset).");
             var files = Directory.EnumerateFiles(folder)
@@ -59,7 +59,7 @@ namespace NerfDatasetCreator
         public static IReadOnlyList<int> Missing(EvaluationDataset dataset, IReadOnlyList<KeyValuePair<string, GeometryTruth>> matched)
         {
             var have = new HashSet<int>(matched.Select(m => m.Value.Step ?? -1));
-            return GeometryPackStepRecord.Entries(dataset.Config).Where(e => e.Step.HasValue && !have.Contains(e.Step.Value)).Select(e => e.Step.Value).ToList();
+            return (dataset.Config?.GeometryEntries ?? Array.Empty<GeometryPackEntry>()).Where(e => e.Step.HasValue && !have.Contains(e.Step.Value)).Select(e => e.Step.Value).ToList();
         }
 
         public static List<GeometryResult> Run(IReadOnlyList<KeyValuePair<string, GeometryTruth>> matched, double? threshold, int truthPoints, Action<string> progress)

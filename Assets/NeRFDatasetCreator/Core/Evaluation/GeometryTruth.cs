@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -36,12 +35,12 @@ namespace NerfDatasetCreator
 
         /// <summary>Whether the dataset is a dynamic capture's: a <c>time</c> record in dataset_config.json, or per-frame times.</summary>
         public static bool IsDynamic(EvaluationDataset dataset, EvaluationDataset train) =>
-            dataset.Config?[TimeRecord.Key] is JObject || dataset.Frames.Any(f => f.Time.HasValue) || train.Frames.Any(f => f.Time.HasValue);
+            dataset.Config?.Time != null || dataset.Frames.Any(f => f.Time.HasValue) || train.Frames.Any(f => f.Time.HasValue);
 
         public static GeometryTruth Resolve(EvaluationDataset dataset, string reconstructionPath, string truthMeshPath, int? step)
         {
             var train = EvaluationDataset.Read(dataset.Root, "train");
-            var entries = GeometryPackStepRecord.Entries(dataset.Config);
+            var entries = dataset.Config?.GeometryEntries ?? Array.Empty<GeometryPackEntry>();
             if (!IsDynamic(dataset, train))
             {
                 if (step.HasValue)
@@ -50,7 +49,7 @@ namespace NerfDatasetCreator
                 return new GeometryTruth { Path = path, Source = source, Train = train, TrainFrames = train.Frames };
             }
 
-            var perStep = GeometryPackStepRecord.IsPerStep(dataset.Config);
+            var perStep = dataset.Config?.GeometryIsPerStep == true;
             var known = entries.Where(e => e.Step.HasValue).Select(e => e.Step.Value).ToList();
             int k;
             GeometryPackEntry entry = null;
@@ -94,11 +93,11 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>Step k's normalised time from dataset_config.json's time record (k/(steps − 1)), or null when there is none.</summary>
-        static double? StepTime(JObject config, int k)
+        static double? StepTime(DatasetConfig config, int k)
         {
-            var steps = config?[TimeRecord.Key]?["steps"];
-            if (steps?.Type != JTokenType.Integer || (int)steps < 2 || k >= (int)steps) return null;
-            return k / (double)((int)steps - 1);
+            var steps = config?.Time?.Steps;
+            if (steps == null || steps.Value < 2 || k >= steps.Value) return null;
+            return k / (double)(steps.Value - 1);
         }
 
         /// <summary>The pack file of <paramref name="entry"/> (or the conventional <c>geometry/target_mesh.ply</c>); refuses when it is missing.</summary>

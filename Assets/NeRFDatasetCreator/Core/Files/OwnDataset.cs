@@ -2,8 +2,6 @@ using System;
 using System.IO;
 using System.Linq;
 using System.Text.RegularExpressions;
-using Newtonsoft.Json;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -61,17 +59,11 @@ namespace NerfDatasetCreator
         /// <summary>Why <paramref name="folder"/> counts as rendered (its config says so, or a split folder holds an image); null when it does not.</summary>
         static string WhyRendered(string folder)
         {
-            try
-            {
-                var config = JToken.Parse(FileOps.ReadText(Path.Combine(folder, DatasetLayout.ConfigFileName))) as JObject;
-                var rendered = config?["imagesRendered"];
-                if (rendered?.Type == JTokenType.Boolean && (bool)rendered)
-                    return "its " + DatasetLayout.ConfigFileName + " says its images were rendered (\"imagesRendered\": true)";
-            }
-            catch (Exception e) when (e is JsonException || e is IOException || e is UnauthorizedAccessException)
-            {
-                return "its " + DatasetLayout.ConfigFileName + " cannot be read (" + e.Message + ")";
-            }
+            var config = DatasetConfig.Read(folder);
+            if (config.State == DatasetConfigState.Unreadable || config.State == DatasetConfigState.NotJson)
+                return "its " + DatasetLayout.ConfigFileName + " cannot be read (" + config.Error + ")";
+            if (config.Config?.ImagesRendered == true)
+                return "its " + DatasetLayout.ConfigFileName + " says its images were rendered (\"imagesRendered\": true)";
             foreach (var split in DatasetSplits.Names)
             {
                 var dir = Path.Combine(folder, split);
@@ -84,18 +76,12 @@ namespace NerfDatasetCreator
 
         static string Check(string folder, bool exportsAllowed)
         {
-            var config = Path.Combine(folder, DatasetLayout.ConfigFileName);
-            if (!File.Exists(config)) return "it has no " + DatasetLayout.ConfigFileName + ", so nothing proves this plugin wrote it";
-            try
-            {
-                var json = JToken.Parse(FileOps.ReadText(config)) as JObject;
-                if (json == null || json["generator"]?.Type != JTokenType.String || (string)json["generator"] != PluginInfo.Name)
-                    return "its " + DatasetLayout.ConfigFileName + " does not name \"" + PluginInfo.Name + "\" as its generator";
-            }
-            catch (Exception e) when (e is JsonException || e is IOException || e is UnauthorizedAccessException)
-            {
-                return "its " + DatasetLayout.ConfigFileName + " cannot be read (" + e.Message + ")";
-            }
+            var config = DatasetConfig.Read(folder);
+            if (config.State == DatasetConfigState.Missing) return "it has no " + DatasetLayout.ConfigFileName + ", so nothing proves this plugin wrote it";
+            if (config.State == DatasetConfigState.Unreadable || config.State == DatasetConfigState.NotJson)
+                return "its " + DatasetLayout.ConfigFileName + " cannot be read (" + config.Error + ")";
+            if (config.Config?.IsThisPlugin != true)
+                return "its " + DatasetLayout.ConfigFileName + " does not name \"" + PluginInfo.Name + "\" as its generator";
             try
             {
                 return Foreign(folder, exportsAllowed);

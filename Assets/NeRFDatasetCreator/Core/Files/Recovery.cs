@@ -101,7 +101,7 @@ namespace NerfDatasetCreator
             if (Directory.Exists(output) || File.Exists(output))
             {
                 // Killed before the old dataset was moved aside: finish only if it is still provably ours.
-                if (asideExists || journal.Aside == null || OwnDataset.WhyNotReplaceable(output, !DatasetValidator.IsPlanOnly(working)) != null)
+                if (asideExists || journal.Aside == null || OwnDataset.WhyNotReplaceable(output, !DatasetConfig.Read(working).IsPlanOnly) != null)
                 {
                     notes.Add(new RecoveryNote("write", false, "could not finish the interrupted write of " + output + ": something else is under that name now; the complete new dataset stays in " + working + "."));
                     return;

@@ -1,5 +1,4 @@
 using System.Collections.Generic;
-using System.IO;
 using Newtonsoft.Json;
 using Newtonsoft.Json.Linq;
 
@@ -15,25 +14,27 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class DatasetTargetReach
     {
-        public static double? Read(string datasetDirectory, ICollection<ValidationProblem> warnings = null)
+        public static double? Read(string datasetDirectory, ICollection<ValidationProblem> warnings = null) =>
+            Read(DatasetConfig.Read(datasetDirectory), warnings);
+
+        /// <summary>The reach <paramref name="config"/> records; a config that cannot be read or parsed is a warning.</summary>
+        public static double? Read(DatasetConfigFile config, ICollection<ValidationProblem> warnings = null)
         {
-            var path = Path.Combine(datasetDirectory, DatasetLayout.ConfigFileName);
-            if (!File.Exists(path)) return null;
-            JObject config;
-            try { config = JObject.Parse(FileOps.ReadText(path)); }
-            catch (JsonException e)
+            switch (config.State)
             {
-                warnings?.Add(new ValidationProblem(DatasetLayout.ConfigFileName, path, "is not valid JSON (" + e.Message + "), so the target's size is unknown.",
-                    "Restore the file from the capture, or ignore this if the dataset is not from this plugin."));
-                return null;
+                case DatasetConfigState.Missing:
+                    return null;
+                case DatasetConfigState.Unreadable:
+                    warnings?.Add(new ValidationProblem(DatasetLayout.ConfigFileName, config.Path, "cannot be read (" + config.Error + "), so the target's size is unknown.",
+                        "Restore the file from the capture, or ignore this if the dataset is not from this plugin."));
+                    return null;
+                case DatasetConfigState.Read:
+                    return config.Config.TargetReach(warnings);
+                default:
+                    warnings?.Add(new ValidationProblem(DatasetLayout.ConfigFileName, config.Path, "is not valid JSON (" + config.Error + "), so the target's size is unknown.",
+                        "Restore the file from the capture, or ignore this if the dataset is not from this plugin."));
+                    return null;
             }
-            catch (System.Exception e) when (e is IOException || e is System.UnauthorizedAccessException)
-            {
-                warnings?.Add(new ValidationProblem(DatasetLayout.ConfigFileName, path, "cannot be read (" + e.Message + "), so the target's size is unknown.",
-                    "Restore the file from the capture, or ignore this if the dataset is not from this plugin."));
-                return null;
-            }
-            return FromConfig(config, warnings);
         }
 
         /// <summary>The reach recorded in a parsed <c>dataset_config.json</c>, or null.</summary>

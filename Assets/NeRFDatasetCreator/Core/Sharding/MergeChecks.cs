@@ -132,10 +132,7 @@ namespace NerfDatasetCreator
                 problems.Add(new ValidationProblem(Path.Combine(s.Folder, ShardMerger.ConfigFileName), "(missing)", "is missing while " + configured[0].Name + " has one.", "Rerun this shard."));
             foreach (var other in configured.Skip(1))
             {
-                if (configured[0].Config is JObject a && other.Config is JObject b)
-                    CompareKeys(configured[0], other, a, b, ShardMerger.ConfigFileName, ShardMerger.PerRunConfigKeys, problems, warnings);
-                else if (!JToken.DeepEquals(configured[0].Config, other.Config))
-                    problems.Add(new ValidationProblem(Path.Combine(other.Folder, ShardMerger.ConfigFileName), "", "differs from " + configured[0].Name + ".", "Capture every shard with the same config."));
+                CompareKeys(configured[0], other, configured[0].Config.Json, other.Config.Json, ShardMerger.ConfigFileName, ShardMerger.PerRunConfigKeys, problems, warnings);
             }
         }
 

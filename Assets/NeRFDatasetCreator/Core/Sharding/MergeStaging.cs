@@ -59,7 +59,7 @@ namespace NerfDatasetCreator
                 }
                 MergeLabels.Write(labels, staging);
                 var config = shards.FirstOrDefault(s => s.Config != null);
-                if (config != null) WriteJson(Path.Combine(staging, ShardMerger.ConfigFileName), MergedConfig(config.Config, shards));
+                if (config != null) FileOps.WriteText(Path.Combine(staging, ShardMerger.ConfigFileName), new DatasetConfig(MergedConfig(config.Config, shards)).ToText());
                 journal.State = OperationJournal.Committing;
                 journal.Save(staging);
                 FileOps.MoveDirectory(staging, output);
@@ -87,19 +87,19 @@ namespace NerfDatasetCreator
 
         /// <summary>
         /// The first shard's config made to describe the whole dataset: <c>imagesRendered</c> (a boolean, see
-        /// <see cref="DatasetConfigWriter"/>) true only when every shard rendered its images, and the per-shard
+        /// <see cref="DatasetConfig.Write"/>) true only when every shard rendered its images, and the per-shard
         /// <c>statistics</c> dropped; the <c>pointCloud</c> record of the shard that wrote points3d.ply.
         /// </summary>
-        static JToken MergedConfig(JToken first, List<ShardFolder> shards)
+        static JObject MergedConfig(DatasetConfig first, List<ShardFolder> shards)
         {
-            if (!(first.DeepClone() is JObject merged)) return first.DeepClone();
+            var merged = (JObject)first.Json.DeepClone();
             merged.Remove("statistics");
             // Only shard 0 writes points3d.ply (merge carries that file over unchanged), so its record describes the merged dataset.
-            var cloud = shards.Select(s => (s.Config as JObject)?[PointCloudRecord.Key]).FirstOrDefault(r => r != null);
+            var cloud = shards.Select(s => s.Config?.Json[PointCloudRecord.Key]).FirstOrDefault(r => r != null);
             if (cloud != null) merged[PointCloudRecord.Key] = cloud.DeepClone();
             else merged.Remove(PointCloudRecord.Key);
             MergeGeometry.CarryRecord(merged, shards);
-            var rendered = shards.Select(s => (s.Config as JObject)?["imagesRendered"]).ToList();
+            var rendered = shards.Select(s => s.Config?.Json["imagesRendered"]).ToList();
             if (rendered.All(r => r != null && r.Type == JTokenType.Boolean))
                 merged["imagesRendered"] = rendered.All(r => (bool)r);
             return merged;

@@ -12,7 +12,8 @@ namespace NerfDatasetCreator
         public string Folder;
         public ShardManifest Manifest;
         public readonly Dictionary<string, JObject> Transforms = new Dictionary<string, JObject>();
-        public JToken Config;
+        /// <summary>The shard's dataset_config.json, or null when it has none or it could not be read (a problem then).</summary>
+        public DatasetConfig Config;
         public string Name => "shard " + Manifest.Shard + " (" + Folder + ")";
 
         /// <summary>Reads every folder, sorted by shard index; each unreadable one adds its problems instead.</summary>
@@ -59,11 +60,29 @@ namespace NerfDatasetCreator
                     if (json is JObject o) shard.Transforms[split] = o;
                     else if (json != null) problems.Add(new ValidationProblem(Path.Combine(folder, ShardMerger.TransformsFileName(split)), json.Type.ToString(), "is not a JSON object.", "Recapture this shard."));
                 }
-                shard.Config = ReadJson(Path.Combine(folder, ShardMerger.ConfigFileName), problems);
+                shard.Config = ReadConfig(folder, problems);
                 shards.Add(shard);
             }
             shards.Sort((a, b) => a.Manifest.Shard.Index.CompareTo(b.Manifest.Shard.Index));
             return shards;
+        }
+
+        static DatasetConfig ReadConfig(string folder, List<ValidationProblem> problems)
+        {
+            var config = DatasetConfig.Read(folder);
+            switch (config.State)
+            {
+                case DatasetConfigState.Unreadable:
+                    problems.Add(new ValidationProblem(config.Path, "(unreadable)", "cannot be read: " + config.Error, "Check the file's permissions, or recapture this shard."));
+                    break;
+                case DatasetConfigState.NotJson:
+                    problems.Add(new ValidationProblem(config.Path, "(unreadable)", "is not valid JSON: " + config.Error, "Recapture this shard."));
+                    break;
+                case DatasetConfigState.NotAnObject:
+                    problems.Add(new ValidationProblem(config.Path, "(not an object)", "is not a JSON object.", "Recapture this shard."));
+                    break;
+            }
+            return config.Config;
         }
 
         static JToken ReadJson(string path, List<ValidationProblem> problems)

@@ -130,7 +130,7 @@ namespace NerfDatasetCreator
             }
             catch (InvalidParameterException e)
             {
-                if (Directory.Exists(datasetFolder) && DatasetValidator.IsPlanOnly(datasetFolder))
+                if (Directory.Exists(datasetFolder) && DatasetConfig.Read(datasetFolder).IsPlanOnly)
                 {
                     // One line instead of one "names no image" per planned frame.
                     stderr.WriteLine("error: " + new ValidationProblem(DatasetLayout.ConfigFileName + ": imagesRendered", "false",

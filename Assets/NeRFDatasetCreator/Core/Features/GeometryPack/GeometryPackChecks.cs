@@ -2,8 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using Newtonsoft.Json;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -14,20 +12,12 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class GeometryPackChecks
     {
-        public static void Check(string folder, bool skipFiles, DatasetValidationReport report)
+        /// <param name="config">The dataset's <c>dataset_config.json</c>, read once by the validator.</param>
+        public static void Check(string folder, DatasetConfigFile config, bool skipFiles, DatasetValidationReport report)
         {
-            JObject config;
-            try
-            {
-                var path = Path.Combine(folder, DatasetLayout.ConfigFileName);
-                if (!File.Exists(path)) return;
-                config = JToken.Parse(FileOps.ReadText(path)) as JObject;
-            }
-            catch (Exception e) when (e is JsonException || e is IOException || e is UnauthorizedAccessException)
-            {
-                return; // reported by the validator's own config check
-            }
-            var entries = GeometryPackStepRecord.Entries(config);
+            // No config, or one that cannot be read (reported by the validator's own config check) or is not JSON: nothing to check.
+            if (config.State == DatasetConfigState.Missing || config.State == DatasetConfigState.Unreadable || config.State == DatasetConfigState.NotJson) return;
+            var entries = config.Config?.GeometryEntries ?? Array.Empty<GeometryPackEntry>();
             var recorded = new HashSet<string>(StringComparer.Ordinal);
             if (!skipFiles)
                 foreach (var entry in entries)

@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -45,22 +44,17 @@ namespace NerfDatasetCreator
 
         public string Name => CheckName;
 
-        public GeometryPackDepthCheck(string root, bool dynamic)
+        /// <param name="config">The dataset's <c>dataset_config.json</c>, read once by the check runner.</param>
+        public GeometryPackDepthCheck(string root, DatasetConfigFile config, bool dynamic)
         {
             _root = root;
             _dynamic = dynamic;
-            JObject config = null;
-            try
-            {
-                var path = Path.Combine(root, DatasetLayout.ConfigFileName);
-                if (File.Exists(path)) config = JToken.Parse(FileOps.ReadText(path)) as JObject;
-            }
-            catch (Exception e) when (e is Newtonsoft.Json.JsonException || e is IOException || e is UnauthorizedAccessException)
+            if (config.State == DatasetConfigState.Unreadable || config.State == DatasetConfigState.NotJson)
             {
                 _skip = DatasetLayout.ConfigFileName + " cannot be read";
                 return;
             }
-            var entries = GeometryPackStepRecord.Entries(config).ToList();
+            var entries = (config.Config?.GeometryEntries ?? Array.Empty<GeometryPackEntry>()).ToList();
             if (entries.Count == 0)
             {
                 _skip = "the dataset has no geometry pack";

@@ -17,7 +17,7 @@ namespace NerfDatasetCreator
     {
         /// <summary>The shard whose record describes the merged dataset (null when none has one).</summary>
         public static ShardFolder Owner(IEnumerable<ShardFolder> shards) =>
-            shards.FirstOrDefault(s => (s.Config as JObject)?[GeometryPackRecord.Key] is JObject);
+            shards.FirstOrDefault(s => s.Config?.GeometryRecord != null);
 
         /// <summary>
         /// The merged dataset_config.json's geometry record: the owner's (shard 0's, carried over unchanged with its
@@ -25,7 +25,7 @@ namespace NerfDatasetCreator
         /// </summary>
         public static void CarryRecord(JObject merged, IEnumerable<ShardFolder> shards)
         {
-            var pack = (Owner(shards)?.Config as JObject)?[GeometryPackRecord.Key];
+            var pack = Owner(shards)?.Config.GeometryRecord;
             if (pack != null) merged[GeometryPackRecord.Key] = pack.DeepClone();
             else merged.Remove(GeometryPackRecord.Key);
         }
@@ -38,13 +38,13 @@ namespace NerfDatasetCreator
             var owner = Owner(shards);
             if (owner != null)
             {
-                var record = (JObject)((JObject)owner.Config)[GeometryPackRecord.Key];
-                foreach (var other in shards.Where(s => s != owner && (s.Config as JObject)?[GeometryPackRecord.Key] is JObject))
-                    if (!JToken.DeepEquals(record, ((JObject)other.Config)[GeometryPackRecord.Key]))
+                var record = owner.Config.GeometryRecord;
+                foreach (var other in shards.Where(s => s != owner && s.Config?.GeometryRecord != null))
+                    if (!JToken.DeepEquals(record, other.Config.GeometryRecord))
                         problems.Add(new ValidationProblem(Path.Combine(other.Folder, DatasetLayout.ConfigFileName) + ": " + GeometryPackRecord.Key, "(a second geometry pack)",
                             "differs from the one " + owner.Name + " recorded; only shard 0 writes the geometry pack.", "Rerun this shard with the job's config and the shard argument it was given."));
                 CheckSteps(owner, problems);
-                foreach (var entry in GeometryPackStepRecord.Entries((JObject)owner.Config))
+                foreach (var entry in owner.Config.GeometryEntries)
                 {
                     var where = Path.Combine(owner.Folder, DatasetLayout.ConfigFileName) + ": geometry " + entry.File;
                     var name = Path.GetFileName(entry.File);
@@ -69,7 +69,7 @@ namespace NerfDatasetCreator
                 if (!Directory.Exists(folder) || PathSafety.IsLink(folder)) continue;
                 claim(folder);
                 var named = shard == owner
-                    ? new HashSet<string>(GeometryPackStepRecord.Entries((JObject)shard.Config).Select(e => Path.GetFileName(e.File)), StringComparer.Ordinal)
+                    ? new HashSet<string>(shard.Config.GeometryEntries.Select(e => Path.GetFileName(e.File)), StringComparer.Ordinal)
                     : new HashSet<string>();
                 foreach (var entry in Directory.EnumerateFileSystemEntries(folder).OrderBy(p => p, StringComparer.Ordinal))
                     if (!named.Contains(Path.GetFileName(entry)))
@@ -80,10 +80,10 @@ namespace NerfDatasetCreator
         /// <summary>A per-step pack holds steps 0 … time.steps − 1, each once, in order.</summary>
         static void CheckSteps(ShardFolder owner, List<ValidationProblem> problems)
         {
-            var config = (JObject)owner.Config;
-            if (!GeometryPackStepRecord.IsPerStep(config)) return;
-            var steps = GeometryPackStepRecord.Entries(config).Select(e => e.Step ?? -1).ToList();
-            var expected = config[TimeRecord.Key]?["steps"]?.Type == JTokenType.Integer ? (int)config[TimeRecord.Key]["steps"] : -1;
+            var config = owner.Config;
+            if (!config.GeometryIsPerStep) return;
+            var steps = config.GeometryEntries.Select(e => e.Step ?? -1).ToList();
+            var expected = config.Time?.Steps ?? -1;
             if (expected < 0 || !steps.SequenceEqual(Enumerable.Range(0, expected)))
                 problems.Add(new ValidationProblem(Path.Combine(owner.Folder, DatasetLayout.ConfigFileName) + ": geometry.steps", steps.Count + " entries",
                     "do not list each time step 0 … " + (expected - 1) + " once (time.steps is " + (expected < 0 ? "missing" : expected.ToString(System.Globalization.CultureInfo.InvariantCulture)) + ").",

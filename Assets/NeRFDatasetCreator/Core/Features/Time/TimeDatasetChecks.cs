@@ -27,30 +27,16 @@ namespace NerfDatasetCreator
         /// (DatasetValidator streams the transforms files and keeps only these); a split that is missing or
         /// unreadable is absent, as DatasetValidator has said so.
         /// </summary>
-        public static void Check(string folder, DatasetValidationReport report, IReadOnlyDictionary<DatasetSplit, IReadOnlyList<JObject>> frames)
+        /// <param name="config">The dataset's <c>dataset_config.json</c>, or null when it has none or it cannot be read.</param>
+        public static void Check(DatasetConfig config, DatasetValidationReport report, IReadOnlyDictionary<DatasetSplit, IReadOnlyList<JObject>> frames)
         {
-            var record = ReadRecord(folder, report);
+            var record = ReadRecord(config, report);
             foreach (var split in DatasetSplits.All)
             {
                 if (!frames.TryGetValue(split, out var list)) continue;
                 var file = DatasetLayout.TransformsFileName(split);
                 if (record == null) CheckForeign(file, list, report);
                 else CheckOwn(file, list, record, report, split);
-            }
-        }
-
-        /// <summary>True when dataset_config.json has a <c>time</c> record, so that every frame's time keys are checked against it.</summary>
-        public static bool HasTimeRecord(string folder)
-        {
-            var path = Path.Combine(folder, DatasetLayout.ConfigFileName);
-            if (!File.Exists(path)) return false;
-            try
-            {
-                return JObject.Parse(FileOps.ReadText(path))[TimeRecord.Key] is JObject;
-            }
-            catch (Exception e) when (e is JsonException || e is IOException || e is UnauthorizedAccessException)
-            {
-                return false;
             }
         }
 
@@ -91,28 +77,15 @@ namespace NerfDatasetCreator
             public int Steps;
         }
 
-        static Record ReadRecord(string folder, DatasetValidationReport report)
+        /// <summary>The config's time record when it is valid; null without one (an unreadable config is reported by validate's own read).</summary>
+        static Record ReadRecord(DatasetConfig config, DatasetValidationReport report)
         {
-            var path = Path.Combine(folder, DatasetLayout.ConfigFileName);
-            if (!File.Exists(path)) return null;
-            JObject config;
-            try
-            {
-                config = JObject.Parse(FileOps.ReadText(path));
-            }
-            catch (JsonException)
-            {
-                return null;
-            }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
-            {
-                return null; // unreadable or too large: validate's own read of the file reports it, naming it
-            }
-            if (!(config[TimeRecord.Key] is JObject time)) return null;
-            var record = new Record();
-            var ok = TimeModes.TryParse((string)(time["mode"] as JValue), out record.Mode) && record.Mode != TimeMode.Static;
-            ok &= TryNumber(time["startSeconds"], out record.Start) & TryNumber(time["endSeconds"], out record.End);
-            ok &= time["steps"]?.Type == JTokenType.Integer && (record.Steps = (int)time["steps"]) >= 2 && record.End > record.Start;
+            var time = config?.Time;
+            if (time == null) return null;
+            var record = new Record { Start = time.StartSeconds ?? 0, End = time.EndSeconds ?? 0, Steps = time.Steps ?? 0 };
+            var ok = TimeModes.TryParse(time.Mode, out record.Mode) && record.Mode != TimeMode.Static;
+            ok &= time.StartSeconds.HasValue && time.EndSeconds.HasValue;
+            ok &= time.Steps.HasValue && record.Steps >= 2 && record.End > record.Start;
             if (!ok)
             {
                 report.Problems.Add(new DatasetProblem(DatasetLayout.ConfigFileName, -1, null,

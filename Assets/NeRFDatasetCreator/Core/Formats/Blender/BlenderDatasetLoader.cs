@@ -146,9 +146,12 @@ namespace NerfDatasetCreator
             // A link is never followed out of the dataset.
             var plyPath = Path.Combine(root, PointCloudFileName);
             var isLink = File.Exists(plyPath) && PathSafety.IsLink(plyPath);
-            var ply = !isLink && PointCloudOwnership.IsOwn(root, warnings) ? PointCloudFileName : null;
+            // dataset_config.json, read once: the cloud's record, the target's reach (a broken config is a warning there) and
+            // whether the capture was inside-out (false when the config does not say or cannot be read).
+            var config = DatasetConfig.Read(root);
+            var ply = !isLink && PointCloudOwnership.IsOwn(root, config, warnings) ? PointCloudFileName : null;
             return new ExportScene(root, intrinsics, frames, ply, normalisation,
-                declaredAabbScale: aabbScale, targetReach: DatasetTargetReach.Read(root, warnings), insideOut: InsideOutRecord.Read(root), lens: lens);
+                declaredAabbScale: aabbScale, targetReach: DatasetTargetReach.Read(config, warnings), insideOut: config.Config?.InsideOut == true, lens: lens);
         }
 
         /// <summary>The root-relative image path with extension, or null when neither the path nor path + ".png" exists.</summary>

@@ -27,7 +27,8 @@ namespace NerfDatasetCreator
         public static ConversionResult Write(ExportScene scene, string outDir, List<ValidationProblem> warnings, StagedOutput staged)
         {
             var root = scene.RootDirectory;
-            var config = ReadConfig(root);
+            // A malformed config reads as none (the refusals below say so); an unreadable one fails the export.
+            var config = DatasetConfig.Read(root).ThrowIfUnreadable().Config;
             var steps = MultiViewSteps(config, root);
             var train = ReadGrid(scene, DatasetSplit.Train, steps, 0);
             if (train == null)
@@ -86,19 +87,19 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>The recorded number of time steps of a multi-view capture; anything else is refused.</summary>
-        static int MultiViewSteps(JObject config, string root)
+        static int MultiViewSteps(DatasetConfig config, string root)
         {
-            var time = config?[TimeRecord.Key] as JObject;
-            var mode = (time?["mode"] as JValue)?.Value as string;
-            if (mode != TimeModes.Name(TimeMode.MultiView) || time["steps"]?.Type != JTokenType.Integer || (int)time["steps"] < 1)
+            var time = config?.Time;
+            var mode = time?.Mode;
+            if (mode != TimeModes.Name(TimeMode.MultiView) || !(time.Steps >= 1))
                 throw Refuse(DatasetLayout.ConfigFileName + ": time.mode", ModeShown(config, time, mode),
                     "is not a multi-view capture: Dynamic 3D Gaussians fits each time step to every camera at that step (train.py:17, md['fn'][t]).",
                     "Capture with time.mode \"multi-view\" (see Documentation~/dynamic-capture.md).");
-            return (int)time["steps"];
+            return time.Steps.Value;
         }
 
         /// <summary>The capture's time mode as a user would write it: a dataset without a time record is static.</summary>
-        static string ModeShown(JObject config, JObject time, string mode)
+        static string ModeShown(DatasetConfig config, RecordedTime time, string mode)
         {
             if (mode != null) return "\"" + mode + "\"";
             if (config == null) return "unknown (no " + DatasetLayout.ConfigFileName + " of this plugin)";
@@ -134,9 +135,9 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>The background for the shell points: black over a transparent capture (the images are composited on it), else the capture's colour.</summary>
-        static Vector3d Background(JObject config, bool masks, List<ValidationProblem> warnings)
+        static Vector3d Background(DatasetConfig config, bool masks, List<ValidationProblem> warnings)
         {
-            var text = (config?["settings"]?["background"] as JValue)?.Value as string;
+            var text = config?.BackgroundText;
             var background = BackgroundSettings.Parse(text) ?? new BackgroundSettings();
             if (background.Transparent) return Vector3d.Zero;
             if (!masks)
@@ -200,19 +201,6 @@ namespace NerfDatasetCreator
         }
 
         static JArray Rows(double[][] rows) => new JArray(rows.Select(r => new JArray(r.Select(v => (object)v).ToArray())).ToArray<object>());
-
-        static JObject ReadConfig(string root)
-        {
-            var path = Path.Combine(root, DatasetLayout.ConfigFileName);
-            try
-            {
-                return File.Exists(path) ? JObject.Parse(FileOps.ReadText(path)) : null;
-            }
-            catch (JsonException)
-            {
-                return null;
-            }
-        }
 
         static InvalidParameterException Refuse(string field, string value, string reason, string fix) =>
             new InvalidParameterException(new[] { new ValidationProblem(field, value, reason, fix) });

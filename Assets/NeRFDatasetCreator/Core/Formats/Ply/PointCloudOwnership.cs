@@ -1,8 +1,6 @@
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using Newtonsoft.Json;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -21,10 +19,14 @@ namespace NerfDatasetCreator
         /// True when <c>points3d.ply</c> exists and is ours. Adds a warning for a foreign file, and for a recorded cloud
         /// that is missing.
         /// </summary>
-        public static bool IsOwn(string datasetDirectory, ICollection<ValidationProblem> warnings)
+        public static bool IsOwn(string datasetDirectory, ICollection<ValidationProblem> warnings) =>
+            IsOwn(datasetDirectory, DatasetConfig.Read(datasetDirectory), warnings);
+
+        /// <param name="config">The dataset's <c>dataset_config.json</c>; without a readable record the cloud is not ours.</param>
+        public static bool IsOwn(string datasetDirectory, DatasetConfigFile config, ICollection<ValidationProblem> warnings)
         {
             var path = Path.Combine(datasetDirectory, FileName);
-            var record = ReadRecord(datasetDirectory);
+            var record = config.Config?.PointCloud;
             if (!File.Exists(path))
             {
                 if (record != null)
@@ -45,15 +47,6 @@ namespace NerfDatasetCreator
                 why + ". It is most likely the random [−1.3, 1.3]³ cloud 3DGS writes into a Blender dataset without one, and is NOT used as the target's surface (no nerfstudio ply_file_path, no COLMAP points3D from it).",
                 "Delete it (3DGS makes a new random one when it needs it), or capture with pointCloudPoints > 0 for the target's real surface."));
             return false;
-        }
-
-        static PointCloudRecord ReadRecord(string datasetDirectory)
-        {
-            var config = Path.Combine(datasetDirectory, DatasetLayout.ConfigFileName);
-            if (!File.Exists(config)) return null;
-            try { return PointCloudRecord.FromConfig(JObject.Parse(FileOps.ReadText(config))); }
-            catch (JsonException) { return null; }
-            catch (System.Exception e) when (e is IOException || e is System.UnauthorizedAccessException) { return null; } // no readable record: not ours
         }
 
         /// <summary>Whether one of the header's first 16 lines is our signature comment (<see cref="PlyWriter.Signature"/>).</summary>

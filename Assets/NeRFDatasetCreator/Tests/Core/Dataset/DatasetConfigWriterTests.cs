@@ -24,7 +24,7 @@ namespace NerfDatasetCreator.Tests
             var plan = Plan();
             var provenance = new Provenance(new DateTime(2026, 11, 22, 12, 30, 5, DateTimeKind.Utc), "2022.3.45f1", "unity-batch");
             provenance.Statistics["viewsPerSecond"] = 12.5;
-            var config = JObject.Parse(DatasetConfigWriter.Write(plan, provenance));
+            var config = JObject.Parse(DatasetConfig.Write(plan, provenance));
             Assert.That((string)config["generator"], Is.EqualTo("NeRF Dataset Creator"));
             Assert.That((string)config["pluginVersion"], Is.EqualTo(PluginInfo.Version));
             Assert.That((string)config["unityVersion"], Is.EqualTo("2022.3.45f1"));
@@ -47,7 +47,7 @@ namespace NerfDatasetCreator.Tests
         [Test]
         public void UnknownUnityVersionIsNull()
         {
-            var config = JObject.Parse(DatasetConfigWriter.Write(Plan(), new Provenance(DateTime.UtcNow)));
+            var config = JObject.Parse(DatasetConfig.Write(Plan(), new Provenance(DateTime.UtcNow)));
             Assert.That(config["unityVersion"].Type, Is.EqualTo(JTokenType.Null));
             Assert.That(config["statistics"], Is.Null);
         }
@@ -56,7 +56,7 @@ namespace NerfDatasetCreator.Tests
         public void LocalTimesAreWrittenInUtc()
         {
             var local = new DateTime(2026, 6, 1, 12, 0, 0, DateTimeKind.Local);
-            var config = JObject.Parse(DatasetConfigWriter.Write(Plan(), new Provenance(local)));
+            var config = JObject.Parse(DatasetConfig.Write(Plan(), new Provenance(local)));
             var expected = local.ToUniversalTime().ToString("yyyy-MM-dd'T'HH:mm:ss'Z'", System.Globalization.CultureInfo.InvariantCulture);
             Assert.That(config["createdUtc"].ToString(Formatting.None), Is.EqualTo("\"" + expected + "\""));
         }

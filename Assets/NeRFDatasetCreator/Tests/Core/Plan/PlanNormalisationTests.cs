@@ -192,7 +192,7 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(read.Centre, Is.EqualTo(new Vector3d(10, -3, 2)));
                 Assert.That(json.Properties().Last().Name, Is.EqualTo("frames"), "frames stays last, as in nerf_synthetic");
             }
-            var config = JObject.Parse(DatasetConfigWriter.Write(plan, new Provenance(new DateTime(2026, 1, 1, 0, 0, 0, DateTimeKind.Utc))));
+            var config = JObject.Parse(DatasetConfig.Write(plan, new Provenance(new DateTime(2026, 1, 1, 0, 0, 0, DateTimeKind.Utc))));
             var fromConfig = SceneNormalisation.FromJson(config["scene_normalisation"]);
             Assert.That(fromConfig.Scale, Is.EqualTo(plan.Normalisation.Scale));
             Assert.That(fromConfig.Centre, Is.EqualTo(plan.Normalisation.Centre));

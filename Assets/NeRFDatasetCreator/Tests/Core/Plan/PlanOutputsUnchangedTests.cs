@@ -170,7 +170,7 @@ namespace NerfDatasetCreator.Tests
             var outputs = new List<(string, byte[])>
             {
                 ("plan", Utf8(CapturePlanJson.Write(plan))),
-                ("config", Utf8(WithoutFixturePath(DatasetConfigWriter.Write(plan, Fixed)))),
+                ("config", Utf8(WithoutFixturePath(DatasetConfig.Write(plan, Fixed)))),
                 ("ply", RigPreviewPly.Encode(plan)),
                 ("png", RigPreviewPicture.Encode(plan)),
                 ("warnings", Utf8(string.Join("\n", plan.Warnings.Select(w => w.ToString())))),

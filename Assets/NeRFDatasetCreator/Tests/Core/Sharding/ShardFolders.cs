@@ -52,7 +52,7 @@ namespace NerfDatasetCreator.Tests
                 {
                     ["pluginVersion"] = "0.1.0",
                     ["unityVersion"] = "2022.3.62f1",
-                    ["imagesRendered"] = true, // a boolean, as DatasetConfigWriter writes it
+                    ["imagesRendered"] = true, // a boolean, as DatasetConfig.Write writes it
                     ["createdUtc"] = "2026-01-0" + (s % 9 + 1).ToString(CultureInfo.InvariantCulture) + "T10:00:00.000Z",
                     ["statistics"] = new JObject { ["secondsPerView"] = 0.5 + s },
                     ["seed"] = 42,

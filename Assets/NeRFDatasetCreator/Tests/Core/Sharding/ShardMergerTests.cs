@@ -74,7 +74,7 @@ namespace NerfDatasetCreator.Tests
             Assert.That(File.ReadAllBytes(Path.Combine(output, "test", "r_3_depth.png")), Is.EqualTo(ShardFolders.ImageBytes("test-depth", 3)));
             var config = ShardFolders.ReadJson(Path.Combine(output, "dataset_config.json"));
             Assert.That((int)config["seed"], Is.EqualTo(42));
-            Assert.That(config["imagesRendered"].Type, Is.EqualTo(JTokenType.Boolean), "still the boolean DatasetConfigWriter writes, so validate and convert read it");
+            Assert.That(config["imagesRendered"].Type, Is.EqualTo(JTokenType.Boolean), "still the boolean DatasetConfig.Write writes, so validate and convert read it");
             Assert.That((bool)config["imagesRendered"], Is.True);
             Assert.That(config["statistics"], Is.Null, "per-shard timings describe no single run of the whole dataset");
             Assert.That(File.ReadAllText(Path.Combine(output, "dataset_config.json")), Does.Contain("\"createdUtc\": \"2026-01-01T10:00:00.000Z\""), "shard 0's date, verbatim");
@@ -177,6 +177,25 @@ namespace NerfDatasetCreator.Tests
             Assert.That(result.Problems[0].Field, Is.EqualTo(path + ": seed"));
             Assert.That(result.Problems[0].Value, Is.EqualTo("7"));
             Assert.That(result.Problems[0].Reason, Does.Contain("which has 42"));
+        }
+
+        [TestCase("[1, 2]", "(not an object)", "is not a JSON object.")]
+        [TestCase("{\"seed\": ", "(unreadable)", "is not valid JSON: Unexpected end")]
+        public void AConfigThatIsNoObjectIsAProblemNamingTheFile(string text, string value, string reason)
+        {
+            var shards = ShardFolders.Create(root, 2, Counts);
+            var path = Path.Combine(shards[1], "dataset_config.json");
+            File.WriteAllText(path, text);
+            var before = ShardFolders.Snapshot(root);
+
+            var result = ShardMerger.Merge(shards, output);
+
+            Assert.That(result.Succeeded, Is.False);
+            var problem = result.Problems.Single(p => p.Field == path);
+            Assert.That(problem.Value, Is.EqualTo(value));
+            Assert.That(problem.Reason, Does.StartWith(reason));
+            Assert.That(problem.Fix, Is.EqualTo("Recapture this shard."));
+            Assert.That(ShardFolders.Snapshot(root), Is.EqualTo(before), "a refused merge changes no file");
         }
 
         [Test]

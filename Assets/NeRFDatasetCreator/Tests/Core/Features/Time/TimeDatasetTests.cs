@@ -56,7 +56,7 @@ namespace NerfDatasetCreator.Tests
         public void TimeSecondsFollowTheRecordedMapping()
         {
             var plan = CapturePlan.Build(Settings(TimeMode.MultiView, 2, 1, 1, 5), PlanTarget.AtOrigin);
-            var config = JObject.Parse(DatasetConfigWriter.Write(plan, new Provenance(new System.DateTime(2026, 1, 1, 0, 0, 0, System.DateTimeKind.Utc))));
+            var config = JObject.Parse(DatasetConfig.Write(plan, new Provenance(new System.DateTime(2026, 1, 1, 0, 0, 0, System.DateTimeKind.Utc))));
             var record = (JObject)config["time"];
             Assert.That((string)record["mode"], Is.EqualTo("multi-view"));
             Assert.That((double)record["startSeconds"], Is.EqualTo(2));
@@ -80,7 +80,7 @@ namespace NerfDatasetCreator.Tests
         {
             var plan = CapturePlan.Build(Settings(TimeMode.Static, 2, 1, 1), PlanTarget.AtOrigin);
             Assert.That(BlenderTransformsWriter.Write(plan, DatasetSplit.Train), Does.Not.Contain("time"));
-            Assert.That(DatasetConfigWriter.Write(plan, new Provenance(new System.DateTime(2026, 1, 1, 0, 0, 0, System.DateTimeKind.Utc))), Does.Not.Contain("\"time\""));
+            Assert.That(DatasetConfig.Write(plan, new Provenance(new System.DateTime(2026, 1, 1, 0, 0, 0, System.DateTimeKind.Utc))), Does.Not.Contain("\"time\""));
         }
 
         static DatasetValidationReport Written(DatasetSettings s, System.Action<string> tamper = null)

@@ -4,12 +4,12 @@ using Newtonsoft.Json;
 namespace NerfDatasetCreator
 {
     /// <summary>
-    /// <c>dataset_config.json</c>: enough to regenerate the dataset — the full settings (the same object a config
+    /// Writing <c>dataset_config.json</c> (reading it is <see cref="Read"/>): enough to regenerate the dataset — the full settings (the same object a config
     /// file holds, so it can be used as one), the seed, the resolved distance, the target and how output poses
     /// relate to the Unity world (<c>scene_normalisation</c>, as in the transforms files), the plugin and Unity versions
     /// and the UTC date; with a point cloud, its <see cref="PointCloudRecord"/> (file, point count, SHA-256).
     /// </summary>
-    public static class DatasetConfigWriter
+    public sealed partial class DatasetConfig
     {
         /// <param name="pointCloud">The record of the <c>points3d.ply</c> this run wrote, or null when it wrote none.</param>
         /// <param name="geometry">The geometry pack's record (<see cref="GeometryPackRecord"/>), or null when the run wrote none.</param>
@@ -88,5 +88,11 @@ namespace NerfDatasetCreator
                 return text.ToString() + "\n"; // the writer's text, formatted by CreateText's invariant culture
             }
         }
+
+        /// <summary>
+        /// The config as text again, indented and ending in a newline: how merge writes the merged dataset's config (the
+        /// first shard's, its strings verbatim, with the records that describe the whole dataset; see MergeStaging).
+        /// </summary>
+        public string ToText() => Json.ToString(Formatting.Indented) + "\n";
     }
 }
