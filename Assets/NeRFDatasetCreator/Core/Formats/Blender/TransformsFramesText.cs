@@ -91,10 +91,23 @@ namespace NerfDatasetCreator
             TimeKeys.WriteFrame(this, v);
             ExposureKeys.WriteFrame(this, v, _exposure);
             MotionBlurKeys.WriteFrame(this, v);
-            FileKey(v, DatasetFileKind.DepthPng, "depth_path");
-            FileKey(v, DatasetFileKind.DepthPng, "depth_file_path");
-            FileKey(v, DatasetFileKind.NormalPng, "normal_path");
-            FileKey(v, DatasetFileKind.MaskPng, "mask_path");
+            if (v.Writes(DatasetFileKind.DepthPng))
+            {
+                Key("depth_path");
+                FilePath(v.Split, v.Index, DatasetFileKind.DepthPng);
+                Key("depth_file_path");
+                FilePath(v.Split, v.Index, DatasetFileKind.DepthPng);
+            }
+            if (v.Writes(DatasetFileKind.NormalPng))
+            {
+                Key("normal_path");
+                FilePath(v.Split, v.Index, DatasetFileKind.NormalPng);
+            }
+            if (v.Writes(DatasetFileKind.MaskPng))
+            {
+                Key("mask_path");
+                FilePath(v.Split, v.Index, DatasetFileKind.MaskPng);
+            }
             LabelFrameKeys.WriteFrameFiles(this, v);
             ExposureKeys.WriteFrameFiles(this, v);
             MotionBlurKeys.WriteFrameFiles(this, v);
