@@ -53,6 +53,11 @@ namespace NerfDatasetCreator
                     result.Problems.Add(new DatasetCheckProblem(CheckName, file, -1, "cannot be read: " + e.Message));
                     continue;
                 }
+                if (!json.IsObject)
+                {
+                    result.Problems.Add(new DatasetCheckProblem(CheckName, file, -1, "cannot be read: it is not a JSON object { … }."));
+                    continue;
+                }
                 ReadSplit(split, file, json, options?.MaxViews ?? 0, result);
             }
             for (var i = 0; i < result.Views.Count; i++) result.Views[i].Number = i;

@@ -64,6 +64,12 @@ namespace NerfDatasetCreator
         /// <summary>The frame's time keys as the dataset holds them (time_step and camera_id for Dynamic 3D Gaussians), or <see cref="FrameTime.None"/>.</summary>
         public FrameTime Timing { get; set; } = FrameTime.None;
 
+        /// <summary>
+        /// Labels: the instance map the frame's <c>instance_path</c> names, relative to the dataset root (inside it), or
+        /// null when the frame names none (<see cref="LabelledDataset"/>; never guessed from the image's name).
+        /// </summary>
+        public string InstancePath { get; set; }
+
         /// <summary>Camera centre in the output world.</summary>
         public Vector3d Centre => CameraToWorld.Translation;
 

@@ -122,7 +122,12 @@ namespace NerfDatasetCreator
                     // Every unusable companion is named: left out here, refused by colmap --depths (GaussianSplattingDepths.Check).
                     if (unusableDepth != null) warnings.Add(LeftOut(unusableDepth));
                     if (unusableMask != null) warnings.Add(LeftOut(unusableMask));
-                    var exportFrame = new ExportFrame(split, image, c2w, depth, mask, frame.Time.Time, unusableDepth) { Timing = frame.Time };
+                    var instance = frame.Named(LabelFrameKeys.Instance);
+                    var exportFrame = new ExportFrame(split, image, c2w, depth, mask, frame.Time.Time, unusableDepth)
+                    {
+                        Timing = frame.Time,
+                        InstancePath = instance != null && instance.IsInside ? instance.Relative : null,
+                    };
                     MotionBlurExports.Read(frame.Shutter, exportFrame);
                     frames.Add(exportFrame);
                 }
@@ -176,7 +181,7 @@ namespace NerfDatasetCreator
             if (file == null) return null;
             var candidate = file.Relative;
             string why = null;
-            if (!file.IsInside) why = file.Outside + ", which convert never reads";
+            if (!file.IsInside) why = file.Outside; // outside the dataset or through a link: never read
             else if (!file.Exists) return null;
             else
             {
@@ -192,7 +197,7 @@ namespace NerfDatasetCreator
                 catch (Exception e) when (e is IOException || e is UnauthorizedAccessException) { why = "cannot be read (" + e.Message.TrimEnd('.') + ")"; }
             }
             if (why == null) return candidate;
-            unusable = new ValidationProblem(what, candidate, why + ", not this plugin's " + what + " layout (Documentation~/output-format.md)",
+            unusable = new ValidationProblem(what, candidate, why + (file.IsInside ? ", not this plugin's " + what + " layout (Documentation~/output-format.md)" : ""),
                 "Re-capture the " + what + " with this plugin, or delete the file to export " + image + " without " + what + ".");
             return null;
         }
