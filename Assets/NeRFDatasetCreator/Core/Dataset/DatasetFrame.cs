@@ -11,8 +11,10 @@ namespace NerfDatasetCreator
     /// </summary>
     public sealed class DatasetFrame
     {
-        readonly Dictionary<string, DatasetFile> _files = new Dictionary<string, DatasetFile>(StringComparer.Ordinal);
-        readonly List<KeyValuePair<string, string>> _fileKeys = new List<KeyValuePair<string, string>>();
+        // Allocated on first use: validate streams 300 000-frame files, most of whose frames name no extra file.
+        static readonly List<KeyValuePair<string, string>> NoFileKeys = new List<KeyValuePair<string, string>>();
+        Dictionary<string, DatasetFile> _files;
+        List<KeyValuePair<string, string>> _fileKeys = NoFileKeys;
         DatasetFile _image;
         List<string> _fileProblems;
 
@@ -88,9 +90,10 @@ namespace NerfDatasetCreator
         public DatasetFile Named(string key)
         {
             if (key == "file_path") return Image;
-            if (_files.TryGetValue(key, out var file)) return file;
+            if (_files != null && _files.TryGetValue(key, out var file)) return file;
             var written = FileKey(key);
             if (written == null || File?.Root == null) return null;
+            if (_files == null) _files = new Dictionary<string, DatasetFile>(StringComparer.Ordinal);
             return _files[key] = DatasetFile.Resolve(File.Root, key, written, false);
         }
 
@@ -122,6 +125,10 @@ namespace NerfDatasetCreator
             }
         }
 
-        internal void AddFileKey(string key, string value) => _fileKeys.Add(new KeyValuePair<string, string>(key, value));
+        internal void AddFileKey(string key, string value)
+        {
+            if (ReferenceEquals(_fileKeys, NoFileKeys)) _fileKeys = new List<KeyValuePair<string, string>>();
+            _fileKeys.Add(new KeyValuePair<string, string>(key, value));
+        }
     }
 }
