@@ -6,11 +6,11 @@ using System.Linq;
 namespace NerfDatasetCreator
 {
     /// <summary>
-    /// Checks a Blender-format dataset folder (ours or nerf_synthetic's) against what the loaders need: the three
-    /// transforms files parse; <c>camera_angle_x</c> is in (0, π) and the same in every split; every referenced
+    /// Checks a Blender-format dataset folder (ours or nerf_synthetic's) against what the loaders need, reading it
+    /// through <see cref="DatasetFolder"/> (strict, streamed): the three transforms files parse; <c>camera_angle_x</c> is in (0, π) and the same in every split; every referenced
     /// image exists, is a complete PNG, and all share one size and channel layout (read from the PNG header);
     /// every matrix is finite, has last row 0 0 0 1 and an orthonormal rotation with |det − 1| &lt; 1e-4; extra
-    /// files named by per-frame keys exist with the documented format; a <c>points3d.ply</c> that dataset_config.json
+    /// files named by per-frame keys exist inside the folder (<see cref="DatasetFile"/>) with the documented format; a <c>points3d.ply</c> that dataset_config.json
     /// does not record is a warning (<see cref="PointCloudOwnership"/>). Every problem is listed, one per line.
     /// </summary>
     public static class DatasetValidator
