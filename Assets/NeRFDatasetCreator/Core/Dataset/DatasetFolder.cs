@@ -241,12 +241,9 @@ namespace NerfDatasetCreator
             foreach (var property in obj.Properties())
                 if (property.Name != "file_path" && property.Name.EndsWith("_path", StringComparison.Ordinal) && property.Value.Type == JTokenType.String)
                     frame.AddFileKey(property.Name, (string)property.Value);
-            frame.Intrinsics = FrameIntrinsics.Read(obj);
-            // Each feature reads its own keys (Core/Features/<Feature>/…Keys.cs).
+            // Each feature reads its own keys (Core/Features/<Feature>/…Keys.cs): the time keys here, the camera, shutter,
+            // exposure and lens keys when first asked for (DatasetFrame).
             frame.Time = TimeKeys.Read(obj);
-            frame.Shutter = MotionBlurKeys.Read(doc.Top, obj);
-            frame.Exposure = ExposureKeys.Read(obj);
-            frame.DistortionKeys = TransformsLens.NonZeroCoefficients(doc.Top, obj);
             return Done(frame);
         }
 

@@ -41,20 +41,27 @@ namespace NerfDatasetCreator
         /// <summary><c>transform_matrix</c> when it had 4 rows of 4 numbers, as written (not checked further: NaN is kept), else null.</summary>
         public Matrix4x4d? TransformMatrix { get; internal set; }
 
+        // The camera and feature keys are read on first use, by each feature's own reader: validate streams 300 000
+        // frames and needs only the time keys of each.
+        FrameIntrinsics _intrinsics;
+        FrameShutter _shutter;
+        FrameExposure _exposure;
+        IReadOnlyList<string> _distortionKeys;
+
         /// <summary>The frame's own camera keys (<c>fl_x</c>, <c>w</c>, …, which override the file's), <see cref="FrameIntrinsics.None"/> without.</summary>
-        public FrameIntrinsics Intrinsics { get; internal set; } = FrameIntrinsics.None;
+        public FrameIntrinsics Intrinsics => _intrinsics ?? (_intrinsics = FrameIntrinsics.Read(Json));
 
         /// <summary>The time keys (<see cref="TimeKeys.Read"/>).</summary>
         public FrameTime Time { get; internal set; } = FrameTime.None;
 
-        /// <summary>The motion-blur keys (<see cref="MotionBlurKeys.Read"/>).</summary>
-        public FrameShutter Shutter { get; internal set; } = FrameShutter.None;
+        /// <summary>The motion-blur keys (<see cref="MotionBlurKeys.Read"/>; the rolling shutter falls back to the file's).</summary>
+        public FrameShutter Shutter => _shutter ?? (_shutter = MotionBlurKeys.Read(File?.Top, Json));
 
         /// <summary>The exposure keys (<see cref="ExposureKeys.Read"/>).</summary>
-        public FrameExposure Exposure { get; internal set; } = FrameExposure.None;
+        public FrameExposure Exposure => _exposure ?? (_exposure = ExposureKeys.Read(Json));
 
         /// <summary>The lens coefficients (k1…p2) the frame or its file gives a non-zero number (<see cref="TransformsLens.NonZeroCoefficients"/>).</summary>
-        public IReadOnlyList<string> DistortionKeys { get; internal set; } = Array.Empty<string>();
+        public IReadOnlyList<string> DistortionKeys => _distortionKeys ?? (_distortionKeys = Json == null ? Array.Empty<string>() : TransformsLens.NonZeroCoefficients(File?.Top, Json));
 
         /// <summary>Problems with the frame's structure (Strict mode), e.g. "transform_matrix row 2 is not a list of 4 numbers.".</summary>
         public List<string> Problems { get; } = new List<string>();
