@@ -53,6 +53,36 @@ namespace NerfDatasetCreator.Tool.Tests
             }
         }
 
+        /// <summary>
+        /// A nerf_synthetic-style split (frames without depth_path, 8-bit r_&lt;i&gt;_depth_0000.png pictures beside the
+        /// images) with renders that carry depth: evaluate scores the colour and skips depth with a note (keys only, as
+        /// check), instead of exiting 1 with "… is not a 16-bit grey depth PNG".
+        /// </summary>
+        [Test]
+        public void ANerfSyntheticStyleSplitIsScoredWithoutTheDepthItsFramesDoNotName()
+        {
+            using (var scratch = new Scratch())
+            {
+                var dataset = scratch.PathOf("sphere");
+                var views = AnalyticSphereDataset.Write(dataset, W, H, train: 4, test: 3);
+                AnalyticSphereDataset.MakeNerfSyntheticStyle(dataset, "test", views, W, H);
+                var renders = scratch.PathOf("renders");
+                Directory.CreateDirectory(renders);
+                for (var i = 0; i < views.Count; i++)
+                {
+                    File.WriteAllBytes(Path.Combine(renders, "r_" + i + ".png"), PngWriter.Encode(AnalyticSphereDataset.Render(views[i], W, H, 6), W, H, PngPixelFormat.Rgb8));
+                    File.WriteAllBytes(Path.Combine(renders, "r_" + i + "_depth_0000.png"), PngWriter.EncodeGray16(views[i].Depth, W, H));
+                }
+                var run = ToolRun.Of("evaluate", dataset, "--renders", renders);
+                Assert.That(run.ExitCode, Is.EqualTo(0), run.ToString());
+                Assert.That(run.Out, Does.Contain("PSNR ").And.Contain("SSIM "));
+                Assert.That(run.ToString(), Does.Not.Contain("16-bit grey depth PNG"));
+                var metrics = JObject.Parse(File.ReadAllText(Path.Combine(renders, "evaluation-test", "metrics.json")));
+                Assert.That((double)metrics["mean"]["psnr"], Is.GreaterThan(20));
+                Assert.That(metrics["notes"].Select(n => (string)n), Has.Some.Contains("name no depth file (depth_path; files are never guessed from the image names): depth not scored"));
+            }
+        }
+
         [Test]
         public void AForeignOutFolderIsRefusedAndLeftAlone()
         {

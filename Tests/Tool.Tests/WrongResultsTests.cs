@@ -54,11 +54,17 @@ namespace NerfDatasetCreator.Tool.Tests
 
         static string DepthOf(string image) => image.Substring(0, image.Length - 4) + "_depth_0000.png";
 
-        /// <summary>A 16-bit grey depth PNG of the images' size beside every image.</summary>
+        /// <summary>A 16-bit grey depth PNG of the images' size beside every image, named by each frame's depth_path (keys only: never guessed).</summary>
         void AddDepth()
         {
             var png = TestPng.Encode(RenderedDataset.Width, RenderedDataset.Height, 16, PngInfo.ColorTypeGray);
             foreach (var image in Images()) File.WriteAllBytes(Path.Combine(_dataset, DepthOf(image)), png);
+            foreach (var split in new[] { "train", "val", "test" })
+                EditJson(split, j =>
+                {
+                    foreach (JObject frame in (JArray)j["frames"])
+                        frame["depth_path"] = "./" + DepthOf(((string)frame["file_path"]).Substring(2) + ".png");
+                });
         }
 
         // ---- Empty splits -------------------------------------------------------------------------------------------

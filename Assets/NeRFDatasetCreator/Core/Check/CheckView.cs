@@ -1,12 +1,18 @@
 namespace NerfDatasetCreator
 {
-    /// <summary>One frame of a transforms file as the check sees it: its files (relative to the dataset, null when absent), camera and time.</summary>
+    /// <summary>
+    /// One frame of a transforms file as the check sees it: a view over its <see cref="DatasetFrame"/> with the files the
+    /// checks open (relative to the dataset, null when absent), the camera once the image size is known, and time.
+    /// </summary>
     public sealed class CheckView
     {
         public string Split;
 
         /// <summary>The frame's index in its transforms file's <c>frames</c>.</summary>
         public int Frame;
+
+        /// <summary>The frame as <see cref="DatasetFolder"/> read it: the features' keys and every file its keys name.</summary>
+        public DatasetFrame Source;
 
         /// <summary>The colour image as <c>file_path</c> resolves (with ".png" appended when extensionless).</summary>
         public string ColourFile;

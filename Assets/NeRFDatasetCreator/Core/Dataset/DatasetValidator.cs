@@ -2,16 +2,15 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
     /// <summary>
-    /// Checks a Blender-format dataset folder (ours or nerf_synthetic's) against what the loaders need: the three
-    /// transforms files parse; <c>camera_angle_x</c> is in (0, π) and the same in every split; every referenced
+    /// Checks a Blender-format dataset folder (ours or nerf_synthetic's) against what the loaders need, reading it
+    /// through <see cref="DatasetFolder"/> (strict, streamed): the three transforms files parse; <c>camera_angle_x</c> is in (0, π) and the same in every split; every referenced
     /// image exists, is a complete PNG, and all share one size and channel layout (read from the PNG header);
     /// every matrix is finite, has last row 0 0 0 1 and an orthonormal rotation with |det − 1| &lt; 1e-4; extra
-    /// files named by per-frame keys exist with the documented format; a <c>points3d.ply</c> that dataset_config.json
+    /// files named by per-frame keys exist inside the folder (<see cref="DatasetFile"/>) with the documented format; a <c>points3d.ply</c> that dataset_config.json
     /// does not record is a warning (<see cref="PointCloudOwnership"/>). Every problem is listed, one per line.
     /// </summary>
     public static class DatasetValidator
@@ -40,7 +39,7 @@ namespace NerfDatasetCreator
             // (where the loaders assume it): a camera nearer than NeRF's near 2 or beyond its far 6 cannot see it.
             var cameraCentres = new LoaderRangeCheck.Tally(0);
             var timeRecord = config.Config?.Time != null;
-            var timeFramesBySplit = new Dictionary<DatasetSplit, IReadOnlyList<JObject>>();
+            var timeFramesBySplit = new Dictionary<DatasetSplit, IReadOnlyList<TimeDatasetChecks.Kept>>();
             var labelMaps = false;
             foreach (var split in DatasetSplits.All)
             {
@@ -58,10 +57,10 @@ namespace NerfDatasetCreator
                 var needsDepthScale = false;
                 var timeFrames = new KeptTimeFrames();
                 var keepEveryTimeFrame = timeRecord;
-                TransformsDocument doc;
+                DatasetSplitFile doc;
                 try
                 {
-                    doc = TransformsReader.ReadFile(path, (frame, json) =>
+                    doc = DatasetFolder.ReadSplit(folder, DatasetSplits.Name(split), DatasetReadMode.Strict, frame =>
                     {
                         if (frame.FilePath != null)
                         {
@@ -72,9 +71,9 @@ namespace NerfDatasetCreator
                         }
                         if (frame.TransformMatrix.HasValue && frame.TransformMatrix.Value.IsFinite) cameraCentres.Add(frame.TransformMatrix.Value.Translation);
                         CheckFrame(folder, file, frame, state, report);
-                        if (frame.ExtraFiles.ContainsKey("depth_path")) needsDepthScale = true;
-                        if (frame.ExtraFiles.ContainsKey(LabelFrameKeys.Instance) || frame.ExtraFiles.ContainsKey(LabelFrameKeys.Semantic)) labelMaps = true;
-                        timeFrames.Add(TimeDatasetChecks.Keep(json, keepEveryTimeFrame));
+                        if (frame.FileKey("depth_path") != null) needsDepthScale = true;
+                        if (frame.FileKey(LabelFrameKeys.Instance) != null || frame.FileKey(LabelFrameKeys.Semantic) != null) labelMaps = true;
+                        timeFrames.Add(TimeDatasetChecks.Keep(frame, keepEveryTimeFrame));
                     });
                 }
                 catch (SettingsFormatException e)
@@ -263,7 +262,7 @@ namespace NerfDatasetCreator
             }
         }
 
-        static void CheckFrame(string folder, string file, TransformsFrame frame, ImageState state, DatasetValidationReport report)
+        static void CheckFrame(string folder, string file, DatasetFrame frame, ImageState state, DatasetValidationReport report)
         {
             void Problem(string message) => report.Problems.Add(new DatasetProblem(file, frame.Index, frame.FilePath, message));
             foreach (var p in frame.Problems) Problem(p);
@@ -278,14 +277,16 @@ namespace NerfDatasetCreator
 
             if (frame.FilePath != null)
             {
-                var relative = frame.FilePath.EndsWith(".png", StringComparison.OrdinalIgnoreCase) ? frame.FilePath : frame.FilePath + ".png";
-                var image = Resolve(folder, relative);
-                if (image == null) Problem("file_path leaves the dataset folder.");
-                else if (!File.Exists(image)) Problem("image " + relative + " is missing.");
+                // The one path rule (DatasetFile): inside the dataset through PathSafety, ".png" appended as the loaders do.
+                var image = frame.Image;
+                var relative = frame.FilePath.EndsWith(".png", StringComparison.OrdinalIgnoreCase) || (image.Exists && image.Relative == ExportPaths.Normalise(frame.FilePath))
+                    ? frame.FilePath : frame.FilePath + ".png";
+                if (!image.IsInside) Problem("file_path leaves the dataset folder.");
+                else if (!image.Exists) Problem("image " + relative + " is missing.");
                 else
                 {
-                    state.NewlyReferenced.Add(ExportPaths.Normalise(relative));
-                    var info = ReadPng(image, relative, Problem);
+                    state.NewlyReferenced.Add(image.Relative);
+                    var info = ReadPng(image.FullPath, relative, Problem);
                     if (info != null)
                     {
                         report.ImagesChecked++;
@@ -313,20 +314,22 @@ namespace NerfDatasetCreator
 
             // One file under two keys (depth_path for instant-ngp, depth_file_path for nerfstudio) is checked and counted once.
             var checkedFiles = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
-            foreach (var key in TransformsReader.ExtraFileKeys)
+            foreach (var key in DatasetFolder.CheckedFileKeys)
             {
-                if (!frame.ExtraFiles.TryGetValue(key, out var value)) continue;
+                var value = frame.FileKey(key);
+                if (value == null) continue;
                 var format = ExpectedFormat(key);
                 if (value != null && !checkedFiles.Add(ExportPaths.Normalise(value) + "|" + format.Describe())) continue;
                 var pair = new KeyValuePair<string, string>(key, value);
                 var expected = ExpectedFormat(pair.Key);
-                var path = Resolve(folder, pair.Value);
-                if (path == null)
+                var named = frame.Named(key);
+                var path = named.FullPath;
+                if (!named.IsInside)
                 {
                     Problem(pair.Key + " " + pair.Value + " leaves the dataset folder.");
                     continue;
                 }
-                if (!File.Exists(path))
+                if (!named.Exists)
                 {
                     Problem(pair.Key + " " + pair.Value + " is missing.");
                     continue;
@@ -422,14 +425,6 @@ namespace NerfDatasetCreator
             else if (Math.Abs(det - 1) >= RotationTolerance)
                 problems.Add("transform_matrix's rotation has determinant " + ValidationProblem.Format(det) + ", not +1: it is mirrored (a left-handed pose, e.g. Unity's matrix without the Y/Z swap).");
             return problems;
-        }
-
-        /// <summary>The absolute path of a dataset-relative path such as <c>./train/r_0.png</c>, or null when it leaves the folder.</summary>
-        static string Resolve(string folder, string relative)
-        {
-            var root = Path.GetFullPath(folder).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
-            var full = Path.GetFullPath(Path.Combine(root, relative.Replace('\\', '/').Replace('/', Path.DirectorySeparatorChar)));
-            return full.StartsWith(root + Path.DirectorySeparatorChar, StringComparison.Ordinal) ? full : null;
         }
     }
 }

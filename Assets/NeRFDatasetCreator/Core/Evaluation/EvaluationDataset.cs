@@ -25,10 +25,11 @@ namespace NerfDatasetCreator
     }
 
     /// <summary>
-    /// The part of a Blender-format dataset that evaluation reads: one split's frames (<see cref="TransformsReader"/>),
+    /// The part of a Blender-format dataset that evaluation reads: one split's frames (<see cref="DatasetFolder"/>),
     /// the pinhole from <c>camera_angle_x</c> (and <c>cx</c>, <c>cy</c> when written), the depth scale, and
-    /// <c>dataset_config.json</c> when present. Extras are found by the frame's keys or, failing those, by this plugin's
-    /// names next to the image (<c>r_0_depth_0000.png</c> …), and used only when every frame has them.
+    /// <c>dataset_config.json</c> when present. Extras are the files the frame's keys name — never guessed from the
+    /// image's name, as <c>check</c> does too: nerf_synthetic's own <c>r_0_depth_0000.png</c> are 8-bit pictures, not
+    /// depth — and used only when every frame has them.
     /// </summary>
     public sealed class EvaluationDataset
     {
@@ -49,6 +50,18 @@ namespace NerfDatasetCreator
         public bool HasNormals => Frames.Count > 0 && Frames.All(f => f.NormalPath != null);
         public bool HasMasks => Frames.Count > 0 && Frames.All(f => f.MaskPath != null);
 
+        /// <summary>
+        /// Why a pass the renders carry is not scored, for the report's note: no frame names a file of it (keys only:
+        /// a file is never guessed from the image's name), or only some frames name a usable PNG.
+        /// </summary>
+        public string Unscored(string what, string key, Func<EvaluationFrame, string> path)
+        {
+            var with = Frames.Count(f => path(f) != null);
+            return with == 0
+                ? "the frames of the dataset's " + Split + " split name no " + what + " file (" + key + "; files are never guessed from the image names)"
+                : "only " + with + " of " + Frames.Count + " frames of the dataset's " + Split + " split name a usable " + what + " PNG";
+        }
+
         /// <summary>Focal length in pixels for an image <paramref name="width"/> wide: 0.5·W / tan(0.5·camera_angle_x).</summary>
         public double Focal(int width) => 0.5 * width / Math.Tan(0.5 * CameraAngleX);
 
@@ -60,37 +73,34 @@ namespace NerfDatasetCreator
             var jsonPath = Path.Combine(root, DatasetLayout.TransformsFileName(split));
             if (!File.Exists(jsonPath))
                 throw Problem("<dataset>", root, "has no " + DatasetLayout.TransformsFileName(split) + ".", "Pass a Blender-format dataset folder, or another split with --split.");
-            TransformsDocument doc;
-            try { doc = TransformsReader.ReadFile(jsonPath); }
+            DatasetSplitFile doc;
+            try { doc = DatasetFolder.ReadSplit(root, split, DatasetReadMode.Strict); }
             catch (SettingsFormatException e) { throw Problem(DatasetLayout.TransformsFileName(split), jsonPath, e.Message, "Fix or regenerate the file."); }
             if (doc.Problems.Count > 0) throw Problem(DatasetLayout.TransformsFileName(split), jsonPath, string.Join(" ", doc.Problems), "Run nerf-dataset validate on the dataset and fix what it reports.");
             if (!(doc.CameraAngleX > 0 && doc.CameraAngleX < Math.PI)) throw Problem(DatasetLayout.TransformsFileName(split), jsonPath, "has no camera_angle_x in (0, π).", "Write the horizontal field of view in radians.");
             if (doc.Frames.Count == 0) throw Problem(DatasetLayout.TransformsFileName(split), jsonPath, "lists no frames, so there is nothing to evaluate.", "Pick a split with views: --split test (or train, val).");
 
             var result = new EvaluationDataset { Root = root, Split = split, CameraAngleX = doc.CameraAngleX.Value, DepthScale = doc.IntegerDepthScale ?? doc.DepthUnitScaleFactor ?? 0.001 };
-            var json = JObject.Parse(FileOps.ReadText(jsonPath));
-            if (JsonValues.TryNumber(json["cx"], out var cx) && JsonValues.TryNumber(json["cy"], out var cy)) { result.Cx = cx; result.Cy = cy; }
+            if (doc.Intrinsics.Cx is double cx && doc.Intrinsics.Cy is double cy) { result.Cx = cx; result.Cy = cy; }
             var frames = new List<EvaluationFrame>();
-            var jsonFrames = json["frames"] as JArray;
             foreach (var f in doc.Frames)
             {
-                var frameJson = jsonFrames != null && f.Index >= 0 && f.Index < jsonFrames.Count ? jsonFrames[f.Index] as JObject : null;
                 var field = DatasetLayout.TransformsFileName(split) + " frame " + f.Index;
                 if (f.Problems.Count > 0) throw Problem(field, f.FilePath ?? "", string.Join(" ", f.Problems), "Run nerf-dataset validate on the dataset.");
-                var image = Resolve(root, f.FilePath, true);
+                var image = Png(f.Image);
                 if (image == null) throw Problem(field, f.FilePath, "names no image inside the dataset (looked for the path and the path + .png).", "Run nerf-dataset validate on the dataset.");
-                var stem = image.Substring(0, image.Length - 4);
                 frames.Add(new EvaluationFrame
                 {
                     Index = f.Index,
                     FilePath = f.FilePath,
                     CameraToWorld = f.TransformMatrix.Value,
                     ImagePath = image,
-                    DepthPath = Extra(root, f, "depth_path", stem + DatasetLayout.Suffix(DatasetFileKind.DepthPng)),
-                    NormalPath = Extra(root, f, "normal_path", stem + DatasetLayout.Suffix(DatasetFileKind.NormalPng)),
-                    MaskPath = Extra(root, f, "mask_path", stem + DatasetLayout.Suffix(DatasetFileKind.MaskPng)),
-                    TimeStep = frameJson?[TimeKeys.Step]?.Type == JTokenType.Integer ? (int?)(int)frameJson[TimeKeys.Step] : null,
-                    Time = JsonValues.TryNumber(frameJson?[TimeKeys.Time], out var time) ? (double?)time : null,
+                    // Keys only: the instant-ngp key, else nerfstudio's (this plugin writes both, naming one file).
+                    DepthPath = Png(f.Named("depth_path")) ?? Png(f.Named("depth_file_path")),
+                    NormalPath = Png(f.Named("normal_path")),
+                    MaskPath = Png(f.Named("mask_path")),
+                    TimeStep = f.Time.Step,
+                    Time = f.Time.Time,
                 });
             }
             result.Frames = frames;
@@ -99,25 +109,9 @@ namespace NerfDatasetCreator
             return result;
         }
 
-        static string Extra(string root, TransformsFrame frame, string key, string conventional)
-        {
-            if (frame.ExtraFiles.TryGetValue(key, out var named))
-            {
-                var path = Resolve(root, named, false);
-                if (path != null) return path;
-            }
-            return File.Exists(conventional) ? conventional : null;
-        }
-
-        static string Resolve(string root, string relative, bool addPng)
-        {
-            if (string.IsNullOrEmpty(relative)) return null;
-            var inside = PathSafety.Inside(root, relative, out _);
-            if (inside == null) return null;
-            if (File.Exists(inside) && inside.EndsWith(".png", StringComparison.OrdinalIgnoreCase)) return inside;
-            if (addPng && File.Exists(inside + ".png")) return inside + ".png";
-            return null;
-        }
+        /// <summary>The absolute path of a PNG the frame names inside the dataset, or null (absent, outside, missing, or not a .png).</summary>
+        static string Png(DatasetFile file) =>
+            file != null && file.Exists && file.FullPath.EndsWith(".png", StringComparison.OrdinalIgnoreCase) ? file.FullPath : null;
 
         static InvalidParameterException Problem(string field, string value, string reason, string fix) =>
             new InvalidParameterException(new[] { new ValidationProblem(field, value, reason, fix) });

@@ -52,8 +52,8 @@ namespace NerfDatasetCreator
             };
             var wantDepth = renders.Views.All(v => v.DepthPath != null);
             var wantNormals = renders.Views.All(v => v.NormalPath != null);
-            if (wantDepth && !dataset.HasDepth) { wantDepth = false; result.Notes.Add("The renders include depth, but the dataset's " + options.Split + " split has no depth PNGs: depth not scored."); }
-            if (wantNormals && !dataset.HasNormals) { wantNormals = false; result.Notes.Add("The renders include normals, but the dataset's " + options.Split + " split has no normal PNGs: normals not scored."); }
+            if (wantDepth && !dataset.HasDepth) { wantDepth = false; result.Notes.Add("The renders include depth, but " + dataset.Unscored("depth", "depth_path", f => f.DepthPath) + ": depth not scored."); }
+            if (wantNormals && !dataset.HasNormals) { wantNormals = false; result.Notes.Add("The renders include normals, but " + dataset.Unscored("normal", "normal_path", f => f.NormalPath) + ": normals not scored."); }
             if (firstColumn > 0)
                 result.Notes.Add("The 3DGS renders are the right half of each view (render.py with --train_test_exp keeps columns W//2 … W − 1 of the render and of gt): scored against that half of the dataset's images, from column " + firstColumn + ".");
             if (!dataset.HasMasks) result.Notes.Add("The dataset's " + options.Split + " split has no masks: PSNR in the mask not computed.");

@@ -28,7 +28,7 @@ namespace NerfDatasetCreator
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
-            var time = target == ExportTarget.Dynamic3dgs ? null : TimeDatasetChecks.ConversionWarning(datasetDir);
+            var time = target == ExportTarget.Dynamic3dgs ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
             if (time != null) warnings.Add(time);
             if (objectNameOrId != null) return ExportObject(scene, target, objectNameOrId, outDir, warnings);
             return Export(scene, target, outDir, null, null, warnings, depths, colmap);

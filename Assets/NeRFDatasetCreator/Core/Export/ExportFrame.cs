@@ -61,6 +61,15 @@ namespace NerfDatasetCreator
         /// <summary>Motion blur: instant-ngp's <c>rolling_shutter</c> [A, B, C, D] of the frame (its file's, or its own), or null.</summary>
         public double[] RollingShutter { get; set; }
 
+        /// <summary>The frame's time keys as the dataset holds them (time_step and camera_id for Dynamic 3D Gaussians), or <see cref="FrameTime.None"/>.</summary>
+        public FrameTime Timing { get; set; } = FrameTime.None;
+
+        /// <summary>
+        /// Labels: the instance map the frame's <c>instance_path</c> names, relative to the dataset root (inside it), or
+        /// null when the frame names none (<see cref="LabelledDataset"/>; never guessed from the image's name).
+        /// </summary>
+        public string InstancePath { get; set; }
+
         /// <summary>Camera centre in the output world.</summary>
         public Vector3d Centre => CameraToWorld.Translation;
 

@@ -8,13 +8,13 @@ using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
-    /// <summary>One frame of one shard's transforms file, identified by split and index.</summary>
+    /// <summary>One frame of one shard's transforms file (as <see cref="DatasetFolder"/> read it), identified by split and view index.</summary>
     sealed class MergeFrame
     {
         public string Split;
         public int Index;
         public ShardFolder Shard;
-        public JObject Json;
+        public DatasetFrame Frame;
     }
 
     /// <summary>The checks merge runs before it touches a file: one job per shard set, every view once, same keys.</summary>
@@ -63,17 +63,17 @@ namespace NerfDatasetCreator
                                 "Rerun this shard."));
                         continue;
                     }
-                    if (!(transforms["frames"] is JArray list))
+                    if (!transforms.HasFrameList)
                     {
-                        problems.Add(new ValidationProblem(file + ": frames", transforms["frames"]?.Type.ToString() ?? "(missing)", "is not a list of frames.", "Rerun this shard."));
+                        problems.Add(new ValidationProblem(file + ": frames", transforms.FramesShown == "missing" ? "(missing)" : transforms.FramesShown, "is not a list of frames.", "Rerun this shard."));
                         continue;
                     }
                     var expected = new HashSet<int>(shard.Manifest.Views(split));
-                    for (var k = 0; k < list.Count; k++)
+                    foreach (var frame in transforms.Frames)
                     {
+                        var k = frame.Index;
                         var where = file + ": frames[" + Str(k) + "]";
-                        var frame = list[k] as JObject;
-                        var filePath = frame?["file_path"]?.Type == JTokenType.String ? (string)frame["file_path"] : null;
+                        var filePath = frame.FilePath;
                         var match = filePath == null ? null : FilePathPattern.Match(filePath.Replace('\\', '/'));
                         if (match == null || !match.Success || match.Groups[1].Value != split
                             || !int.TryParse(match.Groups[2].Value, NumberStyles.None, CultureInfo.InvariantCulture, out var index))
@@ -90,7 +90,7 @@ namespace NerfDatasetCreator
                         }
                         if (!expected.Contains(index))
                             warnings.Add(where + ": " + split + " r_" + Str(index) + " was not assigned to " + shard.Name + " but is kept.");
-                        frames.Add(new MergeFrame { Split = split, Index = index, Shard = shard, Json = frame });
+                        frames.Add(new MergeFrame { Split = split, Index = index, Shard = shard, Frame = frame });
                     }
                 }
 
@@ -123,7 +123,7 @@ namespace NerfDatasetCreator
                 if (withFile.Count < 2) continue;
                 var reference = withFile[0];
                 foreach (var other in withFile.Skip(1))
-                    CompareKeys(reference, other, reference.Transforms[split], other.Transforms[split], ShardMerger.TransformsFileName(split), new[] { "frames" }, problems, null);
+                    CompareKeys(reference, other, reference.Transforms[split].Top, other.Transforms[split].Top, ShardMerger.TransformsFileName(split), new[] { "frames" }, problems, null);
             }
 
             var configured = shards.Where(s => s.Config != null).ToList();

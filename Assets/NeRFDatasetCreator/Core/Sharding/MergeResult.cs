@@ -28,10 +28,11 @@ namespace NerfDatasetCreator
             {
                 try
                 {
-                    if (VerbatimJson.Parse(FileOps.ReadText(System.IO.Path.Combine(output, DatasetLayout.TransformsFileName(split))))["frames"] is Newtonsoft.Json.Linq.JArray frames)
-                        perSplit[split] = frames.Count;
+                    // Counted as the file streams past (DatasetFolder): a merged split of 300 000 frames is not held.
+                    var merged = DatasetFolder.ReadSplit(output, split, DatasetReadMode.Lenient, _ => { });
+                    if (merged.HasFrameList) perSplit[split] = merged.FrameCount;
                 }
-                catch (System.Exception e) when (e is System.IO.IOException || e is System.UnauthorizedAccessException || e is Newtonsoft.Json.JsonException) { }
+                catch (System.Exception e) when (e is System.IO.IOException || e is System.UnauthorizedAccessException || e is SettingsFormatException) { }
             }
             return new MergeResult(output, new ValidationProblem[0], warnings, perSplit, 0, notes) { _finishedEarlier = true };
         }

@@ -49,12 +49,16 @@ namespace NerfDatasetCreator
                 {
                     var reference = shards.FirstOrDefault(s => s.Transforms.ContainsKey(split));
                     if (reference == null) continue;
+                    // The reference shard's top-level keys as written, the kept frames verbatim where its "frames" stood.
+                    var top = reference.Transforms[split];
                     var merged = new JObject();
-                    foreach (var property in reference.Transforms[split].Properties())
-                        merged[property.Name] = property.Name == "frames"
-                            ? new JArray(frames.Where(f => f.Split == split).Select(f => f.Json.DeepClone()))
-                            : property.Value.DeepClone();
-                    if (merged["frames"] == null) merged["frames"] = new JArray(frames.Where(f => f.Split == split).Select(f => f.Json.DeepClone()));
+                    var kept = new JArray(frames.Where(f => f.Split == split).Select(f => f.Frame.Json.DeepClone()));
+                    foreach (var property in top.Top.Properties())
+                    {
+                        if (merged.Count == top.FramesAt) merged["frames"] = kept;
+                        merged[property.Name] = property.Value.DeepClone();
+                    }
+                    if (merged["frames"] == null) merged["frames"] = kept;
                     WriteJson(Path.Combine(staging, ShardMerger.TransformsFileName(split)), merged);
                 }
                 MergeLabels.Write(labels, staging);

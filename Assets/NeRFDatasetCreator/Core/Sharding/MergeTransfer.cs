@@ -4,7 +4,6 @@ using System.Globalization;
 using System.IO;
 using System.Linq;
 using System.Text.RegularExpressions;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -72,37 +71,37 @@ namespace NerfDatasetCreator
             {
                 var owner = frame.Shard.Name;
                 var key = frame.Shard.Folder + "|" + frame.Split + "|" + Str(frame.Index);
-                // Files the frame names: file_path (".png" appended when extensionless, as the loaders do) and any *_path key.
-                foreach (var property in frame.Json.Properties())
+                // Files the frame names, resolved by the dataset's one path rule (DatasetFile): file_path (".png" appended
+                // when extensionless, as the loaders do) and every *_path key.
+                var named = new List<DatasetFile>();
+                if (frame.Frame.Image != null) named.Add(frame.Frame.Image);
+                foreach (var pair in frame.Frame.FileKeys) named.Add(frame.Frame.Named(pair.Key));
+                foreach (var file in named)
                 {
-                    if (property.Value.Type != JTokenType.String) continue;
-                    if (property.Name != "file_path" && !property.Name.EndsWith("_path", StringComparison.Ordinal)) continue;
-                    var relative = ExportPaths.Normalise((string)property.Value);
-                    if (property.Name == "file_path" && Path.GetExtension(relative).Length == 0) relative += ".png";
-                    var where = Path.Combine(frame.Shard.Folder, ShardMerger.TransformsFileName(frame.Split)) + ": " + frame.Split + " r_" + Str(frame.Index) + "." + property.Name;
+                    var relative = file.Relative;
+                    var where = Path.Combine(frame.Shard.Folder, ShardMerger.TransformsFileName(frame.Split)) + ": " + frame.Split + " r_" + Str(frame.Index) + "." + file.Key;
                     if (relative.Length == 0 || Path.IsPathRooted(relative) || relative.Split('/').Contains(".."))
                     {
-                        problems.Add(new ValidationProblem(where, (string)property.Value, "points outside the shard folder.", "Paths in a dataset must be relative and stay inside it."));
+                        problems.Add(new ValidationProblem(where, file.Written, "points outside the shard folder.", "Paths in a dataset must be relative and stay inside it."));
                         continue;
                     }
                     if (IsMetadata(relative))
                     {
-                        problems.Add(new ValidationProblem(where, (string)property.Value, "names the shard's own metadata file; merge never copies or moves a shard's metadata.",
+                        problems.Add(new ValidationProblem(where, file.Written, "names the shard's own metadata file; merge never copies or moves a shard's metadata.",
                             "Correct the key: *_path keys name a view's image files."));
                         continue;
                     }
-                    var source = PathSafety.Inside(frame.Shard.Folder, relative, out var outside);
-                    if (source == null)
+                    if (!file.IsInside)
                     {
-                        problems.Add(new ValidationProblem(where, (string)property.Value, outside + ".", "Paths in a dataset must stay inside it."));
+                        problems.Add(new ValidationProblem(where, file.Written, file.Outside + ".", "Paths in a dataset must stay inside it."));
                         continue;
                     }
-                    if (!File.Exists(source))
+                    if (!file.Exists)
                     {
-                        problems.Add(new ValidationProblem(where, (string)property.Value, "names " + source + ", which does not exist.", "Rerun " + owner + "; its capture did not finish."));
+                        problems.Add(new ValidationProblem(where, file.Written, "names " + file.FullPath + ", which does not exist.", "Rerun " + owner + "; its capture did not finish."));
                         continue;
                     }
-                    Add(source, relative, owner);
+                    Add(file.FullPath, relative, owner);
                 }
                 if (byView.TryGetValue(key, out var files))
                 {

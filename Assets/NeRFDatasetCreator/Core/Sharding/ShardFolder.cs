@@ -6,12 +6,12 @@ using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
-    /// <summary>One shard folder as merge reads it: its manifest, its transforms files and its config, as JSON.</summary>
+    /// <summary>One shard folder as merge reads it: its manifest, its transforms files (<see cref="DatasetFolder"/>) and its config, as JSON.</summary>
     sealed class ShardFolder
     {
         public string Folder;
         public ShardManifest Manifest;
-        public readonly Dictionary<string, JObject> Transforms = new Dictionary<string, JObject>();
+        public readonly Dictionary<string, DatasetSplitFile> Transforms = new Dictionary<string, DatasetSplitFile>();
         /// <summary>The shard's dataset_config.json, or null when it has none or it could not be read (a problem then).</summary>
         public DatasetConfig Config;
         public string Name => "shard " + Manifest.Shard + " (" + Folder + ")";
@@ -56,9 +56,10 @@ namespace NerfDatasetCreator
                 }
                 foreach (var split in ViewCounts.SplitNames)
                 {
-                    var json = ReadJson(Path.Combine(folder, ShardMerger.TransformsFileName(split)), problems);
-                    if (json is JObject o) shard.Transforms[split] = o;
-                    else if (json != null) problems.Add(new ValidationProblem(Path.Combine(folder, ShardMerger.TransformsFileName(split)), json.Type.ToString(), "is not a JSON object.", "Recapture this shard."));
+                    var transforms = ReadTransforms(folder, split, problems);
+                    if (transforms == null) continue;
+                    if (transforms.IsObject) shard.Transforms[split] = transforms;
+                    else problems.Add(new ValidationProblem(Path.Combine(folder, ShardMerger.TransformsFileName(split)), transforms.TypeShown, "is not a JSON object.", "Recapture this shard."));
                 }
                 shard.Config = ReadConfig(folder, problems);
                 shards.Add(shard);
@@ -85,21 +86,23 @@ namespace NerfDatasetCreator
             return config.Config;
         }
 
-        static JToken ReadJson(string path, List<ValidationProblem> problems)
+        /// <summary>A shard's split file as the one dataset reader reads it (lenient: merge checks what it needs), or null with the problem.</summary>
+        static DatasetSplitFile ReadTransforms(string folder, string split, List<ValidationProblem> problems)
         {
+            var path = Path.Combine(folder, ShardMerger.TransformsFileName(split));
             if (!File.Exists(path)) return null;
             try
             {
-                return VerbatimJson.Parse(FileOps.ReadText(path));
+                return DatasetFolder.ReadSplit(folder, split, DatasetReadMode.Lenient);
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 problems.Add(new ValidationProblem(path, "(unreadable)", "cannot be read: " + e.Message, "Check the file's permissions, or recapture this shard."));
                 return null;
             }
-            catch (JsonException e)
+            catch (SettingsFormatException e)
             {
-                problems.Add(new ValidationProblem(path, "(unreadable)", "is not valid JSON: " + e.Message, "Recapture this shard."));
+                problems.Add(new ValidationProblem(path, "(unreadable)", "is not valid JSON: line " + e.Line + ", column " + e.Column + ": " + e.Detail, "Recapture this shard."));
                 return null;
             }
         }

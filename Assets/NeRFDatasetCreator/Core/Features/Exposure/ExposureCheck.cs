@@ -1,8 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
-using Newtonsoft.Json;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -23,7 +21,6 @@ namespace NerfDatasetCreator
         public string Name => "exposure";
 
         readonly string _root;
-        readonly Dictionary<string, JArray> _frames = new Dictionary<string, JArray>();
         readonly Dictionary<string, (int with, int without)> _counts = new Dictionary<string, (int, int)>();
         int _recorded, _compared, _bad;
         double _worst;
@@ -33,27 +30,29 @@ namespace NerfDatasetCreator
         public void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems)
         {
             if (!images.HasColour) return;
-            var frame = Frame(view);
+            var frame = view.Source;
             if (frame == null) return;
             // The frame's own image (file_path), whose clean image clean_path names; with motion blur ColourFile is the sharp one.
             var image = view.FrameImageFile;
             var file = "./" + image;
-            var hasEv = frame[ExposureKeys.Ev] != null;
-            var hasWb = frame[ExposureKeys.WhiteBalance] != null;
+            var read = frame.Exposure;
+            var hasEv = read.HasEv;
+            var hasWb = read.HasWhiteBalance;
             _counts.TryGetValue(view.Split, out var count);
             _counts[view.Split] = hasEv || hasWb ? (count.with + 1, count.without) : (count.with, count.without + 1);
             if (!hasEv && !hasWb) return;
             _recorded++;
-            if (!TryValues(frame, out var exposure, out var why))
+            if (!(read.Values is ViewExposure exposure))
             {
-                problems.Add(new DatasetCheckProblem(Name, file, view.Frame, why));
+                problems.Add(new DatasetCheckProblem(Name, file, view.Frame, read.Problem));
                 _bad++;
                 return;
             }
-            var clean = frame[ExposureKeys.CleanPath]?.Type == JTokenType.String ? (string)frame[ExposureKeys.CleanPath] : null;
-            if (clean == null) return;
-            var relative = ExportPaths.Normalise(clean);
-            if (PathSafety.Inside(_root, relative, out _) == null || !File.Exists(Path.Combine(_root, relative)))
+            var cleanFile = frame.Named(ExposureKeys.CleanPath);
+            if (cleanFile == null) return;
+            var clean = cleanFile.Written;
+            var relative = cleanFile.Relative;
+            if (!cleanFile.Exists)
             {
                 problems.Add(new DatasetCheckProblem(Name, file, view.Frame, ExposureKeys.CleanPath + " names " + clean + ", which is not a file inside the dataset."));
                 _bad++;
@@ -114,57 +113,6 @@ namespace NerfDatasetCreator
             return new DatasetCheckResult(Name, _bad > 0 ? DatasetCheckStatus.Failed : DatasetCheckStatus.Passed, figure,
                 "exposure_ev in ±" + ExposureSettings.MaxEv + ", white_balance gains in [1/16, 16], on all frames of a split or none; ≤ " +
                 CheckFigures.Percent(MaxMismatch) + " of samples off clean × gain", _bad > 0 ? _bad + " problem(s)" : null);
-        }
-
-        JObject Frame(CheckView view)
-        {
-            if (!_frames.TryGetValue(view.Split, out var frames))
-            {
-                frames = null;
-                try
-                {
-                    var path = Path.Combine(_root, DatasetLayout.TransformsFileName(view.Split));
-                    frames = JObject.Parse(File.ReadAllText(path))["frames"] as JArray;
-                }
-                catch (Exception e) when (e is JsonException || e is IOException || e is UnauthorizedAccessException)
-                {
-                    // The "dataset" check reports an unreadable transforms file.
-                }
-                _frames[view.Split] = frames;
-            }
-            return frames != null && view.Frame < frames.Count ? frames[view.Frame] as JObject : null;
-        }
-
-        /// <summary>The frame's values, or why they are unusable.</summary>
-        public static bool TryValues(JObject frame, out ViewExposure exposure, out string why)
-        {
-            exposure = ViewExposure.Identity;
-            why = null;
-            if (!JsonValues.TryNumber(frame[ExposureKeys.Ev], out var ev) || double.IsNaN(ev) || double.IsInfinity(ev))
-            {
-                why = ExposureKeys.Ev + " is " + Describe(frame[ExposureKeys.Ev]) + ", not a finite number of stops (it is written with " + ExposureKeys.WhiteBalance + ").";
-                return false;
-            }
-            if (Math.Abs(ev) > ExposureSettings.MaxEv)
-            {
-                why = ExposureKeys.Ev + " " + DatasetCheckResult.Number(ev) + " is outside ±" + ExposureSettings.MaxEv + " stops.";
-                return false;
-            }
-            var gains = new double[3];
-            if (!(frame[ExposureKeys.WhiteBalance] is JArray wb) || wb.Count != 3
-                || !JsonValues.TryNumber(wb[0], out gains[0]) || !JsonValues.TryNumber(wb[1], out gains[1]) || !JsonValues.TryNumber(wb[2], out gains[2]))
-            {
-                why = ExposureKeys.WhiteBalance + " is " + Describe(frame[ExposureKeys.WhiteBalance]) + ", not three gains [r, g, b].";
-                return false;
-            }
-            foreach (var g in gains)
-                if (!(g >= ExposureSettings.MinGain && g <= ExposureSettings.MaxGain))
-                {
-                    why = ExposureKeys.WhiteBalance + " [" + Triple(gains[0], gains[1], gains[2]) + "] has a gain outside [1/16, 16].";
-                    return false;
-                }
-            exposure = new ViewExposure(ev, gains[0], gains[1], gains[2]);
-            return true;
         }
 
         /// <summary>The colour samples of <paramref name="modified"/> (8-bit RGB or RGBA) outside the rounding interval of <paramref name="clean"/> × the scales.</summary>
@@ -229,9 +177,8 @@ namespace NerfDatasetCreator
 
         static string Layout(PngImage png) => png.Width + "×" + png.Height + " " + png.BitDepth + "-bit, " + png.Channels + " channel(s)";
 
-        static string Triple(double a, double b, double c) =>
+        internal static string Triple(double a, double b, double c) =>
             DatasetCheckResult.Number(a, "0.###") + ", " + DatasetCheckResult.Number(b, "0.###") + ", " + DatasetCheckResult.Number(c, "0.###");
 
-        static string Describe(JToken t) => t == null ? "missing" : t.ToString(Formatting.None);
     }
 }

@@ -5,8 +5,8 @@ using System.IO;
 namespace NerfDatasetCreator
 {
     /// <summary>
-    /// What the label exports read of a dataset: its <c>labels.json</c> and, per frame, the instance map beside the
-    /// image (<c>r_&lt;i&gt;_instance_0000.png</c>, 16-bit grey, 0 = background). A dataset without labels, or a frame
+    /// What the label exports read of a dataset: its <c>labels.json</c> and, per frame, the instance map its
+    /// <c>instance_path</c> names (<c>r_&lt;i&gt;_instance_0000.png</c>, 16-bit grey, 0 = background). A dataset without labels, or a frame
     /// without its map, is refused before anything is written, naming the file and the fix.
     /// </summary>
     public sealed class LabelledDataset
@@ -38,9 +38,13 @@ namespace NerfDatasetCreator
             var problems = new List<ValidationProblem>();
             foreach (var frame in scene.Frames)
             {
-                var map = InstanceMapOf(frame.ImagePath);
+                // Keys only: the map the frame's instance_path names (DatasetFolder), never one guessed from the image's name.
+                var map = frame.InstancePath;
                 maps.Add(map);
-                if (!File.Exists(Path.Combine(scene.RootDirectory, map)))
+                if (map == null)
+                    problems.Add(new ValidationProblem(what, frame.ImagePath, "names no instance map inside the dataset (" + LabelFrameKeys.Instance + "): every frame needs one, and files are never guessed from the image's name.",
+                        "Capture the dataset again with labels on for every split (this plugin writes " + LabelFrameKeys.Instance + " with each map)."));
+                else if (!File.Exists(Path.Combine(scene.RootDirectory, map)))
                     problems.Add(new ValidationProblem(what, map, "is missing: every frame needs its instance map beside its image.",
                         "Restore it from the capture, or capture the dataset again with labels on for every split."));
             }

@@ -18,30 +18,55 @@ namespace NerfDatasetCreator
         public static readonly string[] CoefficientKeys = { "k1", "k2", "k3", "k4", "p1", "p2" };
 
         /// <summary>
-        /// The one lens of <paramref name="json"/>'s frames, or null for a pinhole. Problems (an unknown model, a
-        /// coefficient that is not a number or not the model's, frames that disagree) are added to <paramref name="problems"/>.
+        /// The one lens of a transforms file, read frame by frame as <see cref="DatasetFolder"/> streams it: <see cref="Add"/>
+        /// each frame, then <see cref="Finish"/>. The lens is null for a pinhole. Problems (an unknown model, a coefficient
+        /// that is not a number or not the model's, frames that disagree) go to <see cref="Problems"/>, one report per file.
         /// </summary>
-        public static LensDistortion Read(JObject json, string fileName, ICollection<ValidationProblem> problems)
+        public sealed class OfFile
         {
-            var frames = (json["frames"] as JArray)?.OfType<JObject>().ToList() ?? new List<JObject>();
-            if (frames.Count == 0) return Lens(json, null, fileName, problems);
-            LensDistortion first = null;
-            var firstIndex = -1;
-            for (var i = 0; i < frames.Count; i++)
+            readonly string _fileName;
+            LensDistortion _first;
+            int _objects;
+            bool _done;
+
+            public OfFile(string fileName) { _fileName = fileName; }
+
+            public List<ValidationProblem> Problems { get; } = new List<ValidationProblem>();
+
+            /// <summary>Reads one entry of <c>frames</c> (entries that are not objects are not counted, as before).</summary>
+            public void Add(JObject top, JObject frame)
             {
-                var count = problems.Count;
-                var lens = Lens(json, frames[i], fileName + ": frames[" + i + "]", problems);
-                if (problems.Count > count) return null; // one report per file is enough
-                if (i == 0) { first = lens; firstIndex = 0; continue; }
-                if (!Same(first, lens))
+                if (_done || frame == null) return;
+                var i = _objects++;
+                var count = Problems.Count;
+                var lens = Lens(top, frame, _fileName + ": frames[" + i + "]", Problems);
+                if (Problems.Count > count) { _done = true; _first = null; return; } // one report per file is enough
+                if (i == 0) { _first = lens; return; }
+                if (!Same(_first, lens))
                 {
-                    problems.Add(new ValidationProblem(fileName + ": frames[" + i + "]", Describe(lens),
-                        "has another lens than frames[" + firstIndex + "] (" + Describe(first) + "); convert writes one shared camera for the whole dataset.",
+                    Problems.Add(new ValidationProblem(_fileName + ": frames[" + i + "]", Describe(lens),
+                        "has another lens than frames[0] (" + Describe(_first) + "); convert writes one shared camera for the whole dataset.",
                         "Give every frame the same camera_model and k1…k4, p1, p2 (or undistort the images to one pinhole first)."));
-                    return null;
+                    _done = true;
+                    _first = null;
                 }
             }
-            return first;
+
+            /// <summary>The file's lens: its frames' one lens, or the top-level keys' when it has no frame.</summary>
+            public LensDistortion Finish(JObject top) => _objects == 0 && !_done ? Lens(top, null, _fileName, Problems) : _first;
+        }
+
+        /// <summary>The coefficient keys a frame (or, failing it, its file) gives a non-zero number, in <see cref="CoefficientKeys"/> order.</summary>
+        public static IReadOnlyList<string> NonZeroCoefficients(JObject top, JObject frame)
+        {
+            List<string> keys = null;
+            foreach (var key in CoefficientKeys)
+            {
+                var t = frame?[key] ?? top?[key];
+                if (t != null && (t.Type == JTokenType.Float || t.Type == JTokenType.Integer) && (double)t != 0)
+                    (keys = keys ?? new List<string>()).Add(key);
+            }
+            return keys ?? (IReadOnlyList<string>)System.Array.Empty<string>();
         }
 
         /// <summary>Whether two lenses (null = pinhole) are the same model with the same coefficients, bit for bit.</summary>

@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -31,18 +30,19 @@ namespace NerfDatasetCreator
         double _worst;
 
         /// <summary>Reads a frame's motion blur keys into <paramref name="view"/> (for <see cref="CheckDatasetReader"/>).</summary>
-        internal static void ReadKeys(string root, JObject file, JObject frame, CheckView view, string fileName, int index, List<DatasetCheckProblem> problems)
+        internal static void ReadKeys(DatasetFrame frame, CheckView view, string fileName, int index, List<DatasetCheckProblem> problems)
         {
-            var sharp = CheckDatasetReader.Extra(root, frame, MotionBlurKeys.SharpPath);
+            var sharp = frame.Existing(MotionBlurKeys.SharpPath);
             if (sharp != null)
             {
                 view.BlurredFile = view.ColourFile;
                 view.ColourFile = sharp;
             }
-            foreach (var key in new[] { MotionBlurKeys.Start, MotionBlurKeys.End })
+            var shutter = frame.Shutter;
+            foreach (var (key, present, written) in new[] { (MotionBlurKeys.Start, shutter.HasStart, shutter.Start), (MotionBlurKeys.End, shutter.HasEnd, shutter.End) })
             {
-                if (frame[key] == null) continue;
-                if (!CheckDatasetReader.TryPose(frame[key], out var pose, out var why))
+                if (!present) continue;
+                if (!CheckDatasetReader.TryPose(written, out var pose, out var why))
                 {
                     problems.Add(new DatasetCheckProblem(CheckDatasetReader.CheckName, fileName, index, key + " " + why));
                     continue;
@@ -52,13 +52,7 @@ namespace NerfDatasetCreator
                 if (key == MotionBlurKeys.Start) view.ShutterStart = pose;
                 else view.ShutterEnd = pose;
             }
-            var shutter = frame[MotionBlurKeys.RollingShutter] ?? file[MotionBlurKeys.RollingShutter];
-            if (shutter is JArray array && array.Count >= 3)
-            {
-                var values = new double[4];
-                for (var i = 0; i < Math.Min(4, array.Count); i++) JsonValues.TryNumber(array[i], out values[i]);
-                view.RollingShutter = values;
-            }
+            view.RollingShutter = shutter.RollingShutter;
         }
 
         public void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems)

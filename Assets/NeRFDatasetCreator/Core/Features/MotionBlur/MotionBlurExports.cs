@@ -13,34 +13,12 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class MotionBlurExports
     {
-        /// <summary>Reads a frame's motion keys (and its file's <c>rolling_shutter</c>) into <paramref name="frame"/>.</summary>
-        public static void Read(JObject file, JObject json, ExportFrame frame)
+        /// <summary>Carries a frame's motion keys (<see cref="MotionBlurKeys.Read"/>) into <paramref name="frame"/>: finite shutter poses and the rolling shutter.</summary>
+        public static void Read(FrameShutter shutter, ExportFrame frame)
         {
-            if (json == null) return;
-            if (TryMatrix(json[MotionBlurKeys.Start], out var start)) frame.ShutterStart = start;
-            if (TryMatrix(json[MotionBlurKeys.End], out var end)) frame.ShutterEnd = end;
-            var rs = json[MotionBlurKeys.RollingShutter] as JArray ?? file?[MotionBlurKeys.RollingShutter] as JArray;
-            if (rs != null && rs.Count >= 3)
-            {
-                var values = new double[4];
-                for (var i = 0; i < System.Math.Min(4, rs.Count); i++) JsonValues.TryNumber(rs[i], out values[i]);
-                frame.RollingShutter = values;
-            }
-        }
-
-        static bool TryMatrix(JToken token, out Matrix4x4d m)
-        {
-            m = Matrix4x4d.Identity;
-            if (!(token is JArray rows) || rows.Count != 4) return false;
-            var values = new double[16];
-            for (var r = 0; r < 4; r++)
-            {
-                if (!(rows[r] is JArray row) || row.Count != 4) return false;
-                for (var c = 0; c < 4; c++)
-                    if (!JsonValues.TryNumber(row[c], out values[r * 4 + c])) return false;
-            }
-            m = Matrix4x4d.FromRowMajor(values);
-            return m.IsFinite;
+            if (shutter.Start is Matrix4x4d start && start.IsFinite) frame.ShutterStart = start;
+            if (shutter.End is Matrix4x4d end && end.IsFinite) frame.ShutterEnd = end;
+            if (shutter.RollingShutter != null) frame.RollingShutter = shutter.RollingShutter;
         }
 
         static bool Blurred(ExportScene scene) => scene.Frames.Any(f => f.ShutterStart != null || f.ShutterEnd != null);

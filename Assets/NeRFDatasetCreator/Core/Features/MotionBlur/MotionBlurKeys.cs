@@ -1,3 +1,5 @@
+using Newtonsoft.Json.Linq;
+
 namespace NerfDatasetCreator
 {
     /// <summary>
@@ -48,5 +50,28 @@ namespace NerfDatasetCreator
         public const string SharpPath = "sharp_path";
         public const string RollingShutter = "rolling_shutter";
         public const string Record = "motion_blur";
+
+        /// <summary>
+        /// Reads a frame's shutter poses and its (or its file's, <paramref name="top"/>) rolling shutter; <see cref="DatasetFolder"/>
+        /// calls it for every frame. <c>sharp_path</c> is a file key, resolved with the frame's other files.
+        /// </summary>
+        public static FrameShutter Read(JObject top, JObject frame)
+        {
+            if (frame == null) return FrameShutter.None;
+            var start = frame[Start];
+            var end = frame[End];
+            var rs = frame[RollingShutter] as JArray ?? top?[RollingShutter] as JArray;
+            if (start == null && end == null && rs == null) return FrameShutter.None;
+            var shutter = new FrameShutter { HasStart = start != null, HasEnd = end != null };
+            if (JsonMatrix.TryRead(start, out var s)) shutter.Start = s;
+            if (JsonMatrix.TryRead(end, out var e)) shutter.End = e;
+            if (rs != null && rs.Count >= 3)
+            {
+                var values = new double[4];
+                for (var i = 0; i < System.Math.Min(4, rs.Count); i++) JsonValues.TryNumber(rs[i], out values[i]);
+                shutter.RollingShutter = values;
+            }
+            return shutter;
+        }
     }
 }

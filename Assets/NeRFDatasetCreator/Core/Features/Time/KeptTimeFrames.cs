@@ -1,24 +1,23 @@
 using System;
 using System.Collections;
 using System.Collections.Generic;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
     /// <summary>
     /// What <see cref="TimeDatasetChecks.Keep"/> kept of each frame of a transforms file, in order, holding only the
-    /// frames that kept something: every other frame reads as the one shared empty object. A static dataset of
+    /// frames that kept something: every other frame reads as the one shared frame without time keys. A static dataset of
     /// 300 000 frames then costs a count, not a list of 300 000 references; a dynamic one keeps its frames' time keys.
     /// </summary>
-    sealed class KeptTimeFrames : IReadOnlyList<JObject>
+    sealed class KeptTimeFrames : IReadOnlyList<TimeDatasetChecks.Kept>
     {
         readonly List<int> _indices = new List<int>();
-        readonly List<JObject> _kept = new List<JObject>();
+        readonly List<TimeDatasetChecks.Kept> _kept = new List<TimeDatasetChecks.Kept>();
 
         public int Count { get; private set; }
 
         /// <summary>Appends the next frame's <see cref="TimeDatasetChecks.Keep"/> result.</summary>
-        public void Add(JObject kept)
+        public void Add(TimeDatasetChecks.Kept kept)
         {
             if (!ReferenceEquals(kept, TimeDatasetChecks.NoTime))
             {
@@ -28,7 +27,7 @@ namespace NerfDatasetCreator
             Count++;
         }
 
-        public JObject this[int index]
+        public TimeDatasetChecks.Kept this[int index]
         {
             get
             {
@@ -38,7 +37,7 @@ namespace NerfDatasetCreator
             }
         }
 
-        public IEnumerator<JObject> GetEnumerator()
+        public IEnumerator<TimeDatasetChecks.Kept> GetEnumerator()
         {
             var next = 0;
             for (var i = 0; i < Count; i++)

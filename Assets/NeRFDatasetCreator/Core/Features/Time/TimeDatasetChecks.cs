@@ -28,7 +28,7 @@ namespace NerfDatasetCreator
         /// unreadable is absent, as DatasetValidator has said so.
         /// </summary>
         /// <param name="config">The dataset's <c>dataset_config.json</c>, or null when it has none or it cannot be read.</param>
-        public static void Check(DatasetConfig config, DatasetValidationReport report, IReadOnlyDictionary<DatasetSplit, IReadOnlyList<JObject>> frames)
+        public static void Check(DatasetConfig config, DatasetValidationReport report, IReadOnlyDictionary<DatasetSplit, IReadOnlyList<Kept>> frames)
         {
             var record = ReadRecord(config, report);
             foreach (var split in DatasetSplits.All)
@@ -40,31 +40,38 @@ namespace NerfDatasetCreator
             }
         }
 
-        static readonly string[] Keys = { "file_path", TimeKeys.Time, TimeKeys.Seconds, TimeKeys.Camera, TimeKeys.Step };
-        /// <summary>What <see cref="Keep"/> returns for a frame without time keys: one shared object, never changed.</summary>
-        internal static readonly JObject NoTime = new JObject();
+        /// <summary>What the checks keep of one frame: its file_path and its time keys (<see cref="TimeKeys.Read"/>).</summary>
+        public sealed class Kept
+        {
+            public readonly string FilePath;
+            public readonly FrameTime Time;
+
+            public Kept(string filePath, FrameTime time)
+            {
+                FilePath = filePath;
+                Time = time;
+            }
+        }
+
+        /// <summary>What <see cref="Keep"/> returns for a frame without time keys: one shared object.</summary>
+        internal static readonly Kept NoTime = new Kept(null, FrameTime.None);
 
         /// <summary>
         /// What the checks need of one frame: its file_path and time keys — for every frame when the dataset has a time
-        /// record (<paramref name="every"/>), otherwise only for frames with a time key; all others share one empty object,
+        /// record (<paramref name="every"/>), otherwise only for frames with a time key; all others share one object,
         /// so a static dataset of 300 000 frames costs a reference each.
         /// </summary>
-        public static JObject Keep(JObject frame, bool every)
+        public static Kept Keep(DatasetFrame frame, bool every)
         {
-            if (frame == null) return NoTime;
-            if (!every && frame[TimeKeys.Time] == null && frame[TimeKeys.Seconds] == null && frame[TimeKeys.Camera] == null && frame[TimeKeys.Step] == null)
-                return NoTime;
-            var kept = new JObject();
-            foreach (var key in Keys)
-                if (frame[key] is JToken value) kept[key] = value.DeepClone();
-            return kept;
+            if (frame == null || !frame.IsObject) return NoTime;
+            if (!every && !frame.Time.Any) return NoTime;
+            return new Kept(frame.FilePath, frame.Time);
         }
 
         /// <summary>A warning for <c>convert</c>: the formats it writes have no time, so a dynamic dataset loses it.</summary>
-        public static ValidationProblem ConversionWarning(string folder)
+        public static ValidationProblem ConversionWarning(IEnumerable<FrameTime> train)
         {
-            var frames = ReadFrames(Path.Combine(folder, DatasetLayout.TransformsFileName(DatasetSplit.Train)));
-            if (frames == null || !frames.Any(f => f[TimeKeys.Time] != null)) return null;
+            if (train == null || !train.Any(t => t.HasTime)) return null;
             return new ValidationProblem("time", "per-frame time keys",
                 "are dropped: nerfstudio's, instant-ngp's and COLMAP's formats hold no time, so the export is a static dataset of moving content.",
                 "Train dynamic methods on the Blender layout itself (D-NeRF, 4DGaussians, ns-train … dnerf-data), or convert a multi-view capture with --to dynamic3dgs; see Documentation~/dynamic-capture.md.");
@@ -95,49 +102,31 @@ namespace NerfDatasetCreator
             return record;
         }
 
-        static List<JObject> ReadFrames(string path)
+        static void CheckForeign(string file, IReadOnlyList<Kept> frames, DatasetValidationReport report)
         {
-            if (!File.Exists(path)) return null;
-            try
-            {
-                var root = JToken.Parse(FileOps.ReadText(path)) as JObject;
-                return (root?["frames"] as JArray)?.Select(f => f as JObject ?? new JObject()).ToList();
-            }
-            catch (JsonException)
-            {
-                return null;
-            }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
-            {
-                return null; // unreadable or too large: the transforms reader reports it, naming it
-            }
-        }
-
-        static void CheckForeign(string file, IReadOnlyList<JObject> frames, DatasetValidationReport report)
-        {
-            var withTime = frames.Count(f => f[TimeKeys.Time] != null);
+            var withTime = frames.Count(f => f.Time.HasTime);
             if (withTime == 0) return;
             if (withTime < frames.Count)
                 report.Problems.Add(new DatasetProblem(file, -1, null, (frames.Count - withTime) + " of " + frames.Count +
                     " frames have no \"time\" while the others do; 4DGaussians and nerfstudio's dnerf parser read frame[\"time\"] from every frame."));
             for (var i = 0; i < frames.Count; i++)
             {
-                if (frames[i][TimeKeys.Time] == null) continue;
-                if (!TryNumber(frames[i][TimeKeys.Time], out var t)) Problem(report, file, i, frames[i], "time is not a number.");
+                if (!frames[i].Time.HasTime) continue;
+                if (!(frames[i].Time.Time is double t)) Problem(report, file, i, frames[i], "time is not a number.");
                 else if (!(t >= 0 && t <= 1)) Problem(report, file, i, frames[i], "time = " + ValidationProblem.Format(t) + " is outside [0, 1].");
             }
             CheckStartsAtZero(file, frames, report);
         }
 
-        static void CheckOwn(string file, IReadOnlyList<JObject> frames, Record record, DatasetValidationReport report, DatasetSplit split)
+        static void CheckOwn(string file, IReadOnlyList<Kept> frames, Record record, DatasetValidationReport report, DatasetSplit split)
         {
             var times = new double?[frames.Count];
             for (var i = 0; i < frames.Count; i++)
             {
                 var f = frames[i];
-                if (!TryNumber(f[TimeKeys.Time], out var t))
+                if (!(f.Time.Time is double t))
                 {
-                    Problem(report, file, i, f, f[TimeKeys.Time] == null ? "has no \"time\", which every frame of a dynamic dataset needs." : "time is not a number.");
+                    Problem(report, file, i, f, !f.Time.HasTime ? "has no \"time\", which every frame of a dynamic dataset needs." : "time is not a number.");
                     continue;
                 }
                 if (!(t >= 0 && t <= 1))
@@ -147,7 +136,7 @@ namespace NerfDatasetCreator
                 }
                 times[i] = t;
                 var expected = record.Start + t * (record.End - record.Start);
-                if (!TryNumber(f[TimeKeys.Seconds], out var seconds))
+                if (!(f.Time.Seconds is double seconds))
                     Problem(report, file, i, f, "has no number time_seconds (the content time this plugin records beside time).");
                 else if (Math.Abs(seconds - expected) > SecondsTolerance * Math.Max(1, Math.Abs(record.End)))
                     Problem(report, file, i, f, "time_seconds = " + ValidationProblem.Format(seconds) + " but time " + ValidationProblem.Format(t) +
@@ -169,20 +158,18 @@ namespace NerfDatasetCreator
             CheckMultiView(file, frames, times, record, report);
         }
 
-        static void CheckMultiView(string file, IReadOnlyList<JObject> frames, double?[] times, Record record, DatasetValidationReport report)
+        static void CheckMultiView(string file, IReadOnlyList<Kept> frames, double?[] times, Record record, DatasetValidationReport report)
         {
             var seen = new Dictionary<int, SortedSet<int>>();
             var last = new Dictionary<int, double>();
             for (var i = 0; i < frames.Count; i++)
             {
                 var f = frames[i];
-                if (f[TimeKeys.Camera]?.Type != JTokenType.Integer || f[TimeKeys.Step]?.Type != JTokenType.Integer)
+                if (!(f.Time.Camera is int camera) || !(f.Time.Step is int step))
                 {
                     Problem(report, file, i, f, "has no whole-number camera_id and time_step, which a multi-view frame needs.");
                     continue;
                 }
-                var camera = (int)f[TimeKeys.Camera];
-                var step = (int)f[TimeKeys.Step];
                 if (camera < 0 || step < 0 || step >= record.Steps)
                 {
                     Problem(report, file, i, f, "camera_id " + camera + " / time_step " + step + " is outside the " + record.Steps + " recorded steps.");
@@ -214,14 +201,14 @@ namespace NerfDatasetCreator
                     " steps are missing (" + string.Join(", ", missing) + (missingCount > missing.Count ? ", …" : "") + "); multi-view methods need every camera at every step."));
         }
 
-        static void CheckStartsAtZero(string file, IReadOnlyList<JObject> frames, DatasetValidationReport report)
+        static void CheckStartsAtZero(string file, IReadOnlyList<Kept> frames, DatasetValidationReport report)
         {
-            if (frames.Count == 0 || !TryNumber(frames[0][TimeKeys.Time], out var first) || first == 0) return;
+            if (frames.Count == 0 || !(frames[0].Time.Time is double first) || first == 0) return;
             Problem(report, file, 0, frames[0], "time = " + ValidationProblem.Format(first) + ", but D-NeRF's load_blender.py asserts that each split's first frame is at time 0.");
         }
 
-        static void Problem(DatasetValidationReport report, string file, int index, JObject frame, string message) =>
-            report.Problems.Add(new DatasetProblem(file, index, (frame["file_path"] as JValue)?.Value as string, message));
+        static void Problem(DatasetValidationReport report, string file, int index, Kept frame, string message) =>
+            report.Problems.Add(new DatasetProblem(file, index, frame.FilePath, message));
 
         static bool TryNumber(JToken token, out double value)
         {

@@ -1,3 +1,5 @@
+using Newtonsoft.Json.Linq;
+
 namespace NerfDatasetCreator
 {
     /// <summary>
@@ -25,5 +27,27 @@ namespace NerfDatasetCreator
         public const string Seconds = "time_seconds";
         public const string Step = "time_step";
         public const string Camera = "camera_id"; // written with the others by TransformsFramesText
+
+        /// <summary>Reads a frame's time keys (<see cref="DatasetFolder"/> calls it for every frame); <see cref="FrameTime.None"/> when it has none.</summary>
+        public static FrameTime Read(JObject frame)
+        {
+            if (frame == null) return FrameTime.None;
+            var time = frame[Time];
+            var seconds = frame[Seconds];
+            var step = frame[Step];
+            var camera = frame[Camera];
+            if (time == null && seconds == null && step == null && camera == null) return FrameTime.None;
+            return new FrameTime
+            {
+                HasTime = time != null,
+                Time = JsonValues.TryNumber(time, out var t) ? t : (double?)null,
+                HasSeconds = seconds != null,
+                Seconds = JsonValues.TryNumber(seconds, out var s) ? s : (double?)null,
+                Step = JsonValues.TryInt(step, out var k) ? k : (int?)null,
+                Camera = JsonValues.TryInt(camera, out var c) ? c : (int?)null,
+                StepText = step?.ToString(),
+                CameraText = camera?.ToString(),
+            };
+        }
     }
 }

@@ -3,8 +3,6 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using System.Linq;
-using Newtonsoft.Json;
-using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -12,11 +10,11 @@ namespace NerfDatasetCreator
     /// A deliberately small reader of a Blender-format dataset (nerf_synthetic or this plugin's output) for the
     /// converters: <c>transforms_{train,val,test}.json</c> (train required), <c>file_path</c> resolved like the
     /// loaders do (<c>+ ".png"</c> when extensionless), W×H from each PNG's IHDR, <c>camera_angle_x</c> → a square-pixel
-    /// pinhole, optional <c>cx</c>/<c>cy</c>. Picks up this plugin's extras when present for EVERY frame:
-    /// <c>&lt;image&gt;_depth_0000.png</c> (16-bit grey), <c>&lt;image&gt;_mask_0000.png</c> (8-bit grey), <c>points3d.ply</c>
+    /// pinhole, optional <c>cx</c>/<c>cy</c>, all as <see cref="DatasetFolder"/> reads them (lenient). Picks up the extras
+    /// the frames' keys name, from the key only: <c>depth_path</c> (16-bit grey), <c>mask_path</c> (8-bit grey), <c>points3d.ply</c>
     /// when dataset_config.json records it (<see cref="PointCloudOwnership"/>; any other is a warning),
     /// <c>scene_normalisation</c>; train's <c>aabb_scale</c> and the target's reach from <c>dataset_config.json</c>
-    /// (<see cref="DatasetTargetReach"/>) for instant-ngp's cube; the lens distortion (<see cref="TransformsLens"/>). (May later merge with the dataset module's transforms reader.)
+    /// (<see cref="DatasetTargetReach"/>) for instant-ngp's cube; the lens distortion (<see cref="TransformsLens"/>).
     /// </summary>
     public static class BlenderDatasetLoader
     {
@@ -34,7 +32,7 @@ namespace NerfDatasetCreator
 
             var frames = new List<ExportFrame>();
             var images = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
-            var declaredSizes = new List<(string split, JToken w, JToken h)>();
+            var declaredSizes = new List<(string split, string w, string h, double? wValue, double? hValue)>();
             double? angleX = null;
             double? cx = null, cy = null;
             SceneNormalisation normalisation = null;
@@ -51,32 +49,32 @@ namespace NerfDatasetCreator
                     warnings.Add(new ValidationProblem(DatasetLayout.TransformsFileName(split), jsonPath, "is missing; the export has no " + split + " frames.", "bmild/nerf and nerf-pytorch need all three split files."));
                     continue;
                 }
-                JObject json;
-                try { json = JObject.Parse(FileOps.ReadText(jsonPath)); }
-                catch (JsonException e) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, "is not valid JSON: " + e.Message, "Fix or regenerate the file.")); return null; }
+                DatasetSplitFile json;
+                try { json = DatasetFolder.ReadSplit(root, split, DatasetReadMode.Lenient); }
+                catch (SettingsFormatException e) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, "is not valid JSON: line " + e.Line + ", column " + e.Column + ": " + e.Detail, "Fix or regenerate the file.")); return null; }
                 catch (FileTooLargeException e) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, e.Reason, "Pass a dataset whose split files were written by Blender, this plugin or another NeRF tool.")); return null; }
                 catch (Exception e) when (e is IOException || e is UnauthorizedAccessException) { Throw(new ValidationProblem(Path.GetFileName(jsonPath), jsonPath, "cannot be read: " + e.Message, "Check the file's permissions.")); return null; }
 
-                var angle = json["camera_angle_x"];
-                if (!JsonValues.TryNumber(angle, out var angleValue) || !(angleValue > 0 && angleValue < Math.PI))
-                    problems.Add(new ValidationProblem(split + ".camera_angle_x", angle?.ToString() ?? "missing", "must be the horizontal field of view in radians, in (0, π).", "Write camera_angle_x, e.g. 0.6911112070083618 for nerf_synthetic."));
+                if (!(json.CameraAngleX is double angleValue) || !(angleValue > 0 && angleValue < Math.PI))
+                    problems.Add(new ValidationProblem(split + ".camera_angle_x", json.Value("camera_angle_x")?.ToString() ?? "missing", "must be the horizontal field of view in radians, in (0, π).", "Write camera_angle_x, e.g. 0.6911112070083618 for nerf_synthetic."));
                 else if (angleX == null) angleX = angleValue;
                 else if (Math.Abs(angleX.Value - angleValue) > 1e-9)
                     warnings.Add(new ValidationProblem(split + ".camera_angle_x", angleValue.ToString("R", CultureInfo.InvariantCulture), "differs from train's " + angleX.Value.ToString("R", CultureInfo.InvariantCulture) + "; the export uses train's (NeRF itself uses the test file's).", "Write the same field of view in every split."));
-                if (cx == null && json["cx"] != null && json["cy"] != null)
+                if (cx == null && json.Has("cx") && json.Has("cy"))
                 {
-                    if (JsonValues.TryNumber(json["cx"], out var cxValue) && JsonValues.TryNumber(json["cy"], out var cyValue)) { cx = cxValue; cy = cyValue; }
-                    else problems.Add(new ValidationProblem(split + ".cx, cy", json["cx"].ToString(Formatting.None) + ", " + json["cy"].ToString(Formatting.None),
+                    if (json.Intrinsics.Cx is double cxValue && json.Intrinsics.Cy is double cyValue) { cx = cxValue; cy = cyValue; }
+                    else problems.Add(new ValidationProblem(split + ".cx, cy", json.Text("cx") + ", " + json.Text("cy"),
                         "must be the principal point in pixels, two numbers.", "Write cx and cy as numbers (W/2 and H/2 without lens shift), or remove both."));
                 }
-                if (json["w"] != null || json["h"] != null) declaredSizes.Add((split, json["w"], json["h"]));
-                if (normalisation == null && json["scene_normalisation"] != null) normalisation = SceneNormalisation.FromJson(json["scene_normalisation"]);
-                if (split == "train") aabbScale = AabbScale.Declared(json["aabb_scale"], Path.GetFileName(jsonPath), warnings);
+                if (json.Has("w") || json.Has("h")) declaredSizes.Add((split, json.Text("w"), json.Text("h"), json.Intrinsics.W, json.Intrinsics.H));
+                if (normalisation == null && json.Has("scene_normalisation")) normalisation = SceneNormalisation.FromJson(json.Value("scene_normalisation"));
+                if (split == "train") aabbScale = AabbScale.Declared(json.Value("aabb_scale"), Path.GetFileName(jsonPath), warnings);
                 // The lens (k1…k4, p1, p2, camera_model / is_fisheye): one for the whole dataset, carried by every export.
                 // A split without frames has no images, so its lens (or none) cannot contradict the others.
-                if (json["frames"] is JArray withFrames && withFrames.Count > 0)
+                if (json.HasFrameList && json.FrameCount > 0)
                 {
-                    var splitLens = TransformsLens.Read(json, Path.GetFileName(jsonPath), problems);
+                    problems.AddRange(json.LensProblems);
+                    var splitLens = json.Lens;
                     if (lensSource == null) { lens = splitLens; lensSource = Path.GetFileName(jsonPath); }
                     else if (!TransformsLens.Same(lens, splitLens))
                         problems.Add(new ValidationProblem(Path.GetFileName(jsonPath), TransformsLens.Describe(splitLens),
@@ -84,13 +82,13 @@ namespace NerfDatasetCreator
                             "Write the same camera_model and k1…k4, p1, p2 in every split file."));
                 }
 
-                if (!(json["frames"] is JArray list))
+                if (!json.HasFrameList)
                 {
-                    problems.Add(new ValidationProblem(Path.GetFileName(jsonPath) + ": frames", json["frames"] == null ? "missing" : json["frames"].Type.ToString(),
+                    problems.Add(new ValidationProblem(Path.GetFileName(jsonPath) + ": frames", json.FramesShown,
                         "must be a list of frames (empty for an unused split).", "Regenerate the split file."));
                     continue;
                 }
-                if (list.Count == 0)
+                if (json.FrameCount == 0)
                 {
                     // Only train is needed (validate agrees): an unused val or test split converts without frames.
                     if (split == "train")
@@ -101,39 +99,45 @@ namespace NerfDatasetCreator
                             "Nothing to do if the split is unused on purpose (bmild/nerf and nerf-pytorch need " + split + " views)."));
                     continue;
                 }
-                for (var i = 0; i < list.Count; i++)
+                foreach (var frame in json.Frames)
                 {
-                    var field = split + ".frames[" + i + "]";
-                    var frame = list[i] as JObject;
-                    var filePath = frame?["file_path"]?.Type == JTokenType.String ? (string)frame["file_path"] : null;
+                    var field = split + ".frames[" + frame.Index + "]";
+                    var filePath = frame.FilePath;
                     if (filePath == null) { problems.Add(new ValidationProblem(field + ".file_path", "missing", "must be the image path.", "Write file_path, e.g. ./train/r_0.")); continue; }
-                    if (PathSafety.Inside(root, filePath, out var outside) == null) { problems.Add(new ValidationProblem(field + ".file_path", filePath, outside + "; convert never reads outside the dataset.", "Copy the images into the dataset folder and name them relative to it.")); continue; }
-                    var image = ResolveImage(root, filePath);
-                    if (image == null) { problems.Add(new ValidationProblem(field + ".file_path", filePath, "names no image (looked for the path and the path + \".png\").", "Copy the images next to the split files.")); continue; }
-                    if (PathSafety.Inside(root, image, out outside) == null) { problems.Add(new ValidationProblem(field + ".file_path", filePath, outside + "; convert never reads outside the dataset.", "Copy the images into the dataset folder.")); continue; }
+                    var imageFile = frame.Image;
+                    if (!imageFile.IsInside) { problems.Add(new ValidationProblem(field + ".file_path", filePath, imageFile.Outside + "; convert never reads outside the dataset.", "Copy the images into the dataset folder and name them relative to it.")); continue; }
+                    if (!imageFile.Exists) { problems.Add(new ValidationProblem(field + ".file_path", filePath, "names no image (looked for the path and the path + \".png\").", "Copy the images next to the split files.")); continue; }
+                    var image = imageFile.Relative;
                     if (!images.Add(image)) { problems.Add(new ValidationProblem(field + ".file_path", filePath, "names " + image + ", which another frame already uses; the export would hold it twice.", "Give every frame its own image.")); continue; }
-                    if (!TryMatrix(frame["transform_matrix"], out var c2w, out var reason)) { problems.Add(new ValidationProblem(field + ".transform_matrix", frame["transform_matrix"]?.ToString(Formatting.None) ?? "missing", reason, "Write a 4×4 rigid camera-to-world matrix.")); continue; }
+                    if (!TryMatrix(frame.TransformMatrix, out var c2w, out var reason)) { problems.Add(new ValidationProblem(field + ".transform_matrix", frame.Text("transform_matrix") ?? "missing", reason, "Write a 4×4 rigid camera-to-world matrix.")); continue; }
 
                     var header = ReadPng(root, image);
                     if (size == null) { size = header; sizeSource = image; }
                     else if (header.Width != size.Width || header.Height != size.Height)
                         problems.Add(new ValidationProblem(field + ".file_path", image, $"is {header.Width}×{header.Height} but {sizeSource} is {size.Width}×{size.Height}.", "Every loader needs one image size for the whole dataset."));
-                    var depth = Extra(root, image, DatasetLayout.Suffix(DatasetFileKind.DepthPng), 16, size, "depth", out var unusableDepth);
-                    var mask = Extra(root, image, DatasetLayout.Suffix(DatasetFileKind.MaskPng), 8, size, "mask", out var unusableMask);
+                    // Keys only: the files the frame names (depth_path, else nerfstudio's depth_file_path; mask_path), never
+                    // a file guessed from the image's name (nerf_synthetic's own r_0_depth_0000.png are 8-bit pictures).
+                    var depth = Extra(frame.Named("depth_path") ?? frame.Named("depth_file_path"), image, 16, size, "depth", out var unusableDepth);
+                    var mask = Extra(frame.Named("mask_path"), image, 8, size, "mask", out var unusableMask);
                     // Every unusable companion is named: left out here, refused by colmap --depths (GaussianSplattingDepths.Check).
                     if (unusableDepth != null) warnings.Add(LeftOut(unusableDepth));
                     if (unusableMask != null) warnings.Add(LeftOut(unusableMask));
-                    frames.Add(new ExportFrame(split, image, c2w, depth, mask,
-                        JsonValues.TryNumber(frame["time"], out var time) ? time : (double?)null, unusableDepth));
-                    MotionBlurExports.Read(json, frame, frames[frames.Count - 1]);
+                    var instance = frame.Named(LabelFrameKeys.Instance);
+                    var exportFrame = new ExportFrame(split, image, c2w, depth, mask, frame.Time.Time, unusableDepth)
+                    {
+                        Timing = frame.Time,
+                        InstancePath = instance != null && instance.IsInside ? instance.Relative : null,
+                    };
+                    MotionBlurExports.Read(frame.Shutter, exportFrame);
+                    frames.Add(exportFrame);
                 }
             }
             InvalidParameterException.ThrowIfAny(problems.ToArray());
             if (angleX == null || size == null) Throw(new ValidationProblem("datasetDir", root, "has no usable frame.", "Regenerate the dataset."));
 
-            foreach (var (split, w, h) in declaredSizes)
-                if (!(JsonValues.TryNumber(w, out var wValue) && wValue == size.Width && JsonValues.TryNumber(h, out var hValue) && hValue == size.Height))
-                    warnings.Add(new ValidationProblem(split + ".w, h", (w?.ToString(Formatting.None) ?? "?") + " × " + (h?.ToString(Formatting.None) ?? "?"),
+            foreach (var (split, w, h, wValue, hValue) in declaredSizes)
+                if (!(wValue == size.Width && hValue == size.Height))
+                    warnings.Add(new ValidationProblem(split + ".w, h", (w ?? "?") + " × " + (h ?? "?"),
                         "differ from the images' " + size.Width + " × " + size.Height + "; convert uses the images' size and ignores w and h.", "Write the images' size as w and h (validate reports it too)."));
             ReportPartial(frames, f => f.DepthPath, "depth", warnings);
             ReportPartial(frames, f => f.MaskPath, "mask", warnings);
@@ -154,14 +158,6 @@ namespace NerfDatasetCreator
                 declaredAabbScale: aabbScale, targetReach: DatasetTargetReach.Read(config, warnings), insideOut: config.Config?.InsideOut == true, lens: lens);
         }
 
-        /// <summary>The root-relative image path with extension, or null when neither the path nor path + ".png" exists.</summary>
-        static string ResolveImage(string root, string filePath)
-        {
-            var relative = ExportPaths.Normalise(filePath);
-            if (Path.HasExtension(relative) && File.Exists(Path.Combine(root, relative))) return relative;
-            return File.Exists(Path.Combine(root, relative + ".png")) ? relative + ".png" : null;
-        }
-
         /// <summary>The PNG header of a dataset image; a file that is not a whole PNG is a problem naming it.</summary>
         static PngInfo ReadPng(string root, string relativePath)
         {
@@ -177,24 +173,24 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>
-        /// A companion image (depth, mask) of the plugin's layout if it exists with the expected format; a file that
-        /// exists but cannot be used — another bit depth, another size, a header claiming some other size, truncated,
-        /// unreadable, a link — is null with <paramref name="unusable"/> naming it and saying why (one rule for all of them).
+        /// A companion image (depth, mask) the frame's key names, if it exists inside the dataset with the expected format;
+        /// a file that is named but cannot be used — another bit depth, another size, a header claiming some other size,
+        /// truncated, unreadable, outside the dataset or through a link — is null with <paramref name="unusable"/> naming it
+        /// and saying why (one rule for all of them). A named file that does not exist is left out silently (validate reports it).
         /// </summary>
-        static string Extra(string root, string image, string suffix, int bitDepth, PngInfo size, string what, out ValidationProblem unusable)
+        static string Extra(DatasetFile file, string image, int bitDepth, PngInfo size, string what, out ValidationProblem unusable)
         {
             unusable = null;
-            var stem = image.Substring(0, image.Length - Path.GetExtension(image).Length);
-            var candidate = stem + suffix;
-            var path = Path.Combine(root, candidate);
-            if (!File.Exists(path)) return null;
+            if (file == null) return null;
+            var candidate = file.Relative;
             string why = null;
-            if (PathSafety.IsLink(path)) why = "is a symbolic link, which convert never follows";
+            if (!file.IsInside) why = file.Outside; // outside the dataset or through a link: never read
+            else if (!file.Exists) return null;
             else
             {
                 try
                 {
-                    var h = PngInfo.Read(path);
+                    var h = PngInfo.Read(file.FullPath);
                     if (h.ColorType != PngInfo.ColorTypeGray || h.BitDepth != bitDepth)
                         why = "is " + h.Describe() + ", not " + bitDepth + "-bit grey";
                     else if (h.Width != size.Width || h.Height != size.Height)
@@ -204,7 +200,7 @@ namespace NerfDatasetCreator
                 catch (Exception e) when (e is IOException || e is UnauthorizedAccessException) { why = "cannot be read (" + e.Message.TrimEnd('.') + ")"; }
             }
             if (why == null) return candidate;
-            unusable = new ValidationProblem(what, candidate, why + ", not this plugin's " + what + " layout (Documentation~/output-format.md)",
+            unusable = new ValidationProblem(what, candidate, why + (file.IsInside ? ", not this plugin's " + what + " layout (Documentation~/output-format.md)" : ""),
                 "Re-capture the " + what + " with this plugin, or delete the file to export " + image + " without " + what + ".");
             return null;
         }
@@ -222,21 +218,11 @@ namespace NerfDatasetCreator
                     $"Re-capture with {what} for every split."));
         }
 
-        static bool TryMatrix(JToken token, out Matrix4x4d matrix, out string reason)
+        static bool TryMatrix(Matrix4x4d? written, out Matrix4x4d matrix, out string reason)
         {
-            matrix = Matrix4x4d.Identity;
+            matrix = written ?? Matrix4x4d.Identity;
             reason = "must be a 4×4 array of numbers.";
-            if (!(token is JArray rows) || rows.Count != 4) return false;
-            var values = new double[16];
-            for (var r = 0; r < 4; r++)
-            {
-                if (!(rows[r] is JArray row) || row.Count != 4) return false;
-                for (var c = 0; c < 4; c++)
-                {
-                    if (!JsonValues.TryNumber(row[c], out values[r * 4 + c])) return false;
-                }
-            }
-            matrix = Matrix4x4d.FromRowMajor(values);
+            if (!written.HasValue) return false;
             var pose = DatasetValidator.PoseProblems(matrix);
             if (pose.Count > 0)
             {

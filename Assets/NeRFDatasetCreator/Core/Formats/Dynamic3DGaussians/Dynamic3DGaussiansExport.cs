@@ -113,23 +113,20 @@ namespace NerfDatasetCreator
             var frames = scene.Split(name).ToList();
             if (frames.Count == 0) return null;
             var file = DatasetLayout.TransformsFileName(split);
-            var json = (JArray)JObject.Parse(FileOps.ReadText(Path.Combine(scene.RootDirectory, file)))["frames"];
-            // BlenderDatasetLoader keeps every frame in file order or fails, so frames[i] is json[i].
-            if (json.Count != frames.Count || frames.Count % steps != 0)
+            // BlenderDatasetLoader keeps every frame in file order or fails, with its time keys (ExportFrame.Timing).
+            if (frames.Count % steps != 0)
                 throw Refuse(file, frames.Count + " frames", "is not " + steps + " time steps × the same number of cameras.", "Re-capture the split in multi-view mode.");
             var grid = new Grid { Cameras = frames.Count / steps, FirstId = firstId };
             grid.Frames = new ExportFrame[steps, grid.Cameras];
             for (var i = 0; i < frames.Count; i++)
             {
-                var f = json[i] as JObject;
-                var step = f?[TimeKeys.Step];
-                var camera = f?[TimeKeys.Camera];
-                if (step?.Type != JTokenType.Integer || camera?.Type != JTokenType.Integer || (int)step < 0 || (int)step >= steps ||
-                    (int)camera < 0 || (int)camera >= grid.Cameras || grid.Frames[(int)step, (int)camera] != null)
-                    throw Refuse(file + ": frames[" + i + "]", (step?.ToString() ?? "no time_step") + ", " + (camera?.ToString() ?? "no camera_id"),
+                var t = frames[i].Timing;
+                if (!(t.Step is int step) || !(t.Camera is int camera) || step < 0 || step >= steps ||
+                    camera < 0 || camera >= grid.Cameras || grid.Frames[step, camera] != null)
+                    throw Refuse(file + ": frames[" + i + "]", (t.StepText ?? "no time_step") + ", " + (t.CameraText ?? "no camera_id"),
                         "is not a new (time_step < " + steps + ", camera_id < " + grid.Cameras + ") pair; every camera must appear once at every step.",
                         "Re-capture the split (nerf-dataset validate lists what is missing).");
-                grid.Frames[(int)step, (int)camera] = frames[i];
+                grid.Frames[step, camera] = frames[i];
             }
             return grid;
         }

@@ -118,6 +118,31 @@ namespace NerfDatasetCreator.Tests
             return testViews;
         }
 
+        /// <summary>
+        /// Makes a split of a dataset <see cref="Write"/> wrote look like nerf_synthetic's: its frames name no pass files
+        /// (no depth_path, normal_path, mask_path keys), and beside each image lie nerf_synthetic's own
+        /// <c>r_&lt;i&gt;_depth_0000.png</c> and <c>r_&lt;i&gt;_normal_0000.png</c> — 8-bit RGBA pictures, not data — and no mask.
+        /// </summary>
+        public static void MakeNerfSyntheticStyle(string folder, string split, IReadOnlyList<View> views, int width, int height)
+        {
+            var path = Path.Combine(folder, "transforms_" + split + ".json");
+            var json = Newtonsoft.Json.Linq.JObject.Parse(File.ReadAllText(path));
+            foreach (Newtonsoft.Json.Linq.JObject frame in (Newtonsoft.Json.Linq.JArray)json["frames"])
+            {
+                frame.Remove("depth_path");
+                frame.Remove("normal_path");
+                frame.Remove("mask_path");
+            }
+            File.WriteAllText(path, json.ToString());
+            for (var i = 0; i < views.Count; i++)
+            {
+                var stem = Path.Combine(folder, split, "r_" + i);
+                File.WriteAllBytes(stem + "_depth_0000.png", PngWriter.Encode(views[i].Rgba, width, height, PngPixelFormat.Rgba8));
+                File.WriteAllBytes(stem + "_normal_0000.png", PngWriter.Encode(views[i].Rgba, width, height, PngPixelFormat.Rgba8));
+                File.Delete(stem + "_mask_0000.png");
+            }
+        }
+
         /// <summary>A UV sphere centred at the origin, faces counter-clockwise seen from outside, unit normals.</summary>
         public static SurfaceMesh UvSphere(double radius, int rings, int segments, string name = "sphere")
         {

@@ -98,6 +98,49 @@ namespace NerfDatasetCreator.Tests
             }
         }
 
+        /// <summary>
+        /// Keys only, as check: on a nerf_synthetic-style split whose frames name no pass files, the 8-bit
+        /// <c>r_&lt;i&gt;_depth_0000.png</c> pictures beside the images are not taken for depth (evaluate used to guess them
+        /// and stop with "… is not a 16-bit grey depth PNG"): the colour is scored, depth and normals are skipped with a note.
+        /// </summary>
+        [Test]
+        public void ANerfSyntheticStyleSplitScoresColourAndSkipsThePassesItsFramesDoNotName()
+        {
+            using (var temp = new TempFolder())
+            {
+                var dataset = temp.Combine("sphere");
+                var views = AnalyticSphereDataset.Write(dataset, W, H);
+                AnalyticSphereDataset.MakeNerfSyntheticStyle(dataset, "test", views, W, H);
+                var renders = temp.Combine("plain");
+                Directory.CreateDirectory(renders);
+                for (var i = 0; i < views.Count; i++)
+                {
+                    File.WriteAllBytes(Path.Combine(renders, "r_" + i + ".png"), PngWriter.Encode(AnalyticSphereDataset.Render(views[i], W, H, 10), W, H, PngPixelFormat.Rgb8));
+                    File.WriteAllBytes(Path.Combine(renders, "r_" + i + "_depth_0000.png"), PngWriter.EncodeGray16(views[i].Depth, W, H));
+                    File.WriteAllBytes(Path.Combine(renders, "r_" + i + "_normal_0000.png"), PngWriter.Encode(views[i].Normals, W, H, PngPixelFormat.Rgb8));
+                }
+                Assert.That(PngInfo.Read(Path.Combine(dataset, "test", "r_0_depth_0000.png")).BitDepth, Is.EqualTo(8), "the picture beside the image is not depth");
+
+                var result = RenderEvaluator.Run(Options(dataset, renders));
+
+                Assert.That(result.Views.Count, Is.EqualTo(3));
+                foreach (var view in result.Views)
+                {
+                    Assert.That(view.Psnr, Is.GreaterThan(20).And.LessThan(double.PositiveInfinity), "the colour is scored");
+                    Assert.That(view.Ssim, Is.GreaterThan(0.5).And.LessThan(1));
+                    Assert.That(view.Depth, Is.Null, "depth is not scored");
+                    Assert.That(view.Normals, Is.Null, "normals are not scored");
+                }
+                Assert.That(result.Notes, Has.Some.EqualTo("The renders include depth, but the frames of the dataset's test split name no depth file (depth_path; files are never guessed from the image names): depth not scored."));
+                Assert.That(result.Notes, Has.Some.EqualTo("The renders include normals, but the frames of the dataset's test split name no normal file (normal_path; files are never guessed from the image names): normals not scored."));
+                var metrics = JObject.Parse(File.ReadAllText(Path.Combine(renders, "evaluation-test", "metrics.json")));
+                Assert.That((double)metrics["mean"]["psnr"], Is.EqualTo(result.Views.Average(v => v.Psnr)).Within(1e-9));
+                Assert.That(metrics["mean"]["depth"], Is.Null);
+                Assert.That(metrics["notes"].Select(n => (string)n), Has.Some.Contains("name no depth file (depth_path"));
+                Assert.That(File.ReadAllText(Path.Combine(renders, "evaluation-test", "report.html")), Does.Contain("name no depth file (depth_path"));
+            }
+        }
+
         [Test]
         public void GeometryIsScoredAgainstTheGeometryPacksObservedPoints()
         {

@@ -280,6 +280,15 @@ namespace NerfDatasetCreator.Tests
         {
             foreach (var image in _lego.Poses.Keys)
                 TestPng.Write(Path.Combine(_lego.Root, image.Replace(".png", "_depth_0000.png")), 800, 800, 16, PngInfo.ColorTypeGray);
+            // Convert takes the depth a frame's depth_path names (keys only, never guessed from the image's name).
+            Assert.That(BlenderDatasetLoader.Load(_lego.Root).HasDepth, Is.False, "unnamed depth files are not guessed");
+            foreach (var split in new[] { "train", "val", "test" })
+            {
+                var path = Path.Combine(_lego.Root, "transforms_" + split + ".json");
+                var json = JObject.Parse(File.ReadAllText(path));
+                foreach (JObject frame in (JArray)json["frames"]) frame["depth_path"] = (string)frame["file_path"] + "_depth_0000.png";
+                File.WriteAllText(path, json.ToString());
+            }
 
             var scene = BlenderDatasetLoader.Load(_lego.Root);
             Assert.That(scene.HasDepth, Is.True);

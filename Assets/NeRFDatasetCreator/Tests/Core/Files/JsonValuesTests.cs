@@ -36,7 +36,7 @@ namespace NerfDatasetCreator.Tests
         [Test]
         public void ABigIntegerTransformsValueIsReportedNotThrown()
         {
-            var doc = TransformsReader.Read("{ \"camera_angle_x\": 0.5, \"w\": " + Huge + ", \"frames\": [] }");
+            var doc = DatasetFolder.Read("{ \"camera_angle_x\": 0.5, \"w\": " + Huge + ", \"frames\": [] }");
             Assert.That(doc.Problems, Has.Some.EqualTo("w is not a whole number (" + Huge + ")."));
         }
 

@@ -137,7 +137,7 @@ namespace NerfDatasetCreator.Tests
 
         /// <summary>
         /// Writes a Blender-format dataset into <paramref name="root"/>: every view as <c>&lt;split&gt;/r_&lt;i&gt;</c> with
-        /// depth and mask, all three split files, <paramref name="points"/> as points3d.ply and its record.
+        /// depth and mask (named by <c>depth_path</c> / <c>mask_path</c>), all three split files, <paramref name="points"/> as points3d.ply and its record.
         /// <paramref name="alterMask"/> may change a view's mask before it is written (view index, mask).
         /// </summary>
         public void WriteDataset(string root, IReadOnlyList<(string Split, Matrix4x4d CameraToWorld)> views, CameraIntrinsics k,
@@ -166,7 +166,14 @@ namespace NerfDatasetCreator.Tests
                     for (var c = 0; c < 4; c++) row.Add(c2w[r, c]);
                     matrix.Add(row);
                 }
-                splits[split].Add(new JObject { ["file_path"] = "./" + name, ["transform_matrix"] = matrix });
+                var frame = new JObject { ["file_path"] = "./" + name, ["transform_matrix"] = matrix };
+                if (withDepth)
+                {
+                    // Named by key, as the plugin writes them: every reader takes a frame's files from its keys only.
+                    frame["depth_path"] = "./" + name + "_depth_0000.png";
+                    frame["mask_path"] = "./" + name + "_mask_0000.png";
+                }
+                splits[split].Add(frame);
             }
             foreach (var split in splits)
                 File.WriteAllText(Path.Combine(root, "transforms_" + split.Key + ".json"), new JObject

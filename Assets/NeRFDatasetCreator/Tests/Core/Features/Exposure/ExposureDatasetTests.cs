@@ -76,7 +76,7 @@ namespace NerfDatasetCreator.Tests
         public void ModifiedImageIsTheCleanOneTimesTheGainInLinearLight()
         {
             var frame = (JObject)Frames(_dataset, "train")[0];
-            ExposureCheck.TryValues(frame, out var e, out _);
+            var e = ExposureKeys.Read(frame).Values.Value;
             var clean = PngReader.Read(Path.Combine(_dataset, "train", "r_0_clean.png"));
             var modified = PngReader.Read(Path.Combine(_dataset, "train", "r_0.png"));
             var changed = 0;
@@ -139,7 +139,7 @@ namespace NerfDatasetCreator.Tests
         {
             foreach (JObject frame in Frames(folder, "train"))
             {
-                ExposureCheck.TryValues(frame, out var e, out _);
+                var e = ExposureKeys.Read(frame).Values.Value;
                 var cleanFile = Path.Combine(folder, ((string)frame["clean_path"]).Substring(2));
                 var clean = PngReader.Read(cleanFile);
                 var samples = (byte[])clean.Samples.Clone();

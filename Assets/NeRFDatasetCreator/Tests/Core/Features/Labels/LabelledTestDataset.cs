@@ -29,7 +29,21 @@ namespace NerfDatasetCreator.Tests
                 File.WriteAllBytes(Path.Combine(folder, LabelledDataset.InstanceMapOf(image)), PngWriter.EncodeGray16(map, Width, Height));
                 frame++;
             }
+            NameInstanceMaps(folder);
             return folder;
+        }
+
+        /// <summary>Adds each frame's instance_path, as the capture writes it: every reader takes a frame's files from its keys only.</summary>
+        static void NameInstanceMaps(string folder)
+        {
+            foreach (var split in new[] { "train", "val", "test" })
+            {
+                var path = Path.Combine(folder, "transforms_" + split + ".json");
+                var json = Newtonsoft.Json.Linq.JObject.Parse(File.ReadAllText(path));
+                foreach (Newtonsoft.Json.Linq.JObject f in (Newtonsoft.Json.Linq.JArray)json["frames"])
+                    f[LabelFrameKeys.Instance] = "./" + LabelledDataset.InstanceMapOf(ExportPaths.Normalise((string)f["file_path"]) + ".png");
+                File.WriteAllText(path, json.ToString());
+            }
         }
 
         /// <summary>The images in the loader's frame order (train, val, test; by index), relative to the dataset.</summary>

@@ -61,10 +61,9 @@ namespace NerfDatasetCreator.Tests
             Assert.That((double)json["p1"], Is.EqualTo(0.004));
             Assert.That((double)json["p2"], Is.EqualTo(-0.003));
             Assert.That(json["k3"], Is.Null, "k3 = 0 is not written (instant-ngp would store p1 over it anyway)");
-            var problems = new System.Collections.Generic.List<ValidationProblem>();
-            var read = TransformsLens.Read(json, "transforms_train.json", problems);
-            Assert.That(problems, Is.Empty);
-            Assert.That(TransformsLens.Same(read, Barrel().ToDistortion()), Is.True);
+            var split = DatasetFolder.ReadSplit(_barrel, "train", DatasetReadMode.Strict);
+            Assert.That(split.LensProblems, Is.Empty);
+            Assert.That(TransformsLens.Same(split.Lens, Barrel().ToDistortion()), Is.True);
             var config = JObject.Parse(File.ReadAllText(Path.Combine(_barrel, "dataset_config.json")));
             Assert.That((string)config["settings"]["lens"]["model"], Is.EqualTo("opencv"));
             Assert.That((double)config["settings"]["lens"]["k1"], Is.EqualTo(-0.2));

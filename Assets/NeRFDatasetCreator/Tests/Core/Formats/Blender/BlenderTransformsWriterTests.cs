@@ -141,7 +141,7 @@ namespace NerfDatasetCreator.Tests
         public void MatricesReadBackBitExact()
         {
             var plan = CapturePlan.Build(new DatasetSettings(), PlanTarget.AtOrigin);
-            var doc = TransformsReader.Read(BlenderTransformsWriter.Write(plan, DatasetSplit.Test));
+            var doc = DatasetFolder.Read(BlenderTransformsWriter.Write(plan, DatasetSplit.Test));
             var views = plan.ViewsOf(DatasetSplit.Test).ToList();
             Assert.That(doc.Frames, Has.Count.EqualTo(200));
             for (var i = 0; i < views.Count; i++)

@@ -100,6 +100,7 @@ namespace NerfDatasetCreator.Tests
                         var samples = (ushort[])Depth.Clone();
                         if (near && split == "test" && i == 1) samples[0] = 500; // 0.5 output units
                         File.WriteAllBytes(Path.Combine(Root, split, "r_" + i + "_depth_0000.png"), PngWriter.EncodeGray16(samples, W, H));
+                        ((JObject)frames[frames.Count - 1])["depth_path"] = "./" + split + "/r_" + i + "_depth_0000.png";
                     }
                     File.WriteAllText(Path.Combine(Root, "transforms_" + split + ".json"),
                         new JObject { ["camera_angle_x"] = 0.69, ["frames"] = frames }.ToString());
