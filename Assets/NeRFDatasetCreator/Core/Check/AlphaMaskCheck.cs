@@ -34,7 +34,7 @@ namespace NerfDatasetCreator
         /// <param name="opaqueBackground">The dataset was captured over a solid colour (dataset_config.json): alpha is 255 everywhere by design.</param>
         public AlphaMaskCheck(bool opaqueBackground) { _opaqueBackground = opaqueBackground; }
 
-        public void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems)
+        public void View(CheckView view, CheckImages images, List<DatasetProblem> problems)
         {
             if (!images.HasColour) return;
             _views++;
@@ -49,12 +49,12 @@ namespace NerfDatasetCreator
             }
             if (any == 0)
             {
-                problems.Add(new DatasetCheckProblem(Name, file, view.Frame, "alpha is 0 everywhere: the view shows nothing (the target is outside the view, or the matting lost it)."));
+                problems.Add(new DatasetProblem(Name, file, view.Frame, "alpha is 0 everywhere: the view shows nothing (the target is outside the view, or the matting lost it)."));
                 _bad++;
             }
             else if (any == n && !_opaqueBackground)
             {
-                problems.Add(new DatasetCheckProblem(Name, file, view.Frame, (opaque == n ? "alpha is 255" : "alpha is above 0") +
+                problems.Add(new DatasetProblem(Name, file, view.Frame, (opaque == n ? "alpha is 255" : "alpha is above 0") +
                     " everywhere although the background is transparent: something drew over the whole frame (a full-screen renderer feature or post-processing)."));
                 _bad++;
             }
@@ -78,13 +78,13 @@ namespace NerfDatasetCreator
             if (withAlpha > _worstBackground) _worstBackground = withAlpha;
             if (under < MinMaskUnderAlpha)
             {
-                problems.Add(new DatasetCheckProblem(Name, file, view.Frame, CheckFigures.Percent(under) + " of the mask's covered pixels (" + view.MaskFile +
+                problems.Add(new DatasetProblem(Name, file, view.Frame, CheckFigures.Percent(under) + " of the mask's covered pixels (" + view.MaskFile +
                     ") have alpha, below " + CheckFigures.Percent(MinMaskUnderAlpha) + ": the mask and the colour do not show the same thing (a pass flipped or offset, or alpha lost)."));
                 _bad++;
             }
             if (withAlpha > MaxBackgroundWithAlpha && !_opaqueBackground)
             {
-                problems.Add(new DatasetCheckProblem(Name, file, view.Frame, CheckFigures.Percent(withAlpha) + " of the mask's background has alpha, above " +
+                problems.Add(new DatasetProblem(Name, file, view.Frame, CheckFigures.Percent(withAlpha) + " of the mask's background has alpha, above " +
                     CheckFigures.Percent(MaxBackgroundWithAlpha) + ": the alpha is veiled (a renderer feature drawing over the frame) or the mask is wrong."));
                 _bad++;
             }

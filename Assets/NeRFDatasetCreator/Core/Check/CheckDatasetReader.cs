@@ -27,7 +27,7 @@ namespace NerfDatasetCreator
         public sealed class Result
         {
             public readonly List<CheckView> Views = new List<CheckView>();
-            public readonly List<DatasetCheckProblem> Problems = new List<DatasetCheckProblem>();
+            public readonly List<DatasetProblem> Problems = new List<DatasetProblem>();
 
             /// <summary>camera_angle_x per split (NeRF reads one; a difference is a problem).</summary>
             public double? CameraAngleX;
@@ -43,19 +43,19 @@ namespace NerfDatasetCreator
                 var path = Path.Combine(root, file);
                 if (!File.Exists(path))
                 {
-                    if (options?.Split != null) result.Problems.Add(new DatasetCheckProblem(CheckName, file, -1, "is missing."));
+                    if (options?.Split != null) result.Problems.Add(new DatasetProblem(CheckName, file, -1, "is missing."));
                     continue;
                 }
                 DatasetSplitFile json;
                 try { json = DatasetFolder.ReadSplit(root, split, DatasetReadMode.Strict); }
                 catch (Exception e) when (e is SettingsFormatException || e is IOException || e is UnauthorizedAccessException)
                 {
-                    result.Problems.Add(new DatasetCheckProblem(CheckName, file, -1, "cannot be read: " + e.Message));
+                    result.Problems.Add(new DatasetProblem(CheckName, file, -1, "cannot be read: " + e.Message));
                     continue;
                 }
                 if (!json.IsObject)
                 {
-                    result.Problems.Add(new DatasetCheckProblem(CheckName, file, -1, "cannot be read: it is not a JSON object { … }."));
+                    result.Problems.Add(new DatasetProblem(CheckName, file, -1, "cannot be read: it is not a JSON object { … }."));
                     continue;
                 }
                 ReadSplit(split, file, json, options?.MaxViews ?? 0, result);
@@ -68,18 +68,18 @@ namespace NerfDatasetCreator
         {
             if (!(json.CameraAngleX is double angle) || !(angle > 0 && angle < Math.PI))
             {
-                result.Problems.Add(new DatasetCheckProblem(CheckName, file, -1, "has no camera_angle_x in (0, π); its views cannot be checked."));
+                result.Problems.Add(new DatasetProblem(CheckName, file, -1, "has no camera_angle_x in (0, π); its views cannot be checked."));
                 return;
             }
             if (result.CameraAngleX == null) result.CameraAngleX = angle;
             else if (Math.Abs(result.CameraAngleX.Value - angle) > 1e-9)
-                result.Problems.Add(new DatasetCheckProblem(CheckName, file, -1, "camera_angle_x " + DatasetCheckResult.Number(angle, "R") +
+                result.Problems.Add(new DatasetProblem(CheckName, file, -1, "camera_angle_x " + DatasetCheckResult.Number(angle, "R") +
                     " differs from the other splits' " + DatasetCheckResult.Number(result.CameraAngleX.Value, "R") + "; NeRF reads one for all."));
             var depthScale = json.IntegerDepthScale is double ds && ds > 0 ? ds : DefaultDepthScale;
             // The lens the loaders read from this file (camera_model, is_fisheye, k1…p2): every projecting check uses it.
             if (json.LensProblems.Count > 0)
             {
-                foreach (var p in json.LensProblems) result.Problems.Add(new DatasetCheckProblem(CheckName, file, -1, p.Field + " = " + p.Value + ": " + p.Reason));
+                foreach (var p in json.LensProblems) result.Problems.Add(new DatasetProblem(CheckName, file, -1, p.Field + " = " + p.Value + ": " + p.Reason));
                 return;
             }
             var lens = json.Lens;
@@ -88,12 +88,12 @@ namespace NerfDatasetCreator
             foreach (var index in picked)
             {
                 var frame = json.Frames[index];
-                if (frame.FilePath == null) { result.Problems.Add(new DatasetCheckProblem(CheckName, file, index, "has no file_path.")); continue; }
+                if (frame.FilePath == null) { result.Problems.Add(new DatasetProblem(CheckName, file, index, "has no file_path.")); continue; }
                 var colour = frame.Existing("file_path");
-                if (colour == null) { result.Problems.Add(new DatasetCheckProblem(CheckName, frame.FilePath, index, "names no image inside the dataset (looked for the path and the path + \".png\").")); continue; }
-                if (!TryPose(frame.TransformMatrix, out var pose, out var why)) { result.Problems.Add(new DatasetCheckProblem(CheckName, file, index, "transform_matrix " + why)); continue; }
+                if (colour == null) { result.Problems.Add(new DatasetProblem(CheckName, frame.FilePath, index, "names no image inside the dataset (looked for the path and the path + \".png\").")); continue; }
+                if (!TryPose(frame.TransformMatrix, out var pose, out var why)) { result.Problems.Add(new DatasetProblem(CheckName, file, index, "transform_matrix " + why)); continue; }
                 foreach (var poseProblem in DatasetValidator.PoseProblems(pose))
-                    result.Problems.Add(new DatasetCheckProblem(CheckName, file, index, poseProblem + (pose.Determinant3x3 < 0 ? " A mirrored rotation is a handedness slip: Unity's Y/Z not swapped, or one camera axis negated." : "")));
+                    result.Problems.Add(new DatasetProblem(CheckName, file, index, poseProblem + (pose.Determinant3x3 < 0 ? " A mirrored rotation is a handedness slip: Unity's Y/Z not swapped, or one camera axis negated." : "")));
                 var view = new CheckView
                 {
                     Split = split, Frame = index, Source = frame, ColourFile = colour, CameraToWorld = pose, DepthScale = depthScale,
@@ -121,12 +121,12 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>Builds the view's camera for an image of <paramref name="width"/>×<paramref name="height"/>; a problem when fl_x disagrees with camera_angle_x.</summary>
-        public static DatasetCheckProblem Complete(CheckView view, int width, int height)
+        public static DatasetProblem Complete(CheckView view, int width, int height)
         {
             var focal = CheckCamera.FocalOf(width, view.PendingAngle);
             view.Camera = new CheckCamera(view.CameraToWorld, width, height, focal, view.PendingCx ?? width / 2.0, view.PendingCy ?? height / 2.0, view.Lens);
             if (view.PendingFlX is double flX && Math.Abs(flX - focal) > FocalTolerance * focal)
-                return new DatasetCheckProblem(CheckName, DatasetLayout.TransformsFileName(view.Split), -1,
+                return new DatasetProblem(CheckName, DatasetLayout.TransformsFileName(view.Split), -1,
                     "fl_x = " + DatasetCheckResult.Number(flX) + " px but camera_angle_x gives " + DatasetCheckResult.Number(focal) +
                     " px for a " + width + "-pixel-wide image; NeRF's loaders read camera_angle_x, instant-ngp fl_x, so they see different cameras.");
             return null;

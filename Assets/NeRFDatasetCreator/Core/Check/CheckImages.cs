@@ -23,7 +23,7 @@ namespace NerfDatasetCreator
         public ushort[] Instance, Semantic;
 
         /// <summary>Why a file named by the frame was not used (wrong format or size, unreadable), one line each.</summary>
-        public readonly System.Collections.Generic.List<DatasetCheckProblem> Notes = new System.Collections.Generic.List<DatasetCheckProblem>();
+        public readonly System.Collections.Generic.List<DatasetProblem> Notes = new System.Collections.Generic.List<DatasetProblem>();
 
         /// <summary>Ticks spent reading and decoding.</summary>
         public long DecodeTicks;
@@ -80,13 +80,13 @@ namespace NerfDatasetCreator
             if (png == null) return null;
             if (png.BitDepth != bitDepth || png.Channels != channels)
             {
-                images.Notes.Add(new DatasetCheckProblem(CheckDatasetReader.CheckName, "./" + file, view.Frame,
+                images.Notes.Add(new DatasetProblem(CheckDatasetReader.CheckName, "./" + file, view.Frame,
                     "is a " + png.BitDepth + "-bit PNG with " + png.Channels + " channel(s), not the " + format + " layout of a " + what + " file (output-format.md); it is not used."));
                 return null;
             }
             if (images.Width > 0 && (png.Width != images.Width || png.Height != images.Height))
             {
-                images.Notes.Add(new DatasetCheckProblem(CheckDatasetReader.CheckName, "./" + file, view.Frame,
+                images.Notes.Add(new DatasetProblem(CheckDatasetReader.CheckName, "./" + file, view.Frame,
                     "is " + png.Width + "×" + png.Height + " but the colour image is " + images.Width + "×" + images.Height + "; it is not used."));
                 return null;
             }
@@ -101,7 +101,7 @@ namespace NerfDatasetCreator
             }
             catch (Exception e) when (e is InvalidDataException || e is IOException || e is UnauthorizedAccessException)
             {
-                images.Notes.Add(new DatasetCheckProblem(CheckDatasetReader.CheckName, "./" + file, view.Frame, "cannot be decoded as the " + what + " image: " + e.Message));
+                images.Notes.Add(new DatasetProblem(CheckDatasetReader.CheckName, "./" + file, view.Frame, "cannot be decoded as the " + what + " image: " + e.Message));
                 return null;
             }
         }

@@ -25,7 +25,7 @@ namespace NerfDatasetCreator
         readonly EdgeShift _shift = new EdgeShift();
         bool[] _alpha = new bool[0], _geometry = new bool[0];
 
-        public void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems)
+        public void View(CheckView view, CheckImages images, List<DatasetProblem> problems)
         {
             if (images.Alpha == null || (images.Mask == null && images.Depth == null)) return;
             _views++;
@@ -51,7 +51,7 @@ namespace NerfDatasetCreator
             }
         }
 
-        void Compare(CheckView view, bool[] a, bool[] g, int w, int h, string against, List<DatasetCheckProblem> problems)
+        void Compare(CheckView view, bool[] a, bool[] g, int w, int h, string against, List<DatasetProblem> problems)
         {
             var r = _shift.Measure(a, g, w, h);
             if (r.BandPixels == 0) return;
@@ -60,7 +60,7 @@ namespace NerfDatasetCreator
             if ((r.BestDx != 0 || r.BestDy != 0) && share >= MinMismatchShare && r.BestMismatch <= ShiftGain * r.MismatchAtZero)
             {
                 _bad++;
-                problems.Add(new DatasetCheckProblem(Name, "./" + view.ColourFile, view.Frame, "the alpha's edges lie " + Describe(r.BestDx, r.BestDy) + " of " + against +
+                problems.Add(new DatasetProblem(Name, "./" + view.ColourFile, view.Frame, "the alpha's edges lie " + Describe(r.BestDx, r.BestDy) + " of " + against +
                     "'s (" + r.MismatchAtZero + " of " + r.BandPixels + " edge pixels disagree as written, " + r.BestMismatch + " after the shift): a pass is offset by a pixel (a half-pixel or supersampling error, or a flipped row order)."));
             }
         }

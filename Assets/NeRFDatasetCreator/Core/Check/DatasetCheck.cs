@@ -32,7 +32,7 @@ namespace NerfDatasetCreator
             options = options ?? new DatasetCheckOptions();
             if (string.IsNullOrEmpty(datasetFolder) || !Directory.Exists(datasetFolder))
             {
-                report.Add(new DatasetCheckProblem(CheckDatasetReader.CheckName, datasetFolder ?? "", -1, "is not an existing folder."));
+                report.Add(new DatasetProblem(CheckDatasetReader.CheckName, datasetFolder ?? "", -1, "is not an existing folder."));
                 return report;
             }
             var root = Path.GetFullPath(datasetFolder);
@@ -40,7 +40,7 @@ namespace NerfDatasetCreator
             foreach (var p in read.Problems) report.Add(p);
             var views = read.Views;
             if (views.Count == 0 && read.Problems.Count == 0)
-                report.Add(new DatasetCheckProblem(CheckDatasetReader.CheckName, DatasetLayout.TransformsFileName(options.Split ?? "train"), -1,
+                report.Add(new DatasetProblem(CheckDatasetReader.CheckName, DatasetLayout.TransformsFileName(options.Split ?? "train"), -1,
                     "has no frames to check (is this a Blender-format dataset with transforms_*.json?)."));
 
             var dynamic = views.Any(v => v.Time != null);
@@ -78,7 +78,7 @@ namespace NerfDatasetCreator
                     decoded++;
                     var problem = CheckDatasetReader.Complete(view, images.Width, images.Height);
                     if (problem != null && intrinsicsReported.Add(view.Split)) report.Add(problem);
-                    var found = new List<DatasetCheckProblem>();
+                    var found = new List<DatasetProblem>();
                     foreach (var check in checks)
                     {
                         var before = Stopwatch.GetTimestamp();
@@ -102,7 +102,7 @@ namespace NerfDatasetCreator
                 var pairs = MultiViewGeometryCheck.Pairs(views);
                 if (pairs.Count == 0 && dynamic) multiSkip = "no two views with depth share a time (a monocular dynamic capture has one view per time)";
                 var byView = pairs.GroupBy(p => p.Key).ToList();
-                var found = new List<DatasetCheckProblem>();
+                var found = new List<DatasetProblem>();
                 foreach (var group in byView)
                 {
                     if (cancel.IsCancellationRequested) { report.Cancelled = true; multiSkip = "cancelled"; break; }

@@ -9,7 +9,7 @@ namespace NerfDatasetCreator
     public sealed class DatasetCheckReport
     {
         readonly List<DatasetCheckResult> results = new List<DatasetCheckResult>();
-        readonly List<DatasetCheckProblem> problems = new List<DatasetCheckProblem>();
+        readonly List<DatasetProblem> problems = new List<DatasetProblem>();
 
         public DatasetCheckReport(string datasetFolder) { DatasetFolder = datasetFolder; }
 
@@ -37,10 +37,10 @@ namespace NerfDatasetCreator
         public IReadOnlyList<string> SummaryLines => results.Select(r => r.SummaryLine).ToList();
 
         /// <summary>Every problem, each naming its file, frame and check.</summary>
-        public IReadOnlyList<DatasetCheckProblem> Problems => problems;
+        public IReadOnlyList<DatasetProblem> Problems => problems;
 
         public void Add(DatasetCheckResult result) => results.Add(result);
-        public void Add(DatasetCheckProblem problem) => problems.Add(problem);
+        public void Add(DatasetProblem problem) => problems.Add(problem);
 
         /// <summary>The whole report as indented JSON.</summary>
         public string ToJson()

@@ -20,7 +20,7 @@ namespace NerfDatasetCreator
         int _views, _bad;
         double _worst;
 
-        public void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems)
+        public void View(CheckView view, CheckImages images, List<DatasetProblem> problems)
         {
             var mask = images.Mask;
             var depth = images.Depth;
@@ -40,7 +40,7 @@ namespace NerfDatasetCreator
             if (fraction > MaxMismatch)
             {
                 _bad++;
-                problems.Add(new DatasetCheckProblem(Name, "./" + view.DepthFile, view.Frame, CheckFigures.Percent(fraction) + " of the geometry disagrees with " + view.MaskFile +
+                problems.Add(new DatasetProblem(Name, "./" + view.DepthFile, view.Frame, CheckFigures.Percent(fraction) + " of the geometry disagrees with " + view.MaskFile +
                     " (" + missing + " covered pixels without depth, " + extra + " background pixels with depth), above " + CheckFigures.Percent(MaxMismatch) +
                     ": one of the two passes is flipped, offset or draws other objects."));
             }

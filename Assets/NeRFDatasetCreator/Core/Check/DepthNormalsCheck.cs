@@ -37,7 +37,7 @@ namespace NerfDatasetCreator
         readonly List<double> _medians = new List<double>();
         double _worst;
 
-        public void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems)
+        public void View(CheckView view, CheckImages images, List<DatasetProblem> problems)
         {
             var depth = images.Depth;
             var normals = images.Normals;
@@ -82,7 +82,7 @@ namespace NerfDatasetCreator
             if (median * 180 / Math.PI > MaxMedianDegrees)
             {
                 _bad++;
-                problems.Add(new DatasetCheckProblem(Name, "./" + view.NormalFile, view.Frame, "the normals differ from the depth's by a median " + CheckFigures.Degrees(median) +
+                problems.Add(new DatasetProblem(Name, "./" + view.NormalFile, view.Frame, "the normals differ from the depth's by a median " + CheckFigures.Degrees(median) +
                     " over " + angles.Count + " smooth-surface samples, above " + DatasetCheckResult.Number(MaxMedianDegrees) + "°: normals in the camera (or Unity) frame, flipped, or depth along the ray instead of z."));
             }
         }

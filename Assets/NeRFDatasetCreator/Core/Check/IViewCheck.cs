@@ -7,7 +7,7 @@ namespace NerfDatasetCreator
     {
         string Name { get; }
 
-        void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems);
+        void View(CheckView view, CheckImages images, List<DatasetProblem> problems);
 
         DatasetCheckResult Finish();
     }

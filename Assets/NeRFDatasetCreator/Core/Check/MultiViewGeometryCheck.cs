@@ -73,7 +73,7 @@ namespace NerfDatasetCreator
             return pairs;
         }
 
-        public void Pair(CheckView vi, ushort[] di, CheckView vj, ushort[] dj, List<DatasetCheckProblem> problems)
+        public void Pair(CheckView vi, ushort[] di, CheckView vj, ushort[] dj, List<DatasetProblem> problems)
         {
             _pairs++;
             CheckCamera ci = vi.Camera, cj = vj.Camera;
@@ -124,7 +124,7 @@ namespace NerfDatasetCreator
                 _judged++;
                 _bad++;
                 _consistent.Add(0);
-                problems.Add(new DatasetCheckProblem(CheckName, "./" + vi.DepthFile, vi.Frame, "reprojected into " + vj.Name + " (" + vj.Split + " frame " + vj.Frame + "): only " + inView + " of " + sampled +
+                problems.Add(new DatasetProblem(CheckName, "./" + vi.DepthFile, vi.Frame, "reprojected into " + vj.Name + " (" + vj.Split + " frame " + vj.Frame + "): only " + inView + " of " + sampled +
                     " points land in its image, below " + CheckFigures.Percent(MinInFrame) + ". A wrong pose, field of view or depth scale."));
                 return;
             }
@@ -150,7 +150,7 @@ namespace NerfDatasetCreator
             if (medianDepth > MaxMedianRelativeDepth) why.Add("median depth error " + CheckFigures.Percent(medianDepth) + " of the depth");
             if (why.Count == 0) return;
             _bad++;
-            problems.Add(new DatasetCheckProblem(CheckName, "./" + vi.DepthFile, vi.Frame, "reprojected into " + vj.Name + " (" + vj.Split + " frame " + vj.Frame + "): " + string.Join(", ", why) +
+            problems.Add(new DatasetProblem(CheckName, "./" + vi.DepthFile, vi.Frame, "reprojected into " + vj.Name + " (" + vj.Split + " frame " + vj.Frame + "): " + string.Join(", ", why) +
                 ". A wrong pose (handedness, axis sign, Y/Z swap), field of view, depth scale or depth along the ray instead of z."));
         }
 

@@ -45,7 +45,7 @@ namespace NerfDatasetCreator
             }
         }
 
-        public void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems)
+        public void View(CheckView view, CheckImages images, List<DatasetProblem> problems)
         {
             if (_xyz == null || images.Mask == null || view.Camera == null) return;
             int w = images.Width, h = images.Height, seen = 0, inside = 0;
@@ -66,7 +66,7 @@ namespace NerfDatasetCreator
             if (share < MinInside)
             {
                 _bad++;
-                problems.Add(new DatasetCheckProblem(Name, "./" + view.MaskFile, view.Frame, "only " + CheckFigures.Percent(share) + " of the " + seen + " cloud points in view land on the mask, below " +
+                problems.Add(new DatasetProblem(Name, "./" + view.MaskFile, view.Frame, "only " + CheckFigures.Percent(share) + " of the " + seen + " cloud points in view land on the mask, below " +
                     CheckFigures.Percent(MinInside) + ": the cloud, the pose or the mask is in another frame, scale or orientation."));
             }
         }

@@ -80,7 +80,7 @@ namespace NerfDatasetCreator.Editor
             if (task.Status == TaskStatus.RanToCompletion) return task.Result;
             var error = task.Exception?.GetBaseException();
             var report = new DatasetCheckReport(datasetFolder);
-            report.Add(new DatasetCheckProblem("check", datasetFolder, -1,
+            report.Add(new DatasetProblem("check", datasetFolder, -1,
                 "could not be checked: " + (error?.Message ?? "the check did not finish") + ". Run `nerf-dataset check " + datasetFolder + "` to see why."));
             return report;
         }

@@ -27,7 +27,7 @@ namespace NerfDatasetCreator
 
         public ExposureCheck(string root) { _root = root; }
 
-        public void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems)
+        public void View(CheckView view, CheckImages images, List<DatasetProblem> problems)
         {
             if (!images.HasColour) return;
             var frame = view.Source;
@@ -44,7 +44,7 @@ namespace NerfDatasetCreator
             _recorded++;
             if (!(read.Values is ViewExposure exposure))
             {
-                problems.Add(new DatasetCheckProblem(Name, file, view.Frame, read.Problem));
+                problems.Add(new DatasetProblem(Name, file, view.Frame, read.Problem));
                 _bad++;
                 return;
             }
@@ -54,7 +54,7 @@ namespace NerfDatasetCreator
             var relative = cleanFile.Relative;
             if (!cleanFile.Exists)
             {
-                problems.Add(new DatasetCheckProblem(Name, file, view.Frame, ExposureKeys.CleanPath + " names " + clean + ", which is not a file inside the dataset."));
+                problems.Add(new DatasetProblem(Name, file, view.Frame, ExposureKeys.CleanPath + " names " + clean + ", which is not a file inside the dataset."));
                 _bad++;
                 return;
             }
@@ -66,14 +66,14 @@ namespace NerfDatasetCreator
             }
             catch (Exception e) when (e is InvalidDataException || e is IOException || e is UnauthorizedAccessException)
             {
-                problems.Add(new DatasetCheckProblem(Name, file, view.Frame, "the image or its clean image cannot be decoded: " + e.Message));
+                problems.Add(new DatasetProblem(Name, file, view.Frame, "the image or its clean image cannot be decoded: " + e.Message));
                 _bad++;
                 return;
             }
             if (modified.BitDepth != 8 || unmodified.BitDepth != 8 || modified.Channels != unmodified.Channels || modified.Channels < 3
                 || modified.Width != unmodified.Width || modified.Height != unmodified.Height)
             {
-                problems.Add(new DatasetCheckProblem(Name, file, view.Frame, "and its clean image " + clean + " differ in size or layout (" +
+                problems.Add(new DatasetProblem(Name, file, view.Frame, "and its clean image " + clean + " differ in size or layout (" +
                     Layout(modified) + " vs " + Layout(unmodified) + "); both are 8-bit RGB(A) of one size."));
                 _bad++;
                 return;
@@ -85,7 +85,7 @@ namespace NerfDatasetCreator
             if (share > MaxMismatch)
             {
                 var measured = MeasuredScales(modified, unmodified);
-                problems.Add(new DatasetCheckProblem(Name, file, view.Frame, CheckFigures.Percent(share) + " of the colour samples are not " + clean +
+                problems.Add(new DatasetProblem(Name, file, view.Frame, CheckFigures.Percent(share) + " of the colour samples are not " + clean +
                     " × 2^exposure_ev × white_balance in linear light (exposure_ev " + DatasetCheckResult.Number(exposure.Ev) + ", white_balance [" +
                     Triple(exposure.R, exposure.G, exposure.B) + "] give the linear scales [" + Triple(exposure.Scale(0), exposure.Scale(1), exposure.Scale(2)) +
                     "]; the pixels show about [" + Triple(measured[0], measured[1], measured[2]) + "]): the gain was applied to sRGB values, to the wrong channels or with the wrong sign, or the recorded values are not the applied ones."));
@@ -93,7 +93,7 @@ namespace NerfDatasetCreator
             }
             if (alphaDiffers)
             {
-                problems.Add(new DatasetCheckProblem(Name, file, view.Frame, "its alpha differs from " + clean + "'s; exposure and white balance leave alpha unchanged."));
+                problems.Add(new DatasetProblem(Name, file, view.Frame, "its alpha differs from " + clean + "'s; exposure and white balance leave alpha unchanged."));
                 _bad++;
             }
         }

@@ -25,20 +25,20 @@ namespace NerfDatasetCreator
                     var inside = PathSafety.Inside(folder, entry.File, out _);
                     if (inside == null)
                     {
-                        report.Problems.Add(new DatasetProblem(DatasetLayout.ConfigFileName, -1, null, "geometry names " + entry.File + ", which is outside the dataset."));
+                        report.Problems.Add(DatasetProblem.Structure(DatasetLayout.ConfigFileName, -1, null, "geometry names " + entry.File + ", which is outside the dataset."));
                         continue;
                     }
                     recorded.Add(Path.GetFullPath(inside));
                     if (!File.Exists(inside))
-                        report.Problems.Add(new DatasetProblem(entry.File, -1, null, "is recorded as the geometry pack" + StepText(entry) + " in " + DatasetLayout.ConfigFileName + " but does not exist (capture again, or remove the record)."));
+                        report.Problems.Add(DatasetProblem.Structure(entry.File, -1, null, "is recorded as the geometry pack" + StepText(entry) + " in " + DatasetLayout.ConfigFileName + " but does not exist (capture again, or remove the record)."));
                     else if (entry.Sha256 != null && PointCloudRecord.HashOf(inside) != entry.Sha256)
-                        report.Problems.Add(new DatasetProblem(entry.File, -1, null, "does not have the SHA-256 " + DatasetLayout.ConfigFileName + " records for it: the mesh" + StepText(entry) + " changed after the capture."));
+                        report.Problems.Add(DatasetProblem.Structure(entry.File, -1, null, "does not have the SHA-256 " + DatasetLayout.ConfigFileName + " records for it: the mesh" + StepText(entry) + " changed after the capture."));
                 }
             var pack = Path.Combine(folder, TargetMeshPly.Folder);
             if (skipFiles || !Directory.Exists(pack)) return;
             foreach (var file in Directory.EnumerateFiles(pack).OrderBy(f => f, StringComparer.Ordinal))
                 if (GeometryPackSteps.IsPackFile(Path.GetFileName(file)) && !recorded.Contains(Path.GetFullPath(file)))
-                    report.Warnings.Add(new DatasetProblem(TargetMeshPly.Folder + "/" + Path.GetFileName(file), -1, null,
+                    report.Warnings.Add(DatasetProblem.Structure(TargetMeshPly.Folder + "/" + Path.GetFileName(file), -1, null,
                         "is not recorded in " + DatasetLayout.ConfigFileName + "'s geometry, so evaluate will not use it (a leftover of another capture?)."));
         }
 

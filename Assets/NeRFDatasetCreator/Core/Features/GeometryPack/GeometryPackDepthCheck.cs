@@ -74,7 +74,7 @@ namespace NerfDatasetCreator
             return _entries.FirstOrDefault(e => Math.Abs((e.Time ?? 0) - view.Time.Value) < 1e-9);
         }
 
-        public void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems)
+        public void View(CheckView view, CheckImages images, List<DatasetProblem> problems)
         {
             if (_entries == null || images.Depth == null || view.Camera == null) return;
             var entry = MeshOf(view);
@@ -100,7 +100,7 @@ namespace NerfDatasetCreator
             if (share > MaxBadShare)
             {
                 _bad++;
-                problems.Add(new DatasetCheckProblem(Name, "./" + view.DepthFile, view.Frame, CheckFigures.Percent(share) + " of the " + seen + " points of " + entry.File +
+                problems.Add(new DatasetProblem(Name, "./" + view.DepthFile, view.Frame, CheckFigures.Percent(share) + " of the " + seen + " points of " + entry.File +
                     (entry.Step.HasValue ? " (time step " + entry.Step.Value + ")" : "") + " in view lie in front of the depth or where it saw nothing, above " + CheckFigures.Percent(MaxBadShare) +
                     ": the mesh, the pose or the depth is in another frame, scale or time."));
             }

@@ -59,14 +59,14 @@ namespace NerfDatasetCreator
 
         public string Name => CheckName;
 
-        public void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems)
+        public void View(CheckView view, CheckImages images, List<DatasetProblem> problems)
         {
             var ids = images.Instance;
             if (ids == null) return;
             _views++;
             if (_labels == null)
             {
-                if (!_problemReported) problems.Add(new DatasetCheckProblem(Name, DatasetLayout.LabelsFileName, -1, _labelsProblem + " The ids in the maps mean nothing without it."));
+                if (!_problemReported) problems.Add(new DatasetProblem(Name, DatasetLayout.LabelsFileName, -1, _labelsProblem + " The ids in the maps mean nothing without it."));
                 _problemReported = true;
                 _bad++;
                 return;
@@ -121,7 +121,7 @@ namespace NerfDatasetCreator
             }
             if (why.Count == 0) return;
             _bad++;
-            problems.Add(new DatasetCheckProblem(Name, "./" + view.InstanceFile, view.Frame, string.Join("; ", why) +
+            problems.Add(new DatasetProblem(Name, "./" + view.InstanceFile, view.Frame, string.Join("; ", why) +
                 ": the id pass is offset, flipped, blended at edges or drawn with other cull rules, or the maps and labels.json are from different captures."));
         }
 

@@ -31,7 +31,7 @@ namespace NerfDatasetCreator
         int _pairs, _judged, _bad, _objects;
         double _worst = 1;
 
-        public void Pair(CheckView vi, ushort[] di, ushort[] ii, CheckView vj, ushort[] dj, ushort[] ij, List<DatasetCheckProblem> problems)
+        public void Pair(CheckView vi, ushort[] di, ushort[] ii, CheckView vj, ushort[] dj, ushort[] ij, List<DatasetProblem> problems)
         {
             _pairs++;
             CheckCamera ci = vi.Camera, cj = vj.Camera;
@@ -86,7 +86,7 @@ namespace NerfDatasetCreator
             }
             if (why.Count == 0) return;
             _bad++;
-            problems.Add(new DatasetCheckProblem(CheckName, "./" + vi.InstanceFile, vi.Frame, "reprojected into " + vj.Name + " (" + vj.Split + " frame " + vj.Frame + "): " + string.Join(", ", why) +
+            problems.Add(new DatasetProblem(CheckName, "./" + vi.InstanceFile, vi.Frame, "reprojected into " + vj.Name + " (" + vj.Split + " frame " + vj.Frame + "): " + string.Join(", ", why) +
                 ". The same object must have the same id in every view: ids swapped or numbered per view, or a map of another view."));
         }
 

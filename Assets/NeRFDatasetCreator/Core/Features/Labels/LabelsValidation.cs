@@ -14,7 +14,7 @@ namespace NerfDatasetCreator
             var path = Path.Combine(folder, DatasetLayout.LabelsFileName);
             if (!File.Exists(path))
             {
-                report.Problems.Add(new DatasetProblem(DatasetLayout.LabelsFileName, -1, null,
+                report.Problems.Add(DatasetProblem.Structure(DatasetLayout.LabelsFileName, -1, null,
                     "is missing, but frames name instance/semantic maps (" + LabelFrameKeys.Instance + ", " + LabelFrameKeys.Semantic +
                     "); their ids mean nothing without it (recapture, or restore labels.json from the capture's folder)."));
                 return;
@@ -26,7 +26,7 @@ namespace NerfDatasetCreator
             catch (InvalidParameterException e)
             {
                 foreach (var p in e.Problems)
-                    report.Problems.Add(new DatasetProblem(DatasetLayout.LabelsFileName, -1, null, p.Field.Replace(path, "").TrimStart(':', ' ') + " " + p.Value + " " + p.Reason + " (" + p.Fix + ")"));
+                    report.Problems.Add(DatasetProblem.Structure(DatasetLayout.LabelsFileName, -1, null, p.Field.Replace(path, "").TrimStart(':', ' ') + " " + p.Value + " " + p.Reason + " (" + p.Fix + ")"));
             }
         }
     }

@@ -30,7 +30,7 @@ namespace NerfDatasetCreator
         double _worst;
 
         /// <summary>Reads a frame's motion blur keys into <paramref name="view"/> (for <see cref="CheckDatasetReader"/>).</summary>
-        internal static void ReadKeys(DatasetFrame frame, CheckView view, string fileName, int index, List<DatasetCheckProblem> problems)
+        internal static void ReadKeys(DatasetFrame frame, CheckView view, string fileName, int index, List<DatasetProblem> problems)
         {
             var sharp = frame.Existing(MotionBlurKeys.SharpPath);
             if (sharp != null)
@@ -44,18 +44,18 @@ namespace NerfDatasetCreator
                 if (!present) continue;
                 if (!CheckDatasetReader.TryPose(written, out var pose, out var why))
                 {
-                    problems.Add(new DatasetCheckProblem(CheckDatasetReader.CheckName, fileName, index, key + " " + why));
+                    problems.Add(new DatasetProblem(CheckDatasetReader.CheckName, fileName, index, key + " " + why));
                     continue;
                 }
                 foreach (var poseProblem in DatasetValidator.PoseProblems(pose))
-                    problems.Add(new DatasetCheckProblem(CheckDatasetReader.CheckName, fileName, index, key + ": " + poseProblem));
+                    problems.Add(new DatasetProblem(CheckDatasetReader.CheckName, fileName, index, key + ": " + poseProblem));
                 if (key == MotionBlurKeys.Start) view.ShutterStart = pose;
                 else view.ShutterEnd = pose;
             }
             view.RollingShutter = shutter.RollingShutter;
         }
 
-        public void View(CheckView view, CheckImages images, List<DatasetCheckProblem> problems)
+        public void View(CheckView view, CheckImages images, List<DatasetProblem> problems)
         {
             if (images.BlurredAlpha == null || images.Alpha == null) return;
             if (images.Depth == null)
@@ -117,7 +117,7 @@ namespace NerfDatasetCreator
             if (mean > MaxMeanDifference)
             {
                 _bad++;
-                problems.Add(new DatasetCheckProblem(Name, "./" + view.BlurredFile, view.Frame,
+                problems.Add(new DatasetProblem(Name, "./" + view.BlurredFile, view.Frame,
                     "differs from ./" + view.ColourFile + " seen over the recorded shutter by " + CheckFigures.Percent(mean) + " of coverage on average (above " +
                     CheckFigures.Percent(MaxMeanDifference) + ")" + (view.ShutterStart == null || view.ShutterEnd == null
                         ? ": the frame has no transform_matrix_start/_end, so its blur is not recorded."

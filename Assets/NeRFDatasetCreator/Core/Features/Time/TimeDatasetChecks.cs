@@ -95,7 +95,7 @@ namespace NerfDatasetCreator
             ok &= time.Steps.HasValue && record.Steps >= 2 && record.End > record.Start;
             if (!ok)
             {
-                report.Problems.Add(new DatasetProblem(DatasetLayout.ConfigFileName, -1, null,
+                report.Problems.Add(DatasetProblem.Structure(DatasetLayout.ConfigFileName, -1, null,
                     "has a \"time\" record without a valid mode, startSeconds < endSeconds and steps ≥ 2; the frames' times cannot be checked against it."));
                 return null;
             }
@@ -107,7 +107,7 @@ namespace NerfDatasetCreator
             var withTime = frames.Count(f => f.Time.HasTime);
             if (withTime == 0) return;
             if (withTime < frames.Count)
-                report.Problems.Add(new DatasetProblem(file, -1, null, (frames.Count - withTime) + " of " + frames.Count +
+                report.Problems.Add(DatasetProblem.Structure(file, -1, null, (frames.Count - withTime) + " of " + frames.Count +
                     " frames have no \"time\" while the others do; 4DGaussians and nerfstudio's dnerf parser read frame[\"time\"] from every frame."));
             for (var i = 0; i < frames.Count; i++)
             {
@@ -151,7 +151,7 @@ namespace NerfDatasetCreator
                         Problem(report, file, i, frames[i], "time = " + ValidationProblem.Format(times[i].Value) + " is before the previous frame's " +
                             ValidationProblem.Format(times[i - 1].Value) + "; a monocular capture's frames follow time.");
                 if (split == DatasetSplit.Train && frames.Count > 0 && frames.Count != record.Steps)
-                    report.Problems.Add(new DatasetProblem(file, -1, null, "has " + frames.Count + " frames but dataset_config.json records " +
+                    report.Problems.Add(DatasetProblem.Structure(file, -1, null, "has " + frames.Count + " frames but dataset_config.json records " +
                         record.Steps + " time steps, one train view each."));
                 return;
             }
@@ -197,7 +197,7 @@ namespace NerfDatasetCreator
                         if (missing.Count < 5) missing.Add("camera " + c + " step " + k);
                     }
             if (missingCount > 0)
-                report.Problems.Add(new DatasetProblem(file, -1, null, missingCount + " (camera, step) pairs of " + cameras + " cameras × " + record.Steps +
+                report.Problems.Add(DatasetProblem.Structure(file, -1, null, missingCount + " (camera, step) pairs of " + cameras + " cameras × " + record.Steps +
                     " steps are missing (" + string.Join(", ", missing) + (missingCount > missing.Count ? ", …" : "") + "); multi-view methods need every camera at every step."));
         }
 
@@ -208,7 +208,7 @@ namespace NerfDatasetCreator
         }
 
         static void Problem(DatasetValidationReport report, string file, int index, Kept frame, string message) =>
-            report.Problems.Add(new DatasetProblem(file, index, frame.FilePath, message));
+            report.Problems.Add(DatasetProblem.Structure(file, index, frame.FilePath, message));
 
         static bool TryNumber(JToken token, out double value)
         {

@@ -182,7 +182,7 @@ namespace NerfDatasetCreator.Tests
             File.Delete(Path.Combine(_lego, "train", "r_2.png"));
             TestPng.Write(Path.Combine(_lego, "test", "r_99.png"), 100, 100);
             var report = DatasetValidator.Validate(_lego);
-            Assert.That(report.Problems.Select(p => p.FrameIndex), Is.EqualTo(new[] { 1, 2, 99 }));
+            Assert.That(report.Problems.Select(p => p.Frame), Is.EqualTo(new[] { 1, 2, 99 }));
             Assert.That(report.IsValid, Is.False);
         }
 

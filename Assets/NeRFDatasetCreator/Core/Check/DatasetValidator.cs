@@ -22,16 +22,16 @@ namespace NerfDatasetCreator
             var report = new DatasetValidationReport { Folder = folder };
             if (!Directory.Exists(folder))
             {
-                report.Problems.Add(new DatasetProblem(folder, -1, null, "the dataset folder does not exist."));
+                report.Problems.Add(DatasetProblem.Structure(folder, -1, null, "the dataset folder does not exist."));
                 return report;
             }
             // Read once; the checks below take it (a malformed config is not validate's concern, an unreadable one is).
             var config = DatasetConfig.Read(folder);
             if (config.State == DatasetConfigState.Unreadable)
-                report.Problems.Add(new DatasetProblem(DatasetLayout.ConfigFileName, -1, null, "cannot be read: " + config.Error + " (check the file's permissions)."));
+                report.Problems.Add(DatasetProblem.Structure(DatasetLayout.ConfigFileName, -1, null, "cannot be read: " + config.Error + " (check the file's permissions)."));
             var state = new ImageState { SkipFiles = config.IsPlanOnly };
             if (state.SkipFiles)
-                report.Warnings.Add(new DatasetProblem(DatasetLayout.ConfigFileName, -1, null,
+                report.Warnings.Add(DatasetProblem.Structure(DatasetLayout.ConfigFileName, -1, null,
                     "says the images were not rendered (a plan from `nerf-dataset plan`): image and extra-file checks are skipped."));
             double? firstAngle = null;
             string firstAngleFile = null;
@@ -47,7 +47,7 @@ namespace NerfDatasetCreator
                 var path = Path.Combine(folder, file);
                 if (!File.Exists(path))
                 {
-                    report.Problems.Add(new DatasetProblem(file, -1, null,
+                    report.Problems.Add(DatasetProblem.Structure(file, -1, null,
                         "is missing; bmild/nerf and nerf-pytorch open all three transforms files (write an empty \"frames\" list for an unused split)."));
                     continue;
                 }
@@ -66,7 +66,7 @@ namespace NerfDatasetCreator
                         {
                             var key = ExportPaths.Normalise(frame.FilePath);
                             if (!state.FilePaths.Add(key, file, frame.Index, out var first))
-                                report.Problems.Add(new DatasetProblem(file, frame.Index, frame.FilePath,
+                                report.Problems.Add(DatasetProblem.Structure(file, frame.Index, frame.FilePath,
                                     "file_path is also " + first.file + " frame " + first.index + "'s; two frames of one image train on it twice and exports write it twice (give every frame its own image)."));
                         }
                         if (frame.TransformMatrix.HasValue && frame.TransformMatrix.Value.IsFinite) cameraCentres.Add(frame.TransformMatrix.Value.Translation);
@@ -79,32 +79,32 @@ namespace NerfDatasetCreator
                 catch (SettingsFormatException e)
                 {
                     cameraCentres = checkpoint.Restore();
-                    report.Problems.Add(new DatasetProblem(file, -1, null, "line " + e.Line + ", column " + e.Column + ": " + e.Detail));
+                    report.Problems.Add(DatasetProblem.Structure(file, -1, null, "line " + e.Line + ", column " + e.Column + ": " + e.Detail));
                     continue;
                 }
                 catch (FileTooLargeException e)
                 {
-                    report.Problems.Add(new DatasetProblem(file, -1, null, e.Reason));
+                    report.Problems.Add(DatasetProblem.Structure(file, -1, null, e.Reason));
                     continue;
                 }
                 catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
                 {
                     cameraCentres = checkpoint.Restore();
-                    report.Problems.Add(new DatasetProblem(file, -1, null, "cannot be read: " + e.Message + " (check the file's permissions)."));
+                    report.Problems.Add(DatasetProblem.Structure(file, -1, null, "cannot be read: " + e.Message + " (check the file's permissions)."));
                     continue;
                 }
                 state.Referenced.UnionWith(checkpoint.Referenced);
                 timeFramesBySplit[split] = timeFrames;
                 var frameCount = doc.FrameCount;
                 // The document's own problems come before its frames', as the file reads.
-                report.Problems.InsertRange(checkpoint.ProblemCount, doc.Problems.Select(p => new DatasetProblem(file, -1, null, p)));
+                report.Problems.InsertRange(checkpoint.ProblemCount, doc.Problems.Select(p => DatasetProblem.Structure(file, -1, null, p)));
                 report.FrameCounts[DatasetSplits.Name(split)] = frameCount;
 
                 if (doc.CameraAngleX.HasValue)
                 {
                     var angle = doc.CameraAngleX.Value;
                     if (!(angle > 0 && angle < Math.PI))
-                        report.Problems.Add(new DatasetProblem(file, -1, null,
+                        report.Problems.Add(DatasetProblem.Structure(file, -1, null,
                             "camera_angle_x = " + ValidationProblem.Format(angle) + " is not in (0, π); it is the horizontal field of view in radians."));
                     else if (firstAngle == null)
                     {
@@ -112,37 +112,37 @@ namespace NerfDatasetCreator
                         firstAngleFile = file;
                     }
                     else if (Math.Abs(angle - firstAngle.Value) > 1e-9)
-                        report.Problems.Add(new DatasetProblem(file, -1, null,
+                        report.Problems.Add(DatasetProblem.Structure(file, -1, null,
                             "camera_angle_x = " + ValidationProblem.Format(angle) + " differs from " + firstAngleFile + "'s " + ValidationProblem.Format(firstAngle.Value) +
                             "; bmild/nerf uses the last file's value for every split."));
                 }
                 if (frameCount == 0 && split == DatasetSplit.Train)
-                    report.Problems.Add(new DatasetProblem(file, -1, null, "has no frames; every loader trains on the train split, so a dataset needs train views."));
+                    report.Problems.Add(DatasetProblem.Structure(file, -1, null, "has no frames; every loader trains on the train split, so a dataset needs train views."));
                 else if (frameCount == 0)
-                    report.Warnings.Add(new DatasetProblem(file, -1, null, "has no frames; " + LoadersNeeding(split) + " need frames in this split."));
+                    report.Warnings.Add(DatasetProblem.Structure(file, -1, null, "has no frames; " + LoadersNeeding(split) + " need frames in this split."));
                 if (state.First != null && (doc.W.HasValue && doc.W != state.First.Width || doc.H.HasValue && doc.H != state.First.Height))
-                    report.Problems.Add(new DatasetProblem(file, -1, null,
+                    report.Problems.Add(DatasetProblem.Structure(file, -1, null,
                         "w × h = " + Show(doc.W) + "×" + Show(doc.H) + " but the images are " + state.First.Width + "×" + state.First.Height +
                         "; instant-ngp and nerfstudio take the intrinsics from w and h (write the images' size)."));
                 if (needsDepthScale && !(doc.IntegerDepthScale > 0))
-                    report.Problems.Add(new DatasetProblem(file, -1, null,
+                    report.Problems.Add(DatasetProblem.Structure(file, -1, null,
                         "frames have depth_path but integer_depth_scale is " + (doc.IntegerDepthScale.HasValue ? ValidationProblem.Format(doc.IntegerDepthScale.Value) : "missing") +
                         "; instant-ngp needs it above 0 (0.001 for millimetre PNGs)."));
             }
             var cloudWarnings = new List<ValidationProblem>();
             PointCloudOwnership.IsOwn(folder, config, cloudWarnings);
-            foreach (var w in cloudWarnings) report.Warnings.Add(new DatasetProblem(w.Field, -1, null, w.Reason + " " + w.Fix));
+            foreach (var w in cloudWarnings) report.Warnings.Add(DatasetProblem.Structure(w.Field, -1, null, w.Reason + " " + w.Fix));
             GeometryPackChecks.Check(folder, config, state.SkipFiles, report);
             if (!state.SkipFiles)
             {
                 if (state.First != null && state.ColourImages > 0 && state.SixteenBitColour == state.ColourImages)
-                    report.Warnings.Add(new DatasetProblem(state.FirstPath, -1, null,
+                    report.Warnings.Add(DatasetProblem.Structure(state.FirstPath, -1, null,
                         "every colour image is 16-bit; loaders that divide by 255 (bmild/nerf, nerf-pytorch) read them up to 257 times too bright (write 8-bit PNGs, as Blender and this plugin do)."));
                 foreach (var unreferenced in UnreferencedImages(folder, state.Referenced))
                     report.Warnings.Add(unreferenced);
             }
             foreach (var range in cameraCentres.Check())
-                report.Warnings.Add(new DatasetProblem("transforms_*.json", -1, null,
+                report.Warnings.Add(DatasetProblem.Structure("transforms_*.json", -1, null,
                     "(object size unknown here: the target is taken as a point at the origin) " + range));
             TimeDatasetChecks.Check(config.Config, report, timeFramesBySplit);
             if (labelMaps && !state.SkipFiles) LabelsValidation.Check(folder, report);
@@ -178,7 +178,7 @@ namespace NerfDatasetCreator
                     .Where(f => IsImage(f) && !referenced.Contains(f) && !IsCompanion(f, stems))
                     .OrderBy(f => f, StringComparer.Ordinal).ToList();
                 if (stray.Count == 0) continue;
-                yield return new DatasetProblem(split + "/", -1, null,
+                yield return DatasetProblem.Structure(split + "/", -1, null,
                     stray.Count + " image(s) no frame names (" + string.Join(", ", stray.Take(3)) + (stray.Count > 3 ? ", …" : "") +
                     "); loaders never see them — a frame may be missing from " + DatasetLayout.TransformsFileName(split) + ".");
             }
@@ -264,7 +264,7 @@ namespace NerfDatasetCreator
 
         static void CheckFrame(string folder, string file, DatasetFrame frame, ImageState state, DatasetValidationReport report)
         {
-            void Problem(string message) => report.Problems.Add(new DatasetProblem(file, frame.Index, frame.FilePath, message));
+            void Problem(string message) => report.Problems.Add(DatasetProblem.Structure(file, frame.Index, frame.FilePath, message));
             foreach (var p in frame.Problems) Problem(p);
 
             if (frame.TransformMatrix.HasValue) CheckMatrix(frame.TransformMatrix.Value, Problem);
