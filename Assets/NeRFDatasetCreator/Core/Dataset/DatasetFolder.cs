@@ -269,30 +269,9 @@ namespace NerfDatasetCreator
                 problems.Add("has no transform_matrix.");
                 return null;
             }
-            if (!(token is JArray rows) || rows.Count != 4)
-            {
-                problems.Add("transform_matrix is not a list of 4 rows.");
-                return null;
-            }
-            var m = new double[16];
-            for (var r = 0; r < 4; r++)
-            {
-                if (!(rows[r] is JArray row) || row.Count != 4)
-                {
-                    problems.Add("transform_matrix row " + r + " is not a list of 4 numbers.");
-                    return null;
-                }
-                for (var c = 0; c < 4; c++)
-                {
-                    if (!TryNumber(row[c], out var v))
-                    {
-                        problems.Add("transform_matrix[" + r + "][" + c + "] is not a number (" + row[c].ToString(Formatting.None) + ").");
-                        return null;
-                    }
-                    m[r * 4 + c] = v;
-                }
-            }
-            return Matrix4x4d.FromRowMajor(m);
+            if (JsonMatrix.TryRead(token, "transform_matrix", out var matrix, out var problem)) return matrix;
+            problems.Add(problem);
+            return null;
         }
 
         static double? Number(JObject obj, string key, List<string> problems, bool required)

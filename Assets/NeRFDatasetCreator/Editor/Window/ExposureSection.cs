@@ -81,6 +81,7 @@ namespace NerfDatasetCreator.Editor
             }
             if (remove >= 0) values.RemoveAt(remove);
             EditorGUILayout.BeginHorizontal();
+            // 15 points a level: EditorGUI.kIndentPerLevel (UnityCsReference Editor/Mono/EditorGUI.cs line 121 in 2022.3, 127 in 6000.0), as LabelsSection does.
             GUILayout.Space(EditorGUI.indentLevel * 15);
             if (GUILayout.Button(new GUIContent("Add value", "Append a copy of the last value (EV 0, gains 1 for the first)."), GUILayout.Width(120)))
                 values.Add(ExposureValueRows.Next(values));
