@@ -17,7 +17,7 @@ namespace NerfDatasetCreator.Repository.Tests
     {
         static readonly Regex Row = new Regex(@"^\| `((?:Core|Editor)(?:/[^`]*)?)/` \| (.*) \|$");
 
-        static string Page => RepositoryPaths.Combine("Documentation~", "repository-layout.md");
+        static string Page => RepositoryPaths.Combine("Documentation~", "maintainers", "repository-layout.md");
 
         /// <summary>The rows between the page's markers for one root, as (folder, description).</summary>
         static List<(string Folder, string Description)> Rows(string root)
