@@ -224,9 +224,13 @@ namespace NerfDatasetCreator.Editor
         /// run may outlive the window that started it, and Play mode, a script reload or quitting end it from inside
         /// that editor event: the log then says why and where the partial files are). Returns the session (its
         /// Cancel() stops the run), or null when the capture could not start — <paramref name="done"/> has then
-        /// already been called.
+        /// already been called. <paramref name="captured"/>, when given, gets the capture's result as soon as the dataset is
+        /// in place, before the self-check starts: the window stores it there (in <c>SessionState</c>, which outlives a
+        /// domain reload), so a check ended by Play mode or a reload (<see cref="BackgroundJob"/>) never loses the fact
+        /// that the capture itself succeeded (review R4-9).
         /// </summary>
-        public static CaptureSession StartInBackground(PreparedCapture prepared, Action<DatasetCaptureResult> done, string tool = "unity-editor")
+        public static CaptureSession StartInBackground(PreparedCapture prepared, Action<DatasetCaptureResult> done, string tool = "unity-editor",
+            Action<DatasetCaptureResult> captured = null)
         {
             var refused = !prepared.IsValid ? Refused(prepared.Problems) : ActiveCapture.IsRunning || PostCaptureCheck.IsRunning ? Busy() : PreflightCapture.Run(prepared) ?? ReadSurface(prepared) ?? CollectLabels(prepared);
             if (refused != null)
@@ -255,6 +259,7 @@ namespace NerfDatasetCreator.Editor
                         done?.Invoke(result);
                         return;
                     }
+                    captured?.Invoke(result);
                     // The self-check runs off the main thread; done gets the result once it is in.
                     PostCaptureCheck.StartInBackground(result.DatasetFolder, report =>
                     {
