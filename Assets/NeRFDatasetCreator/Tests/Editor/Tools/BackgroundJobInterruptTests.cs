@@ -46,8 +46,7 @@ namespace NerfDatasetCreator.Editor.Tests
                 (report, cancel) =>
                 {
                     cancel.WaitHandle.WaitOne(TimeSpan.FromMinutes(1));
-                    cancel.ThrowIfCancellationRequested();
-                    return 1;
+                    return cancel.IsCancellationRequested ? -1 : 1;
                 },
                 task =>
                 {
@@ -58,7 +57,8 @@ namespace NerfDatasetCreator.Editor.Tests
             Assert.That(BackgroundJob.Running, Is.EqualTo(1));
             BackgroundJob.InterruptAll("Unity is entering Play mode");
             Assert.That(calls, Is.EqualTo(1), "done ran inside the event");
-            Assert.That(seen.IsCanceled, Is.True, "the worker saw its token");
+            Assert.That(seen.IsCompleted, Is.True, "waited for");
+            Assert.That(seen.Result, Is.EqualTo(-1), "the worker saw its token cancelled");
             Assert.That(BackgroundJob.Running, Is.EqualTo(0));
             for (var i = 0; i < 5; i++) yield return null;
             Assert.That(calls, Is.EqualTo(1), "the poll does not report it a second time");
