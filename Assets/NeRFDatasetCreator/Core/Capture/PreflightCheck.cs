@@ -53,7 +53,7 @@ namespace NerfDatasetCreator
         /// <summary>
         /// The calibration's settings: a copy of <paramref name="settings"/> at <see cref="LongSide"/> pixels on the longer
         /// side (same aspect ratio within a pixel, so the same fields of view), at most <see cref="MaxPoints"/> points,
-        /// named <paramref name="name"/> under <paramref name="folder"/>, never overwriting, and without a preflight of its own.
+        /// the geometry pack at the start time only (not every step), named <paramref name="name"/> under <paramref name="folder"/>, never overwriting, and without a preflight of its own.
         /// </summary>
         public static DatasetSettings CalibrationSettings(DatasetSettings settings, string folder, string name)
         {
@@ -66,6 +66,9 @@ namespace NerfDatasetCreator
                 s.Height = Math.Max(8, (int)Math.Round(s.Height * scale));
             }
             s.PointCloudPoints = Math.Min(s.PointCloudPoints, MaxPoints);
+            // The per-step geometry pack poses and reads the target once per time step: the calibration writes only the
+            // start mesh (its check reads no more), and the Unity layer estimates the full pack's time instead (review R4-6).
+            s.GeometryPackEveryStep = false;
             s.OutputFolder = folder;
             s.Name = name;
             s.Overwrite = OverwritePolicy.Never;

@@ -26,7 +26,8 @@ namespace NerfDatasetCreator
     /// <item>Overscan: the whole sensor is visible, with more around it: Vertical when the image is wider than the
     /// sensor, else Horizontal — the larger of the two.</item>
     /// <item>None stretches the sensor to the image: non-square pixels unless the aspects match, which a pinhole
-    /// dataset (one focal length for x and y) cannot describe — refused unless they do.</item>
+    /// dataset (one focal length for x and y) cannot describe — refused unless they do (within 0.1 %, or within what
+    /// whole pixels allow at the image's size: less than half a pixel of stretch on either side).</item>
     /// </list>
     /// Cinemachine 3's CinemachineDebug.GetCameraRect makes the same Fill/Overscan choice. Lens shift moves the
     /// principal point off the image centre, which the datasets' intrinsics (c = size / 2) cannot describe: refused.
@@ -36,11 +37,43 @@ namespace NerfDatasetCreator
         /// <summary>Relative difference of image and sensor aspect under which gate fit None counts as no stretch.</summary>
         public const double AspectTolerance = 1e-3;
 
-        /// <summary>The vertical field of view in degrees; throws <see cref="InvalidParameterException"/> for a framing a pinhole cannot reproduce.</summary>
+        /// <summary>
+        /// How far a W × H image's aspect can be from the one it approximates only because its sides are whole pixels: the
+        /// largest relative change of W/H when each side moves by half a pixel, (1 + 1/2W) / (1 − 1/2H) − 1. A 160 × 91
+        /// image (the preflight's calibration of a 1000 × 567 capture) is 0.87 %; a 1920 × 1080 image 0.07 %.
+        /// </summary>
+        public static double RoundingTolerance(int width, int height) =>
+            width <= 0 || height <= 0 ? 0 : (1 + 0.5 / width) / (1 - 0.5 / height) - 1;
+
+        /// <summary>
+        /// The vertical field of view in degrees for a W × H image; gate fit None is accepted within
+        /// <see cref="AspectTolerance"/> or, for small images, within <see cref="RoundingTolerance"/> of the sensor's aspect
+        /// (review R4-5: the preflight's 160-px calibration of an accepted capture rounds its aspect by up to ~0.9 %).
+        /// Throws <see cref="InvalidParameterException"/> for a framing a pinhole cannot reproduce.
+        /// </summary>
+        public static double VerticalFovDegrees(double focalLengthMm, double sensorWidthMm, double sensorHeightMm, double lensShiftX,
+            double lensShiftY, GateFit fit, int width, int height, string field = "camera.copyFromCamera")
+        {
+            InvalidParameterException.ThrowIfAny(Problem(focalLengthMm, sensorWidthMm, sensorHeightMm, lensShiftX, lensShiftY, fit, width, height, field));
+            return Fov(focalLengthMm, sensorWidthMm, sensorHeightMm, fit, (double)width / height);
+        }
+
+        /// <summary>Why this framing of a W × H image cannot be reproduced by the capture's pinhole camera, or null (see <see cref="VerticalFovDegrees(double, double, double, double, double, GateFit, int, int, string)"/>).</summary>
+        public static ValidationProblem Problem(double focalLengthMm, double sensorWidthMm, double sensorHeightMm, double lensShiftX,
+            double lensShiftY, GateFit fit, int width, int height, string field = "camera.copyFromCamera") =>
+            Problem(focalLengthMm, sensorWidthMm, sensorHeightMm, lensShiftX, lensShiftY, fit, height > 0 ? (double)width / height : 0,
+                Math.Max(AspectTolerance, RoundingTolerance(width, height)), field);
+
+        /// <summary>The vertical field of view in degrees at an exact image aspect; throws <see cref="InvalidParameterException"/> for a framing a pinhole cannot reproduce.</summary>
         public static double VerticalFovDegrees(double focalLengthMm, double sensorWidthMm, double sensorHeightMm, double lensShiftX,
             double lensShiftY, GateFit fit, double imageAspect, string field = "camera.copyFromCamera")
         {
             InvalidParameterException.ThrowIfAny(Problem(focalLengthMm, sensorWidthMm, sensorHeightMm, lensShiftX, lensShiftY, fit, imageAspect, field));
+            return Fov(focalLengthMm, sensorWidthMm, sensorHeightMm, fit, imageAspect);
+        }
+
+        static double Fov(double focalLengthMm, double sensorWidthMm, double sensorHeightMm, GateFit fit, double imageAspect)
+        {
             var vertical = 2 * Math.Atan(sensorHeightMm / (2 * focalLengthMm));
             var horizontalFit = 2 * Math.Atan(sensorWidthMm / (2 * focalLengthMm * imageAspect));
             var imageWiderThanSensor = imageAspect > sensorWidthMm / sensorHeightMm;
@@ -55,9 +88,13 @@ namespace NerfDatasetCreator
             return radians * 180 / Math.PI;
         }
 
-        /// <summary>Why this framing cannot be reproduced by the capture's pinhole camera, or null.</summary>
+        /// <summary>Why this framing at an exact image aspect cannot be reproduced by the capture's pinhole camera, or null.</summary>
         public static ValidationProblem Problem(double focalLengthMm, double sensorWidthMm, double sensorHeightMm, double lensShiftX,
-            double lensShiftY, GateFit fit, double imageAspect, string field = "camera.copyFromCamera")
+            double lensShiftY, GateFit fit, double imageAspect, string field = "camera.copyFromCamera") =>
+            Problem(focalLengthMm, sensorWidthMm, sensorHeightMm, lensShiftX, lensShiftY, fit, imageAspect, AspectTolerance, field);
+
+        static ValidationProblem Problem(double focalLengthMm, double sensorWidthMm, double sensorHeightMm, double lensShiftX,
+            double lensShiftY, GateFit fit, double imageAspect, double aspectTolerance, string field)
         {
             var ci = CultureInfo.InvariantCulture;
             if (!(focalLengthMm > 0) || !(sensorWidthMm > 0) || !(sensorHeightMm > 0) || !(imageAspect > 0) ||
@@ -71,7 +108,7 @@ namespace NerfDatasetCreator
             if (!Enum.IsDefined(typeof(GateFit), fit))
                 return new ValidationProblem(field, "gate fit " + (int)fit, "has a gate fit this plugin does not know.", "Use Vertical, Horizontal, Fill or Overscan.");
             var sensorAspect = sensorWidthMm / sensorHeightMm;
-            if (fit == GateFit.None && Math.Abs(imageAspect - sensorAspect) > AspectTolerance * sensorAspect)
+            if (fit == GateFit.None && Math.Abs(imageAspect - sensorAspect) > aspectTolerance * sensorAspect)
                 return new ValidationProblem(field, string.Format(ci, "gate fit None, sensor aspect {0:0.###}, image aspect {1:0.###}", sensorAspect, imageAspect),
                     "stretches the sensor to the image (gate fit None), so pixels are not square; the dataset's one focal length cannot describe that.",
                     "Set the template camera's Gate Fit to Vertical, Horizontal, Fill or Overscan, or make the image's aspect match the sensor's.");

@@ -60,6 +60,11 @@ namespace NerfDatasetCreator.Editor
         /// A copy of one object and its children (<see cref="Root"/>), active even if the original is not, every script
         /// disabled: what the dynamic capture's measurement and the animated-camera sampler pose with
         /// <see cref="ContentClock"/>. References inside the hierarchy are remapped by <c>Object.Instantiate</c> itself.
+        /// LOD 0 only, as the capture's own copy (<see cref="LodZero.Apply"/> with the original's parents, review R4-7): the
+        /// copy sits under the holder alone, so an LODGroup above the original is not above the copy, and
+        /// <c>LodZero.BeyondLod0(copy)</c> would no longer see that group's LOD 1+ renderers (<c>LODGroup.GetLODs</c> lists
+        /// the renderers of each level, UCR Runtime/Export/Graphics/LOD.bindings.cs:35, 73-74 on 2022.3.76f1 and 6000.0.78f1).
+        /// Without this the per-step geometry, the dynamic points3d.ply and the posed bounds held every LOD level at once.
         /// </summary>
         public static SceneCopy OfObject(GameObject original, string purpose)
         {
@@ -68,6 +73,7 @@ namespace NerfDatasetCreator.Editor
             {
                 copy.Root = Object.Instantiate(original, copy.Holder.transform, true);
                 Quiet(copy.Root, script => false);
+                LodZero.Apply(original, copy.Root);
                 copy.Root.SetActive(true);
                 copy.Holder.SetActive(true);
                 return copy;

@@ -8,7 +8,9 @@ namespace NerfDatasetCreator.Editor
     /// that only a higher LOD level of some LODGroup lists (LOD.renderers, UnityCsReference 2022.3
     /// Runtime/Export/Graphics/LOD.bindings.cs:34-35, GetLODs :73-74) is left out; a renderer in LOD 0 stays.
     /// LODGroups both on or under the target and above it count: a target picked below its LODGroup is copied without
-    /// that group, so its copies would otherwise draw every level at once.
+    /// that group, so its copies would otherwise draw every level at once. Both the capture's copy (CaptureStage) and
+    /// the posed copies of <see cref="SceneCopy.OfObject"/> (time measurement, per-step geometry) apply it. Lines as in
+    /// 6000.0.78f1 too (LOD.bindings.cs:35, 73-74, 86-87).
     /// </summary>
     static class LodZero
     {

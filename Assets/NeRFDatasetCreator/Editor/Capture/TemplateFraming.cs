@@ -6,7 +6,8 @@ namespace NerfDatasetCreator.Editor
     /// The vertical field of view that reproduces a template camera's framing of a W × H image: its
     /// <c>fieldOfView</c> when it is not physical, else Core's <see cref="PhysicalCameraFraming"/> from its lens, sensor
     /// and gate fit (a physical camera's fieldOfView is only its Vertical fit). The written intrinsics and the render
-    /// both take it from here.
+    /// both take it from here. The W × H overloads of Core allow gate fit None the rounding of whole pixels, so the
+    /// preflight's 160-px calibration of an accepted capture is accepted too (review R4-5).
     /// </summary>
     static class TemplateFraming
     {
@@ -15,7 +16,7 @@ namespace NerfDatasetCreator.Editor
         {
             if (template == null || !template.usePhysicalProperties || width <= 0 || height <= 0) return null;
             var problem = PhysicalCameraFraming.Problem(template.focalLength, template.sensorSize.x, template.sensorSize.y,
-                template.lensShift.x, template.lensShift.y, (GateFit)(int)template.gateFit, (double)width / height);
+                template.lensShift.x, template.lensShift.y, (GateFit)(int)template.gateFit, width, height);
             return problem == null ? null : new ValidationProblem(problem.Field, cameraName + ": " + problem.Value, problem.Reason, problem.Fix);
         }
 
@@ -26,7 +27,7 @@ namespace NerfDatasetCreator.Editor
             var problem = Problem(template, width, height, template.name);
             if (problem != null) throw new CaptureException("The template camera cannot be reproduced: " + problem);
             return PhysicalCameraFraming.VerticalFovDegrees(template.focalLength, template.sensorSize.x, template.sensorSize.y,
-                template.lensShift.x, template.lensShift.y, (GateFit)(int)template.gateFit, (double)width / height);
+                template.lensShift.x, template.lensShift.y, (GateFit)(int)template.gateFit, width, height);
         }
     }
 }

@@ -167,6 +167,14 @@ namespace NerfDatasetCreator.Editor
                 return Failed(prepared, null, e, 0);
             }
             LogEarlierRuns(session);
+            try
+            {
+                HoldGeometrySteps(prepared);
+            }
+            catch (Exception e)
+            {
+                return Failed(prepared, session, e, 0);
+            }
             using (var consumer = Writers(prepared, session, out var pipeline))
             {
                 DatasetCaptureResult result;
@@ -224,9 +232,13 @@ namespace NerfDatasetCreator.Editor
         /// run may outlive the window that started it, and Play mode, a script reload or quitting end it from inside
         /// that editor event: the log then says why and where the partial files are). Returns the session (its
         /// Cancel() stops the run), or null when the capture could not start — <paramref name="done"/> has then
-        /// already been called.
+        /// already been called. <paramref name="captured"/>, when given, gets the capture's result as soon as the dataset is
+        /// in place, before the self-check starts: the window stores it there (in <c>SessionState</c>, which outlives a
+        /// domain reload), so a check ended by Play mode or a reload (<see cref="BackgroundJob"/>) never loses the fact
+        /// that the capture itself succeeded (review R4-9).
         /// </summary>
-        public static CaptureSession StartInBackground(PreparedCapture prepared, Action<DatasetCaptureResult> done, string tool = "unity-editor")
+        public static CaptureSession StartInBackground(PreparedCapture prepared, Action<DatasetCaptureResult> done, string tool = "unity-editor",
+            Action<DatasetCaptureResult> captured = null)
         {
             var refused = !prepared.IsValid ? Refused(prepared.Problems) : ActiveCapture.IsRunning || PostCaptureCheck.IsRunning ? Busy() : PreflightCapture.Run(prepared) ?? ReadSurface(prepared) ?? CollectLabels(prepared);
             if (refused != null)
@@ -241,6 +253,7 @@ namespace NerfDatasetCreator.Editor
             {
                 session = prepared.Run.Begin();
                 LogEarlierRuns(session);
+                HoldGeometrySteps(prepared);
                 consumer = Writers(prepared, session, out var pipeline);
                 var written = consumer;
                 return CaptureRunner.RunInBackground(prepared.Target, Poses(prepared), prepared.Options, consumer, (summary, error) =>
@@ -255,6 +268,7 @@ namespace NerfDatasetCreator.Editor
                         done?.Invoke(result);
                         return;
                     }
+                    captured?.Invoke(result);
                     // The self-check runs off the main thread; done gets the result once it is in.
                     PostCaptureCheck.StartInBackground(result.DatasetFolder, report =>
                     {
@@ -312,19 +326,31 @@ namespace NerfDatasetCreator.Editor
                     provenance.Statistics["points3d"] = cloud.Count;
                 }
                 // The geometry pack is the target's surface, so an environment capture's whole scene is left out of it.
-                if (WritesGeometryPack(prepared) && GeometryPackWriter.WritesEveryStep(prepared.Run.Plan))
+                var steps = prepared.GeometrySteps;
+                if (steps != null)
                 {
-                    // "geometryPack": "everyStep": a copy posed at each step in turn, one step's meshes held at a time.
-                    var warnings = new List<ValidationProblem>();
-                    using (var steps = new TargetSurfaceOverTime(prepared.Target, prepared.Run.Plan.Time, prepared.Run.Plan.Settings.Seed, warnings))
-                        prepared.Run.Finish(session, provenance, cloud, prepared.Surface, prepared.Labels, steps.At);
-                    foreach (var warning in warnings.GroupBy(w => w.ToString()).Select(g => g.First())) Debug.LogWarning("NeRF Dataset Creator: " + warning);
+                    // "geometryPack": "everyStep": the copy made when the run started, posed at each step in turn here on the
+                    // main thread; Core packs and writes each step on a worker, one step in flight (review R4-6).
+                    var progress = new GeometryPackProgress();
+                    try
+                    {
+                        prepared.Run.Finish(session, provenance, cloud, prepared.Surface, prepared.Labels, steps.At, progress.Report);
+                    }
+                    finally
+                    {
+                        progress.Close();
+                    }
+                    foreach (var warning in steps.Warnings.GroupBy(w => w.ToString()).Select(g => g.First())) Debug.LogWarning("NeRF Dataset Creator: " + warning);
                 }
                 else prepared.Run.Finish(session, provenance, cloud, WritesGeometryPack(prepared) ? prepared.Surface : null, prepared.Labels);
             }
             catch (Exception e)
             {
                 return Failed(prepared, session, e, summary.Views);
+            }
+            finally
+            {
+                ReleaseGeometrySteps(prepared);
             }
             var message = string.Format(CultureInfo.InvariantCulture,
                 "NeRF Dataset Creator: wrote {0} views to {1} in {2:0.0} s ({3:0.00} views/s).",
@@ -356,6 +382,7 @@ namespace NerfDatasetCreator.Editor
 
         static DatasetCaptureResult Failed(PreparedCapture prepared, DatasetWriteSession session, Exception error, int written)
         {
+            ReleaseGeometrySteps(prepared);
             var cancelled = error is OperationCanceledException;
             var interruption = (error as CaptureCancelledException)?.Interruption;
             var what = interruption != null ? "The capture was stopped after " + written + " written views because " + interruption + "."
@@ -433,12 +460,31 @@ namespace NerfDatasetCreator.Editor
         }
 
         /// <summary>
+        /// <c>"geometryPack": "everyStep"</c>: copies the target when the run starts, with the scene as it is captured (the
+        /// capture's own copy is made from the same state), so that an edit during a background run never reaches the pack;
+        /// posed at each step when the dataset is finished (review R4-6). Nothing for other captures.
+        /// </summary>
+        static void HoldGeometrySteps(PreparedCapture prepared)
+        {
+            ReleaseGeometrySteps(prepared);
+            if (!WritesGeometryPack(prepared) || !GeometryPackWriter.WritesEveryStep(prepared.Run.Plan)) return;
+            var plan = prepared.Run.Plan;
+            prepared.GeometrySteps = new TargetSurfaceOverTime(prepared.Target, plan.Time, plan.Settings.Seed, new List<ValidationProblem>());
+        }
+
+        static void ReleaseGeometrySteps(PreparedCapture prepared)
+        {
+            prepared.GeometrySteps?.Dispose();
+            prepared.GeometrySteps = null;
+        }
+
+        /// <summary>
         /// Whether the capture writes <c>geometry/target_mesh.ply</c>: a whole dataset (Core's
         /// <see cref="DatasetRun.WritesGeometryPack"/>, false with <c>"geometryPack": false</c>) of a target, not an
         /// environment's whole scene. The meshes are the ones ReadSurface collects for points3d.ply — the same renderers,
         /// LOD, skinning pose and (dynamic) start time; with the pack off and no points3d.ply, none are collected.
         /// </summary>
-        static bool WritesGeometryPack(PreparedCapture prepared) =>
+        internal static bool WritesGeometryPack(PreparedCapture prepared) =>
             prepared.Run.WritesGeometryPack && prepared.Options.Isolation != CaptureIsolation.WholeScene;
 
         static string Describe(Exception e)

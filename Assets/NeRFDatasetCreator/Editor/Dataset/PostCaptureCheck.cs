@@ -65,12 +65,16 @@ namespace NerfDatasetCreator.Editor
             return Result(task, datasetFolder);
         }
 
-        /// <summary>The check, and its report written into the dataset (the dataset is the capture's own, just written).</summary>
+        /// <summary>
+        /// The check, and its report written into the dataset (the dataset is the capture's own, just written) by Core's
+        /// one writer of it, <see cref="CheckReportFile"/>. Nothing is written once the token is cancelled — Cancel, or
+        /// Play mode / a reload / quitting ending the job (<see cref="BackgroundJob"/>, review R4-9) — so such an event
+        /// never finds the report being written for a check it has already reported as cancelled.
+        /// </summary>
         static DatasetCheckReport CheckAndWrite(string datasetFolder, Action<int, int> progress, CancellationToken cancel)
         {
             var report = DatasetCheck.Run(datasetFolder, new DatasetCheckOptions(), progress, cancel);
-            if (!report.Cancelled && Directory.Exists(datasetFolder))
-                File.WriteAllText(Path.Combine(datasetFolder, DatasetCheck.ReportFileName), report.ToJson());
+            if (!cancel.IsCancellationRequested) CheckReportFile.WriteInto(datasetFolder, report);
             return report;
         }
 

@@ -1,9 +1,12 @@
 using System;
+using System.Collections.Generic;
+using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
 using UnityEditor;
 using UnityEngine;
+using Debug = UnityEngine.Debug;
 
 namespace NerfDatasetCreator.Editor
 {
@@ -49,6 +52,7 @@ namespace NerfDatasetCreator.Editor
                                 (result.Check == null ? "" : PostCaptureCheck.Summary(result.Check)) +
                                 "\nSee Documentation~/check.md for what each check means. Set \"preflight\": false to capture anyway.");
                 Debug.Log(Prefix + "preflight passed: " + prepare.ViewCount.ToString(CultureInfo.InvariantCulture) + " calibration views checked.");
+                EstimateGeometryPack(prepared);
                 return null;
             }
             finally
@@ -62,6 +66,27 @@ namespace NerfDatasetCreator.Editor
                     Debug.LogWarning(Prefix + "the preflight's temporary folder " + temp + " could not be deleted (" + e.Message + "); delete it by hand.");
                 }
             }
+        }
+
+        /// <summary>
+        /// <c>"geometryPack": "everyStep"</c>: the calibration wrote the start mesh only (Core's
+        /// <see cref="PreflightCheck.CalibrationSettings"/>), so the per-step pack is estimated instead of computed (review
+        /// R4-6): one copy posed at the last step — the costliest, Animators step from 0 — times the number of steps, logged.
+        /// </summary>
+        static void EstimateGeometryPack(PreparedCapture prepared)
+        {
+            var plan = prepared.Run.Plan;
+            if (!DatasetCapture.WritesGeometryPack(prepared) || !GeometryPackWriter.WritesEveryStep(plan)) return;
+            var watch = Stopwatch.StartNew();
+            using (var steps = new TargetSurfaceOverTime(prepared.Target, plan.Time, plan.Settings.Seed, new List<ValidationProblem>()))
+            {
+                watch.Restart();
+                steps.At(plan.Time.Steps - 1);
+            }
+            var one = watch.Elapsed.TotalSeconds;
+            Debug.Log(string.Format(CultureInfo.InvariantCulture,
+                Prefix + "preflight: the geometry of every time step ({0} steps, \"geometryPack\": \"everyStep\") will take up to about {1:0.#} s " +
+                "after the views ({2:0.###} s for the last step); the preflight did not compute it.", plan.Time.Steps, one * plan.Time.Steps, one));
         }
 
         static DatasetCaptureResult Stop(string why, bool cancelled = false) =>

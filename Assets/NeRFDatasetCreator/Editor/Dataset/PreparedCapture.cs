@@ -30,6 +30,12 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         internal IReadOnlyList<SurfaceMesh> Surface { get; set; }
 
+        /// <summary>
+        /// <c>"geometryPack": "everyStep"</c>: the copy of the target made when the run starts, posed at each step when the
+        /// dataset is finished (review R4-6); null otherwise. Disposed when the run ends.
+        /// </summary>
+        internal TargetSurfaceOverTime GeometrySteps { get; set; }
+
         /// <summary>The capture's label table (labels.json), made when the run starts (<see cref="SceneLabels"/>); null without labels.</summary>
         internal LabelTable Labels { get; set; }
 

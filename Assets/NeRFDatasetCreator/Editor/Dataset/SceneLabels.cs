@@ -14,8 +14,14 @@ namespace NerfDatasetCreator.Editor
     /// (Runtime/Transform/ScriptBindings/Transform.bindings.cs:418 / :388), <c>LayerMask.LayerToName</c>
     /// (Runtime/Export/Scripting/LayerMask.bindings.cs:44), <c>PrefabUtility.IsAnyPrefabInstanceRoot</c> and
     /// <c>GetPrefabAssetPathOfNearestInstanceRoot</c> (Editor/Mono/Prefabs/PrefabUtility.cs:1844, 1856 / 2084, 2096).
+    /// A root's sibling index is its place among its own scene's roots (the per-scene root list of
+    /// <c>Scene.GetRootGameObjects</c>, Runtime/Export/SceneManager/Scene.cs:85-109 on both lines; <c>GetSiblingIndex</c>
+    /// itself is native), so two loaded scenes repeat root indices: a whole-scene capture with several loaded scenes puts
+    /// each chain under its scene (Core's <see cref="LabelScenes"/>, review R4-4). <c>SceneManager.sceneCount</c> and
+    /// <c>GetSceneAt</c> (Runtime/Export/SceneManager/SceneManager.bindings.cs:55, 99 on both lines) give the loaded scenes
+    /// in the hierarchy window's order.
     /// </summary>
-    static class SceneLabels
+    public static class SceneLabels
     {
         public sealed class Result
         {
@@ -32,7 +38,9 @@ namespace NerfDatasetCreator.Editor
         {
             var infos = new List<SceneObjectInfo>();
             var renderers = new List<Renderer>();
-            foreach (var source in Sources(target, isolation))
+            var loaded = LoadedScenes();
+            var qualify = isolation == CaptureIsolation.WholeScene && LabelScenes.Qualifies(loaded.Count);
+            foreach (var source in Sources(target, isolation, loaded))
             {
                 var beyondLod0 = LodZero.BeyondLod0(source);
                 foreach (var renderer in source.GetComponentsInChildren<Renderer>(true))
@@ -40,7 +48,13 @@ namespace NerfDatasetCreator.Editor
                     if (!(renderer is MeshRenderer || renderer is SkinnedMeshRenderer) || beyondLod0.Contains(renderer)) continue;
                     if (renderer.shadowCastingMode == ShadowCastingMode.ShadowsOnly || (cullingMask & (1 << renderer.gameObject.layer)) == 0) continue;
                     if (!everyRenderer && (!renderer.enabled || !ActiveBelow(renderer.transform, source.transform))) continue;
-                    infos.Add(Describe(renderer, isolation == CaptureIsolation.WholeScene ? null : target.transform));
+                    var info = Describe(renderer, isolation == CaptureIsolation.WholeScene ? null : target.transform);
+                    if (qualify)
+                    {
+                        var scene = renderer.gameObject.scene;
+                        info = LabelScenes.InScene(info, scene.name, loaded.IndexOf(scene));
+                    }
+                    infos.Add(info);
                     renderers.Add(renderer);
                 }
             }
@@ -55,20 +69,28 @@ namespace NerfDatasetCreator.Editor
         }
 
         /// <summary>What a capture copies (CaptureStage's sources): the target, or every active root object of the loaded scenes.</summary>
-        static IEnumerable<GameObject> Sources(GameObject target, CaptureIsolation isolation)
+        static IEnumerable<GameObject> Sources(GameObject target, CaptureIsolation isolation, List<Scene> loaded)
         {
             if (isolation == CaptureIsolation.TargetOnly)
             {
                 if (target != null) yield return target;
                 yield break;
             }
+            foreach (var scene in loaded)
+            foreach (var root in scene.GetRootGameObjects())
+                if ((root.hideFlags & HideFlags.DontSave) == 0 && root.activeInHierarchy) yield return root;
+        }
+
+        /// <summary>The loaded scenes in the hierarchy window's order; a scene's place here is its label node's index.</summary>
+        static List<Scene> LoadedScenes()
+        {
+            var loaded = new List<Scene>();
             for (var i = 0; i < SceneManager.sceneCount; i++)
             {
                 var scene = SceneManager.GetSceneAt(i);
-                if (!scene.isLoaded) continue;
-                foreach (var root in scene.GetRootGameObjects())
-                    if ((root.hideFlags & HideFlags.DontSave) == 0 && root.activeInHierarchy) yield return root;
+                if (scene.isLoaded) loaded.Add(scene);
             }
+            return loaded;
         }
 
         /// <summary>Active below <paramref name="source"/>: the target's copy is activated whatever the target's own state (as TargetMeshes).</summary>

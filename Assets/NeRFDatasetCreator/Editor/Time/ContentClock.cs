@@ -19,7 +19,12 @@ namespace NerfDatasetCreator.Editor
     /// PlayableDirector.bindings.cs:78, 84) — after the Animators, so a Timeline's animation tracks win as in play mode.</item>
     /// <item>ParticleSystem: stopped and cleared, a fixed <c>randomSeed</c> with <c>useAutoRandomSeed</c> off
     /// (Modules/ParticleSystem/ScriptBindings/ParticleSystem.bindings.cs:65, 73), then <c>Simulate(t, withChildren: true,
-    /// restart: true, fixedTimeStep: true)</c> (line 156) from the root systems.</item>
+    /// restart: true, fixedTimeStep: false)</c> (line 156 on 2022.3.76f1 and 6000.0.78f1) from the root systems. Not the
+    /// fixed time step: "fixedTimeStep: Only update the system at fixed intervals, based on the value in 'Fixed Time' in
+    /// the Time options" (Scripting API ParticleSystem.Simulate), which snapped content time to
+    /// <c>Time.fixedDeltaTime</c> (0.02 s by default), so motion-blur sub-frames and view times within one fixed step
+    /// showed the same particles (review R4-8). "restart: true … reset to 0 time, and then advanced by this value" keeps
+    /// each call independent of the ones before.</item>
     /// </list>
     /// </summary>
     public sealed class ContentClock
@@ -72,7 +77,7 @@ namespace NerfDatasetCreator.Editor
                 director.Evaluate();
             }
             foreach (var system in _particles)
-                if (system != null) system.Simulate(t, true, true, true);
+                if (system != null) system.Simulate(t, withChildren: true, restart: true, fixedTimeStep: false); // at t exactly (R4-8)
             _shown = seconds;
         }
 

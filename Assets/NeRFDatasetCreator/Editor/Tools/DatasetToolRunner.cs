@@ -10,7 +10,9 @@ namespace NerfDatasetCreator.Editor
     /// <see cref="ToolTranscript"/>, so no .NET SDK is needed and the messages are the tool's own — on a worker
     /// thread, with a task in Unity's Background Tasks window and status bar (<see cref="BackgroundJob"/>). The editor
     /// stays usable; one command runs at a time. Script reloading waits until the command ends, so a command is never cut
-    /// off by a recompile; its lines go to the Console as one entry headed by the equivalent terminal command.
+    /// off by a recompile; Play mode or quitting waits for it a few seconds and then reports it cut off
+    /// (<see cref="BackgroundJob.InterruptWaitMilliseconds"/>). Its lines go to the Console as one entry headed by the
+    /// equivalent terminal command.
     /// There is no Cancel: every command finishes in one step or is finished or rolled back by the next run
     /// (Documentation~/reliability.md), which a stop in the middle would only postpone.
     /// </summary>
@@ -50,6 +52,9 @@ namespace NerfDatasetCreator.Editor
             _running = false;
             Last = task.Status == TaskStatus.RanToCompletion ? task.Result : null;
             if (Last != null) Log(Last);
+            else if (!task.IsCompleted)
+                // Play mode, a script reload or quitting ended the job while the command still ran (BackgroundJob).
+                Debug.LogError("NeRF Dataset Creator: " + _title + " was cut off by Unity before it ended. Run it again: its next run finishes or rolls back what this one started.");
             else Debug.LogError("NeRF Dataset Creator: " + _title + " stopped: " + task.Exception?.GetBaseException().Message);
             Changed?.Invoke();
             return Last != null && Last.Succeeded ? Progress.Status.Succeeded : Progress.Status.Failed;

@@ -76,7 +76,8 @@ namespace NerfDatasetCreator.Editor
             else
             {
                 // The result is logged by StartInBackground; the window may be closed by the time it comes.
-                DatasetCapture.StartInBackground(prepared, Store);
+                // Stored when the dataset is in place and again with the self-check's verdict (review R4-9).
+                DatasetCapture.StartInBackground(prepared, Store, captured: Store);
                 Changed?.Invoke();
             }
         }

@@ -1,10 +1,12 @@
 using System;
+using System.Collections;
 using System.IO;
 using System.Linq;
 using Newtonsoft.Json.Linq;
 using NUnit.Framework;
 using UnityEngine;
 using UnityEngine.SceneManagement;
+using UnityEngine.TestTools;
 
 namespace NerfDatasetCreator.Editor.Tests
 {
@@ -116,6 +118,39 @@ namespace NerfDatasetCreator.Editor.Tests
                 Assert.That(seen[k], Is.GreaterThan(points.Length / 3 / 5), "step " + k + " seen by its own train view");
                 for (var j = 0; j < 3; j++)
                     if (j != k) Assert.That(seen[k], Is.GreaterThan(3 * seen[j]), "step " + k + " against step " + j + "'s depth");
+            }
+        }
+
+        /// <summary>
+        /// Review R4-6: the per-step geometry is the target as captured. A background capture is started, then the user's
+        /// cube is scaled 3× (the clip animates only its x position); the pack, computed when the dataset is finished, still
+        /// equals a foreground capture's of the unedited cube, vertex for vertex. Before, the copy was made from the live
+        /// target at the end and every step's cube was three times too large.
+        /// </summary>
+        [UnityTest]
+        [Category("GPU")]
+        public IEnumerator AnEditDuringABackgroundCaptureDoesNotReachThePerStepGeometry()
+        {
+            TestScene.RequireRendering();
+            var reference = DatasetCapture.RunBlocking(DatasetCapture.Prepare(Settings(), _cube, _project), new SilentProgress());
+            Assert.That(reference.Succeeded, Is.True, reference.Message);
+            var settings = Settings();
+            settings.Name = "edited";
+            var prepared = DatasetCapture.Prepare(settings, _cube, _project);
+            DatasetCaptureResult result = null;
+            Assert.That(DatasetCapture.StartInBackground(prepared, r => result = r), Is.Not.Null);
+            _cube.transform.localScale = Vector3.one * 3; // the user edits the target while the capture runs
+            for (var frames = 0; result == null && frames < 20000; frames++) yield return null;
+            Assert.That(result, Is.Not.Null, "the background capture ended");
+            Assert.That(result.Succeeded, Is.True, result.Message);
+            for (var k = 0; k < 3; k++)
+            {
+                var file = GeometryPackSteps.RelativePath(k);
+                var expected = GeometryFile.Read(Path.Combine(reference.DatasetFolder, file));
+                var actual = GeometryFile.Read(Path.Combine(result.DatasetFolder, file));
+                Assert.That(actual.Vertices.Count, Is.EqualTo(expected.Vertices.Count));
+                for (var i = 0; i < expected.Vertices.Count; i++)
+                    Assert.That((actual.Vertices[i] - expected.Vertices[i]).Length, Is.LessThan(1e-6), file + " vertex " + i);
             }
         }
 
