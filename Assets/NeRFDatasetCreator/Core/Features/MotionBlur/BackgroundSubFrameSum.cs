@@ -14,7 +14,7 @@ namespace NerfDatasetCreator
     /// Protocol, on one calling thread: <see cref="Begin"/> (the view's sub-frame count), then per sub-frame
     /// <see cref="TakeInput"/>, fill the pair, <see cref="Add"/>; then <see cref="Finish"/> with the output arrays, which
     /// returns at once; <see cref="WaitIdle"/> before the outputs are read. A failure on the worker is thrown by the next
-    /// call. Without a thread (<c>background: false</c>) every job runs inside the call that gives it: the same code, for
+    /// call as a <see cref="SubFrameSumException"/>. Without a thread (<c>background: false</c>) every job runs inside the call that gives it: the same code, for
     /// tests and the benchmark.
     /// </para>
     /// </summary>
@@ -193,8 +193,7 @@ namespace NerfDatasetCreator
 
         void ThrowIfFailed()
         {
-            if (_failure != null)
-                throw new InvalidOperationException("Averaging the motion-blur sub-frames failed: " + _failure.Message, _failure);
+            if (_failure != null) throw new SubFrameSumException(_failure);
         }
 
         /// <summary>Stops the worker (a job it is running finishes first).</summary>

@@ -138,9 +138,9 @@ namespace NerfDatasetCreator.Tests
                     var input = sum.TakeInput(out var b, out var w);
                     sum.Add(input, 0); // sub-frame 0 twice
                 }
-                var e = Assert.Throws<InvalidOperationException>(() => sum.WaitIdle());
+                var e = Assert.Throws<SubFrameSumException>(() => sum.WaitIdle());
                 Assert.That(e.Message, Does.Contain("Averaging the motion-blur sub-frames failed").And.Contain("added twice"));
-                Assert.Throws<InvalidOperationException>(() => sum.Begin(1), "every later call reports it too");
+                Assert.Throws<SubFrameSumException>(() => sum.Begin(1), "every later call reports it too");
             }
         }
 
