@@ -10,7 +10,7 @@ namespace NerfDatasetCreator.Editor
     /// whose passes are rendered at k× the wide size, then runs with fewer writers and a shorter queue instead of holding
     /// ~12 GB; an ordinary capture is unchanged unless its views are as large.
     /// </summary>
-    static class CaptureMemory
+    public static class CaptureMemory
     {
         /// <summary>The in-flight limits for <paramref name="options"/> with <paramref name="writers"/> writer threads wanted.</summary>
         public static ViewsInFlight Bound(CaptureOptions options, int writers)
