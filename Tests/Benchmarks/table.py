@@ -55,6 +55,12 @@ for image, label in [("rgba", "RGBA render with grain"), ("rgba-clean", "RGBA re
     if f"png.{image}.huffman.mbs" in net and f"png.{image}.zlib6.mbs" in net:
         print(f"| PNG {label}: Huffman speed / level 6 speed | {net[f'png.{image}.huffman.mbs'] / net[f'png.{image}.zlib6.mbs']:.1f}× | "
               + (f"{mono[f'png.{image}.huffman.mbs'] / mono[f'png.{image}.zlib6.mbs']:.1f}×" if f"png.{image}.huffman.mbs" in mono else "—") + " |")
+row("motion blur 800×800 k=2, 16 sub-frames, before: per-view accumulator (ms CPU per view)", "blur.perview.ms", "{:.0f}")
+row("  before: MB allocated per view", "blur.perview.mb", "{:.1f}")
+row("  the sub-frames' readback copies alone (ms CPU per view)", "blur.copies.ms", "{:.0f}")
+row("  now: one sum per run, copies + sum on one thread (ms CPU per view)", "blur.reused.ms", "{:.0f}")
+row("  now: the sum on its worker thread (ms CPU per view, both threads)", "blur.worker.ms", "{:.0f}")
+row("  now: MB allocated per view (sum on the calling thread)", "blur.reused.mb", "{:.3f}")
 row("id maps 800×800 (supersampling 2): instance map, majority rule (ms CPU)", "labels.instance.ms", "{:.2f}")
 row("  semantic map, majority rule over classes (ms CPU)", "labels.semantic.ms", "{:.2f}")
 row("  instance map, 16-bit PNG encoding (ms CPU)", "labels.png.ms", "{:.2f}")

@@ -84,7 +84,14 @@ namespace NerfDatasetCreator
         /// <see cref="DifferenceMatting"/>, or one render whose alpha is the mask) and mask at the supersampled size; <paramref name="data"/> carries depth and normals (in the output world frame, or in Unity's with <see cref="RawFrame.NormalsInUnityWorld"/>), at
         /// that size or at the output size (supersampling 1). Either may be the same frame.
         /// </summary>
-        public void Write(PlannedView view, RawFrame colour, RawFrame data)
+        public void Write(PlannedView view, RawFrame colour, RawFrame data) => Write(view, colour, data, countMatting: true);
+
+        /// <summary>
+        /// <see cref="Write(PlannedView, RawFrame, RawFrame)"/>, adding the colour's matting diagnostics to
+        /// <see cref="Matting"/> only when <paramref name="countMatting"/>: false when the view's diagnostics were counted
+        /// on another frame (<see cref="CountMatting"/>: a blurred or lens-resampled colour is not the render its mask belongs to).
+        /// </summary>
+        public void Write(PlannedView view, RawFrame colour, RawFrame data, bool countMatting)
         {
             long started = Stopwatch.GetTimestamp();
             long encoding = 0;
@@ -96,7 +103,8 @@ namespace NerfDatasetCreator
             if (colour.ColorOverBlack != null)
             {
                 // Alpha from the two colour renders; the mask file is the mask pass's geometry coverage (pixels.md §3).
-                _matting.Add(view.Split, view.Index, DifferenceMatting.Resolve(colour, rgba, _background, _backgroundIsClear));
+                var diagnostics = DifferenceMatting.Resolve(colour, rgba, _background, _backgroundIsClear);
+                if (countMatting) _matting.Add(view.Split, view.Index, diagnostics);
                 if (wantsMask) MaskEncoding.Encode(colour, mask);
             }
             else StraightAlpha.Resolve(colour, rgba, _background, mask);
@@ -174,10 +182,22 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>
+        /// Counts <paramref name="sharp"/>'s matting diagnostics (<see cref="MattingDiagnosis"/>) as the view's, for a view
+        /// whose written colour is not the render its mask belongs to: <see cref="ViewPipeline"/> calls it with the
+        /// mid-pose render of a blurred view, and with the wide render before a lens resamples it (issue 32, R4-3), then
+        /// writes with <c>countMatting: false</c>. Does nothing for a frame without a colour pair (straight alpha).
+        /// </summary>
+        public void CountMatting(PlannedView view, RawFrame sharp)
+        {
+            if (sharp.ColorOverBlack == null) return;
+            _matting.Add(view.Split, view.Index, MattingDiagnosis.Of(sharp, _backgroundIsClear));
+        }
+
+        /// <summary>
         /// Motion blur: writes the sharp colour render at the mid pose (<paramref name="sharp"/>, the same passes as a
         /// view without blur) as <c>r_i_sharp_0000.png</c>, resolved like the blurred image. Call it besides
-        /// <see cref="Write"/>, whose colour is the sub-frame average (<see cref="SubFrameAccumulator"/>); the matting
-        /// statistics count the blurred image only.
+        /// <see cref="Write(PlannedView, RawFrame, RawFrame, bool)"/>, whose colour is the sub-frame average
+        /// (<see cref="SubFrameAccumulator"/>); the matting statistics are counted apart (<see cref="CountMatting"/>).
         /// </summary>
         public void WriteSharp(PlannedView view, RawFrame sharp)
         {

@@ -52,6 +52,11 @@ namespace NerfDatasetCreator
         /// </summary>
         public void Write(PlannedView view, RawFrame colour, RawFrame data, RawFrame blurred = null)
         {
+            // The matting diagnostics need a colour pair and a mask of the same render: the sharp frame, before any
+            // resampling. A blurred average or a resampled colour would show every moving or distorted edge as "stray
+            // background" (issue 32, R4-3), so those views are counted here and written without counting.
+            var countApart = _lens != null || blurred != null;
+            if (countApart) Files.CountMatting(view, colour);
             if (_lens != null)
             {
                 // The wide frames resampled into the distorted ones, on this worker thread, into its reused arrays (the frames
@@ -73,11 +78,11 @@ namespace NerfDatasetCreator
             }
             if (blurred == null)
             {
-                Files.Write(view, colour, data);
+                Files.Write(view, colour, data, countMatting: !countApart);
                 return;
             }
             // Motion blur: the file_path image is the sub-frame average; the mid-pose render is the sharp image beside it.
-            Files.Write(view, blurred, data);
+            Files.Write(view, blurred, data, countMatting: false);
             Files.WriteSharp(view, colour);
         }
 

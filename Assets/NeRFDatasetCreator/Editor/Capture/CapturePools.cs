@@ -9,8 +9,9 @@ namespace NerfDatasetCreator.Editor
         {
             var samples = options.SupersampledWidth * options.SupersampledHeight;
             var data = options.DataWidth * options.DataHeight;
-            // Two colour renders per view (over black, over white): twice the retained count.
-            Color = new ExactArrayPool<ushort>(samples * 4, 2 * retained);
+            // Two colour renders per view (over black, over white): twice the retained count; four with motion blur (the
+            // averaged pair too).
+            Color = new ExactArrayPool<ushort>(samples * 4, Math.Min(1024, (options.SubFramesOf != null ? 4 : 2) * retained));
             Mask = new ExactArrayPool<byte>(samples, retained);
             Depth = new ExactArrayPool<float>(data, retained);
             Normal = new ExactArrayPool<float>(data * 4, retained);
@@ -31,6 +32,8 @@ namespace NerfDatasetCreator.Editor
         {
             Color.Return(view.ColorOverBlack);
             Color.Return(view.ColorOverWhite);
+            Color.Return(view.BlurredOverBlack);
+            Color.Return(view.BlurredOverWhite);
             Mask.Return(view.Mask);
             Depth.Return(view.Depth);
             Normal.Return(view.Normal);

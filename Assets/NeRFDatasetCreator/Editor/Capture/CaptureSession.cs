@@ -270,8 +270,12 @@ namespace NerfDatasetCreator.Editor
                 _stage.PinLighting();
                 try
                 {
-                    _subFrames.Render(_stage.Root, camera, targets, subFrames, QualitySettings.activeColorSpace == ColorSpace.Gamma, out var black, out var white);
+                    // The averaged pair goes into pooled arrays (returned with the view, CapturePools.Return), written by
+                    // the sum's worker while the mid-pose render below runs; Hand waits for it.
+                    var black = _pools.Color.Rent();
+                    var white = _pools.Color.Rent();
                     _blurred[index] = new[] { black, white };
+                    _subFrames.Render(_stage.Root, camera, targets, subFrames, QualitySettings.activeColorSpace == ColorSpace.Gamma, black, white);
                 }
                 finally
                 {
@@ -395,6 +399,7 @@ namespace NerfDatasetCreator.Editor
         {
             if (_blurred.TryGetValue(view.ViewIndex, out var blurred))
             {
+                _subFrames.WaitForAverage(); // the latest view's average, so this one's too (one sum, jobs in order)
                 _blurred.Remove(view.ViewIndex);
                 view.BlurredOverBlack = blurred[0];
                 view.BlurredOverWhite = blurred[1];

@@ -59,7 +59,7 @@ namespace NerfDatasetCreator.Editor
 
         /// <summary>
         /// Motion blur: the average of the view's sub-frame renders over black and over white (same layout as
-        /// <see cref="ColorOverBlack"/>; not pooled); <see cref="ColorOverBlack"/> is then the sharp render at the mid pose.
+        /// <see cref="ColorOverBlack"/>; pooled like it); <see cref="ColorOverBlack"/> is then the sharp render at the mid pose.
         /// Null without blur.
         /// </summary>
         public ushort[] BlurredOverBlack { get; internal set; }

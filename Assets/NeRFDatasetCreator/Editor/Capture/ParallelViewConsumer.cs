@@ -19,10 +19,13 @@ namespace NerfDatasetCreator.Editor
         public ParallelViewConsumer(IViewWriter writer, int workerCount = 0, int capacity = 0)
         {
             _writer = writer ?? throw new ArgumentNullException(nameof(writer));
-            if (workerCount <= 0) workerCount = Math.Max(1, Math.Min(8, Environment.ProcessorCount - 1));
+            if (workerCount <= 0) workerCount = DefaultWorkerCount;
             if (capacity <= 0) capacity = 2 * workerCount;
             _queue = new BoundedWorkQueue(workerCount, capacity, "NeRF Dataset Creator writer");
         }
+
+        /// <summary>The writer threads by default: processor count − 1 (Unity's main thread keeps a core), at least 1, at most 8.</summary>
+        public static int DefaultWorkerCount => Math.Max(1, Math.Min(8, Environment.ProcessorCount - 1));
 
         /// <summary>Views written so far.</summary>
         public int Written => _queue.Completed;

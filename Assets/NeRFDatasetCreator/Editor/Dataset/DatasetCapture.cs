@@ -199,7 +199,10 @@ namespace NerfDatasetCreator.Editor
         static ParallelViewConsumer Writers(PreparedCapture prepared, DatasetWriteSession session, out ViewPipeline pipeline)
         {
             pipeline = new ViewPipeline(prepared.Run.Plan, session, UnityExr.Encode, prepared.Labels);
-            return new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, pipeline));
+            // Views alive at once bounded by memory (a lens capture's are large): fewer readbacks, writers, queued views.
+            var limit = CaptureMemory.Bound(prepared.Options, ParallelViewConsumer.DefaultWorkerCount);
+            prepared.Options.ReadbacksInFlight = limit.Readbacks;
+            return new ParallelViewConsumer(new DatasetViewWriter(prepared.Run.Plan.Views, pipeline), limit.Writers, limit.Queue);
         }
 
         /// <summary>The self-check of a finished dataset, blocking: a progress bar in the editor, log lines in batch mode.</summary>

@@ -12,7 +12,9 @@ namespace NerfDatasetCreator.Editor
     /// <list type="bullet">
     /// <item>Animator: <c>Rebind()</c> (Modules/Animation/ScriptBindings/Animator.bindings.cs:1200) resets it to its
     /// default state, <c>Update(0)</c> enters it, then <c>Update(dt)</c> (line 1198) in fixed sub-steps of at most
-    /// <see cref="AnimatorStepSeconds"/> up to t — the state machine (transitions, blend trees) runs as in play mode at that frame rate.</item>
+    /// <see cref="AnimatorStepSeconds"/> up to t — the state machine (transitions, blend trees) runs as in play mode at that frame rate.
+    /// An Animator that applies root motion first gets its GameObject's transform back as it was before the first pose
+    /// (<see cref="RootMotionStart"/>): root motion moves it by deltas that <c>Rebind</c> does not undo.</item>
     /// <item>Legacy Animation: its clip's <c>SampleAnimation(go, t)</c> (Modules/Animation/ScriptBindings/
     /// AnimationClip.bindings.cs:25–27), which applies the clip's own wrap mode.</item>
     /// <item>PlayableDirector (Timeline): <c>time = t</c>, then <c>Evaluate()</c> (Modules/Director/ScriptBindings/
@@ -39,6 +41,7 @@ namespace NerfDatasetCreator.Editor
         readonly List<Animation> _animations = new List<Animation>();
         readonly List<PlayableDirector> _directors = new List<PlayableDirector>();
         readonly List<ParticleSystem> _particles = new List<ParticleSystem>();
+        readonly RootMotionStart _rootMotion = new RootMotionStart();
         double _shown = double.NaN;
 
         public ContentClock(TimeSources sources, long datasetSeed)
@@ -60,6 +63,7 @@ namespace NerfDatasetCreator.Editor
             }
             if (seconds == _shown) return;
             var t = (float)seconds;
+            _rootMotion.Restore(); // root motion then adds the clip's motion from 0 to t to the start, not to the last pose
             foreach (var animator in _animators)
             {
                 if (animator == null || animator.runtimeAnimatorController == null) continue;
@@ -83,6 +87,7 @@ namespace NerfDatasetCreator.Editor
 
         void Attach(GameObject root)
         {
+            _rootMotion.RestoreAndForget(); // the previous root's root-motion objects go back where they started
             _root = root;
             _animators.Clear();
             _animations.Clear();
@@ -98,6 +103,7 @@ namespace NerfDatasetCreator.Editor
                 // steps below. Same setting as CaptureStage.RenderAsPosed; only copies change.
                 foreach (var animator in _animators) animator.cullingMode = AnimatorCullingMode.AlwaysAnimate;
             }
+            _rootMotion.Record(_animators); // before the first pose
             if ((_sources & TimeSources.Animation) != 0) _animations.AddRange(root.GetComponentsInChildren<Animation>(true));
             if ((_sources & TimeSources.Timeline) != 0) _directors.AddRange(root.GetComponentsInChildren<PlayableDirector>(true));
             if ((_sources & TimeSources.Particles) != 0)

@@ -72,6 +72,9 @@ namespace NerfDatasetCreator.Tests
 
             /// <summary><c>"geometryPack": "everyStep"</c>.</summary>
             public bool GeometryPackEveryStep { get; set; }
+
+            /// <summary>Called with the pipeline once every view is written (its statistics: <see cref="ViewFileWriter.Matting"/>).</summary>
+            public Action<ViewPipeline> Written { get; set; }
         }
 
         /// <summary>
@@ -143,6 +146,7 @@ namespace NerfDatasetCreator.Tests
                 pipeline.Write(view, frame, data, blurred);
                 if (options.BlendIds) WriteBlendedIds(session, view, frame);
             }
+            options.Written?.Invoke(pipeline);
             var cloud = options.PointCloud > 0 ? AnalyticScene.Layout(run.Plan.Normalisation, Centre).Surface(options.PointCloud) : null;
             var meshesAt = options.MeshesAt;
             run.Finish(session, new Provenance(new DateTime(2026, 11, 27, 10, 0, 0, DateTimeKind.Utc)), cloud, meshesAt?.Invoke(0), labels,

@@ -65,6 +65,47 @@ namespace NerfDatasetCreator.Editor.Tests
             Assert.That(blurredSum, Is.EqualTo(sharpSum).Within(0.05 * sharpSum));
         }
 
+        /// <summary>
+        /// Issue 32, R4-2: the sub-frames are summed on Core's worker thread into pooled arrays while the next render runs,
+        /// with several views' readbacks in flight. Views alternate between a sliding camera and a still one (zero
+        /// motion: its N sub-frames are the same render, so its average is the sharp render, to half-float rounding): each
+        /// view must get the average of its own sub-frames, in order, with no array shared between views.
+        /// </summary>
+        [Test]
+        public void EveryViewGetsTheAverageOfItsOwnSubFramesWithSeveralViewsInFlight()
+        {
+            var target = GameObject.CreatePrimitive(PrimitiveType.Sphere);
+            target.name = "Blur target";
+            var pose = LookAt.FromPositions(new Vector3d(0, 0, -3), Vector3d.Zero);
+            var sliding = SubFrameSchedule.For(ShutterMotion.Centred(pose, new Vector3d(0.6, 0, 0), Vector3d.Zero, SceneNormalisation.Identity, null, null), SubFrames);
+            var still = SubFrameSchedule.For(ShutterMotion.Centred(pose, Vector3d.Zero, Vector3d.Zero, SceneNormalisation.Identity, null, null), SubFrames);
+            const int views = 7;
+            var options = new CaptureOptions
+            {
+                Width = Size, Height = Size, Supersampling = 1, VerticalFieldOfViewDegrees = 40, NearClip = 0.1, FarClip = 100,
+                ReadbacksInFlight = 3,
+                SubFramesOf = index => index % 2 == 0 ? sliding : still,
+            };
+            var consumer = new RecordingConsumer();
+            CaptureRunner.RunBlocking(target, Enumerable.Repeat(pose, views).ToArray(), options, consumer, new ScriptedProgress());
+
+            Assert.That(consumer.Views.Select(v => v.ViewIndex), Is.EqualTo(Enumerable.Range(0, views)));
+            foreach (var view in consumer.Views)
+            {
+                int partial = 0;
+                var worst = 0f;
+                for (var y = 0; y < Size; y++)
+                    for (var x = 0; x < Size; x++)
+                    {
+                        float sharp = view.AlphaAt(x, y), blurred = BlurredAlpha(view, x, y);
+                        worst = Math.Max(worst, Math.Abs(sharp - blurred));
+                        if (blurred > 0.1f && blurred < 0.9f && (sharp < 0.05f || sharp > 0.95f)) partial++;
+                    }
+                if (view.ViewIndex % 2 == 0) Assert.That(partial, Is.GreaterThan(8), "view " + view.ViewIndex + " slides: blurred edges");
+                else Assert.That(worst, Is.LessThan(2e-3f), "view " + view.ViewIndex + " is still: its average is its sharp render");
+            }
+        }
+
         static float BlurredAlpha(RecordedView view, int x, int y)
         {
             float t = 0;
