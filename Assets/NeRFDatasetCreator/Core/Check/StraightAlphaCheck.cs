@@ -9,7 +9,7 @@ namespace NerfDatasetCreator
     /// darkened twice — the dark fringe). A straight edge pixel holds the covered surface's own colour, close to the
     /// interior next to it; a premultiplied one is that colour × alpha. Per edge pixel that has a background pixel
     /// (alpha 0) and an interior pixel (alpha 255) within <see cref="Radius"/>: L_in the luminance of its nearest
-    /// interior pixel(s), L_e its own (linear light), and β = (L_in − L_e) / ((1 − α)·L_in), which is 0 for straight
+    /// interior pixel(s) carried out to the edge along the interior's gradient (<see cref="Interior"/>), L_e its own (linear light), and β = (L_in − L_e) / ((1 − α)·L_in), which is 0 for straight
     /// colour, 1 for colour premultiplied in linear light and above 1 for colour premultiplied in the sRGB bytes. The
     /// median β of a view is the statistic: robust to the edge pixels whose neighbour is another surface or shading.
     /// Motion blur: the sharp and the blurred image both count (difference matting un-premultiplies each).
@@ -84,7 +84,7 @@ namespace NerfDatasetCreator
                             if (alpha[q] != 255) continue;
                             var d = dx * dx + dy * dy;
                             if (d < nearest) { nearest = d; sum = 0; count = 0; }
-                            if (d == nearest) { sum += luminance[q]; count++; }
+                            if (d == nearest) { sum += Interior(luminance, alpha, w, h, x, y, dx, dy); count++; }
                         }
                     if (!background || count == 0) continue;
                     var inside = sum / count;
@@ -92,6 +92,23 @@ namespace NerfDatasetCreator
                     if (darkening < MinDarkening) continue;
                     betas.Add((inside - luminance[p]) / darkening);
                 }
+        }
+
+        /// <summary>
+        /// The interior's luminance carried out to the edge pixel (x, y) from its interior neighbour at (dx, dy): linearly
+        /// extrapolated, 2·L₁ − L₂, from that neighbour and the next interior pixel the same step further in, when there is
+        /// one (else L₁ itself); never below 0. Shading falls off towards a silhouette (Lambert at grazing angles): a lit
+        /// sphere's rim pixel is darker than the pixel inside it in straight colour too. Against the neighbour alone such a
+        /// rim read β 0.8–0.9 (a sphere of radius 25 and 100 px lit from the camera, no ambient light, straight colour), as
+        /// much as premultiplied colour; against the extrapolation 0.28, or too dark to tell, while premultiplied colour
+        /// still reads β 1.0 (prototype of this rule, 2026-12-06).
+        /// </summary>
+        static double Interior(float[] luminance, byte[] alpha, int w, int h, int x, int y, int dx, int dy)
+        {
+            var near = luminance[(y + dy) * w + x + dx];
+            int x2 = x + 2 * dx, y2 = y + 2 * dy;
+            if (x2 < 0 || y2 < 0 || x2 >= w || y2 >= h || alpha[y2 * w + x2] != 255) return near;
+            return Math.Max(0, 2.0 * near - luminance[y2 * w + x2]);
         }
 
         /// <summary>Linear-light luminance (Rec. 709 weights) of each pixel, the PNG's values taken as sRGB; null for a layout without alpha.</summary>

@@ -121,6 +121,49 @@ namespace NerfDatasetCreator.Tests
             Assert.That(report.Results.Where(r => r.Name != StraightAlphaCheck.CheckName).All(r => r.Status != DatasetCheckStatus.Failed), Is.True, text);
         }
 
+        /// <summary>
+        /// A sphere lit from the camera without ambient light, in straight colour: shading falls to 0 at the silhouette, so
+        /// each rim pixel (the mean of its covered part) is darker than the pixel inside it although nothing was
+        /// premultiplied. Against the neighbour alone its median β was 0.92 (as dark as premultiplied colour reads); the
+        /// interior's gradient carried out to the edge keeps it straight. The same image premultiplied still fails.
+        /// </summary>
+        [TestCase(false)]
+        [TestCase(true)]
+        public void RimDarkeningOfALitSphereIsNotPremultiplication(bool premultiplied)
+        {
+            const int w = 96, h = 72, k = 8;
+            const double radius = 25;
+            var rgba = new byte[w * h * 4];
+            for (var y = 0; y < h; y++)
+                for (var x = 0; x < w; x++)
+                {
+                    double covered = 0, shade = 0;
+                    for (var j = 0; j < k; j++)
+                        for (var i = 0; i < k; i++)
+                        {
+                            double px = (x + (i + 0.5) / k - w / 2.0) / radius, py = (y + (j + 0.5) / k - h / 2.0) / radius, d2 = px * px + py * py;
+                            if (d2 >= 1) continue;
+                            covered++;
+                            shade += 0.8 * Math.Sqrt(1 - d2); // Lambert, light along the view axis: n·l = n_z
+                        }
+                    if (covered == 0) continue;
+                    var a = (byte)Math.Round(255 * covered / (k * k));
+                    var colour = shade / covered * (premultiplied ? a / 255.0 : 1);
+                    var p = (y * w + x) * 4;
+                    rgba[p] = rgba[p + 1] = rgba[p + 2] = Srgb.EncodeByteExact(colour);
+                    rgba[p + 3] = a;
+                }
+            var images = new CheckImages { Width = w, Height = h, ColourImage = new PngImage(w, h, 8, PngInfo.ColorTypeRgba, rgba), Alpha = new byte[w * h] };
+            for (var i = 0; i < w * h; i++) images.Alpha[i] = rgba[i * 4 + 3];
+            var check = new StraightAlphaCheck();
+            var problems = new System.Collections.Generic.List<DatasetProblem>();
+            check.View(new CheckView { Split = "train", Frame = 0, ColourFile = "train/r_0.png" }, images, problems);
+            var result = check.Finish();
+            TestContext.WriteLine(result.SummaryLine);
+            Assert.That(result.Status, Is.EqualTo(premultiplied ? DatasetCheckStatus.Failed : DatasetCheckStatus.Passed), result.SummaryLine);
+            Assert.That(problems.Count, Is.EqualTo(premultiplied ? 1 : 0), result.SummaryLine);
+        }
+
         [Test]
         public void DarkTargetCannotBeToldEitherWay()
         {
