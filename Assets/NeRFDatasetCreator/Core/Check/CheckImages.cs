@@ -17,6 +17,9 @@ namespace NerfDatasetCreator
 
         /// <summary>Motion blur: the blurred image's alpha (<see cref="CheckView.BlurredFile"/>); <see cref="Alpha"/> is then the sharp image's.</summary>
         public byte[] BlurredAlpha;
+
+        /// <summary>The decoded colour image (and the blurred one with motion blur), for the checks that read colour (<see cref="StraightAlphaCheck"/>).</summary>
+        public PngImage ColourImage, BlurredImage;
         public ushort[] Depth;
 
         /// <summary>The 16-bit instance and semantic id maps (labels.md), 0 = background; null when the frame names none.</summary>
@@ -44,11 +47,13 @@ namespace NerfDatasetCreator
                     if (colour == null) return images;
                     images.Width = colour.Width;
                     images.Height = colour.Height;
+                    images.ColourImage = colour;
                     if (colour.BitDepth == 8 && (colour.Channels == 4 || colour.Channels == 2)) images.Alpha = Channel(colour, colour.Channels - 1);
                     else if (colour.BitDepth == 16 && (colour.Channels == 4 || colour.Channels == 2)) images.Alpha = HighBytes(colour, colour.Channels - 1);
                     images.Mask = Plane(root, view.MaskFile, view, images, 8, 1, "mask", "8-bit grey")?.Samples;
                     var blurred = Plane(root, view.BlurredFile, view, images, 8, 4, "blurred colour", "8-bit RGBA");
                     if (blurred != null) images.BlurredAlpha = Channel(blurred, 3);
+                    images.BlurredImage = blurred;
                     images.Normals = Plane(root, view.NormalFile, view, images, 8, 3, "normal", "8-bit RGB")?.Samples;
                     var semantic = Plane(root, view.SemanticFile, view, images, 16, 1, "semantic", "16-bit grey");
                     if (semantic != null) images.Semantic = Gray16(semantic.Samples);

@@ -53,6 +53,7 @@ namespace NerfDatasetCreator
                 new DepthNormalsCheck(),
                 PointCloud(root, config, dynamic),
                 new ColourGeometryCheck(),
+                new StraightAlphaCheck(),
                 InstanceMaskCheck.For(root, views),
                 new ExposureCheck(root),
                 new MotionBlurCheck(),

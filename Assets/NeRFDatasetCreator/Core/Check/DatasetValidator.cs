@@ -366,6 +366,8 @@ namespace NerfDatasetCreator
                 case "normal_path": return new Format { BitDepth = 8, ColorType = PngInfo.ColorTypeRgb };
                 case LabelFrameKeys.Instance:
                 case LabelFrameKeys.Semantic: return new Format { BitDepth = 16, ColorType = PngInfo.ColorTypeGray };
+                // Motion blur's sharp image is written like the colour image it stands beside (issue 32 item 20).
+                case MotionBlurKeys.SharpPath: return new Format { BitDepth = 8, ColorType = PngInfo.ColorTypeRgba };
                 default: return new Format { BitDepth = 8, ColorType = PngInfo.ColorTypeGray };
             }
         }

@@ -19,7 +19,7 @@ namespace NerfDatasetCreator
     public static class DatasetFolder
     {
         /// <summary>The per-frame file keys whose format validate checks (see Documentation~/output-format.md).</summary>
-        public static readonly string[] CheckedFileKeys = { "depth_path", "depth_file_path", "normal_path", "mask_path", LabelFrameKeys.Instance, LabelFrameKeys.Semantic };
+        public static readonly string[] CheckedFileKeys = { "depth_path", "depth_file_path", "normal_path", "mask_path", LabelFrameKeys.Instance, LabelFrameKeys.Semantic, MotionBlurKeys.SharpPath };
 
         /// <summary>The transforms file of <paramref name="split"/> in <paramref name="root"/>.</summary>
         public static string SplitPath(string root, string split) => Path.Combine(root, DatasetLayout.TransformsFileName(split));

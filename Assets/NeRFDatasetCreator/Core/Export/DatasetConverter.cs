@@ -200,9 +200,10 @@ namespace NerfDatasetCreator
                     "there is no point cloud, and 3DGS's COLMAP loader fails on an empty points3D file, so it holds the same uniform [−1.3, 1.3]³ cloud 3DGS would generate for the Blender layout (with empty tracks: random points are on no surface).",
                     "Export the target's surface point cloud from Unity for a better start."));
             }
-            // Tracks are projected with the pinhole model, so a distorted dataset gets none (LensExports.ColmapWarnings says so).
-            if (scene.Lens != null) warnings.AddRange(LensExports.ColmapWarnings(scene.Lens, surface));
-            var model = ColmapModelBuilder.Build(scene, names, points, surface && scene.Lens == null, options, warnings);
+            // A distorted dataset's tracks are projected through its lens (ColmapVisibility, ColmapPose.Project), as the
+            // written camera images them.
+            if (scene.Lens != null) warnings.Add(LensExports.ColmapWarning(scene.Lens));
+            var model = ColmapModelBuilder.Build(scene, names, points, surface, options, warnings);
 
             foreach (var (from, to) in copies) staged.Copy(from, to);
             if (options.Binary)

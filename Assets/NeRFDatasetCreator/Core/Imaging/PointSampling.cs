@@ -6,7 +6,8 @@ namespace NerfDatasetCreator
     /// The rule for depth and normals, which must never be averaged across an edge: each output pixel takes ONE
     /// rendered sample of its k×k block — the one nearest the block's centre that hit a surface; if none did, the
     /// pixel is background. For odd k that is the centre sample whenever it hit; for even k the four central
-    /// samples tie and are tried in the order lower-left, lower-right, upper-left, upper-right.
+    /// samples tie and are tried in the order lower-left, lower-right, upper-left, upper-right. Depth reads the four
+    /// together (DepthEncoding.Sample: their harmonic mean on one smooth surface, the nearest across a step).
     /// </summary>
     internal static class PointSampling
     {

@@ -37,16 +37,12 @@ namespace NerfDatasetCreator
             }
         }
 
-        /// <summary>What a COLMAP export of a distorted dataset tells the user: 3DGS refuses the model, and the tracks are left out.</summary>
-        public static IEnumerable<ValidationProblem> ColmapWarnings(LensDistortion lens, bool surface)
+        /// <summary>What a COLMAP export of a distorted dataset tells the user: 3DGS refuses the model (its tracks are projected through the lens: ColmapVisibility).</summary>
+        public static ValidationProblem ColmapWarning(LensDistortion lens)
         {
-            yield return new ValidationProblem("cameras", lens.ColmapModelName + " " + lens.Describe(),
+            return new ValidationProblem("cameras", lens.ColmapModelName + " " + lens.Describe(),
                 "is the camera the images were taken through; COLMAP, nerfstudio (ns-process-data / colmap dataparser) and gsplat read it, but 3DGS's COLMAP reader (scene/dataset_readers.py readColmapCameras) accepts only PINHOLE and SIMPLE_PINHOLE and stops with \"Colmap camera model not handled\".",
                 "For 3DGS, undistort first (colmap image_undistorter --input_path sparse/0 --output_path <out>) and train on <out>.");
-            if (surface)
-                yield return new ValidationProblem("points3D tracks", "empty",
-                    "are left out for a distorted lens: they are computed with the pinhole projection, which is not where a distorted image shows the point.",
-                    "Train without gsplat's --depth_loss, or undistort the dataset first.");
         }
     }
 }

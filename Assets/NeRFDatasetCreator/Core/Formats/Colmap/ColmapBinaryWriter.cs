@@ -62,7 +62,7 @@ namespace NerfDatasetCreator
                     w.Write((ulong)observed.Length);
                     for (var k = 0; k < observed.Length; k++)
                     {
-                        pose.Project(model.Points[observed[k]].Position, model.Camera, out var x, out var y);
+                        pose.Project(model.Points[observed[k]].Position, model.Camera, model.Lens, out var x, out var y);
                         w.Write(x); w.Write(y);
                         w.Write((ulong)(observed[k] + 1));
                     }

@@ -5,18 +5,19 @@ namespace NerfDatasetCreator
 {
     /// <summary>
     /// A sparse COLMAP model as both writers (<see cref="ColmapTextWriter"/>, <see cref="ColmapBinaryWriter"/>) emit it:
-    /// one shared PINHOLE camera (id 1), the images (id = index + 1, in frame order) with their poses and names, the
+    /// one shared camera (id 1: PINHOLE, or the dataset's lens model), the images (id = index + 1, in frame order) with their poses and names, the
     /// points (id = index + 1) and, when visibility was computed, the observations. Image i's POINTS2D are the
     /// projections of <see cref="Observations"/>[i] (point indices, ascending), recomputed with
-    /// <see cref="ColmapPose.Project"/> when written rather than stored: 16 bytes per observation saved on models of
+    /// <see cref="ColmapPose.Project(Vector3d, CameraIntrinsics, LensDistortion, out double, out double)"/> (through <see cref="Lens"/>) when written rather than stored: 16 bytes per observation saved on models of
     /// millions of observations. Point p's TRACK is <see cref="TrackImage"/>/<see cref="TrackPoint2D"/> from
     /// <see cref="TrackStart"/>[p] to [p + 1], images ascending.
     /// </summary>
     public sealed class ColmapModel
     {
         public ColmapModel(CameraIntrinsics camera, IReadOnlyList<string> names, IReadOnlyList<ColmapPose> poses,
-            IReadOnlyList<CloudPoint> points, int[][] observations = null)
+            IReadOnlyList<CloudPoint> points, int[][] observations = null, LensDistortion lens = null)
         {
+            Lens = lens;
             Camera = camera ?? throw new ArgumentNullException(nameof(camera));
             Names = names ?? throw new ArgumentNullException(nameof(names));
             Poses = poses ?? throw new ArgumentNullException(nameof(poses));
@@ -52,6 +53,9 @@ namespace NerfDatasetCreator
         }
 
         public CameraIntrinsics Camera { get; }
+
+        /// <summary>The lens the images were taken through (the written camera's distortion), or null for PINHOLE: POINTS2D are projected through it.</summary>
+        public LensDistortion Lens { get; }
         public IReadOnlyList<string> Names { get; }
         public IReadOnlyList<ColmapPose> Poses { get; }
         public IReadOnlyList<CloudPoint> Points { get; }

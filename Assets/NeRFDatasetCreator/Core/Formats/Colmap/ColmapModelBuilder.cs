@@ -42,7 +42,7 @@ namespace NerfDatasetCreator
             }
 
             var observations = ColmapVisibility.Compute(scene, points);
-            var model = KeepTracked(scene.Intrinsics, names, poses, points, observations, options.MinTrackLength);
+            var model = KeepTracked(scene.Intrinsics, names, poses, points, observations, options.MinTrackLength, scene.Lens);
             var untracked = Enumerable.Range(0, names.Count).Where(i => model.Observations[i].Length == 0).Select(i => names[i]).ToList();
             if (untracked.Count > 0)
                 warnings?.Add(new ValidationProblem("images POINTS2D", untracked.Count + " image(s), e.g. " + untracked[0],
@@ -53,7 +53,7 @@ namespace NerfDatasetCreator
 
         /// <summary>The model of the points seen in at least <paramref name="minTrackLength"/> images, renumbered in order.</summary>
         public static ColmapModel KeepTracked(CameraIntrinsics camera, IReadOnlyList<string> names, IReadOnlyList<ColmapPose> poses,
-            IReadOnlyList<CloudPoint> points, int[][] observations, int minTrackLength)
+            IReadOnlyList<CloudPoint> points, int[][] observations, int minTrackLength, LensDistortion lens = null)
         {
             var counts = new int[points.Count];
             foreach (var list in observations)
@@ -80,7 +80,7 @@ namespace NerfDatasetCreator
                 foreach (var p in list) if (newIndex[p] >= 0) copy[n++] = newIndex[p]; // the map is increasing: order kept
                 renumbered[i] = copy;
             }
-            return new ColmapModel(camera, names, poses, kept, renumbered);
+            return new ColmapModel(camera, names, poses, kept, renumbered, lens);
         }
 
         static string I(int v) => v.ToString(CultureInfo.InvariantCulture);

@@ -47,5 +47,24 @@ namespace NerfDatasetCreator
             x = k.FlX * c.X / c.Z + k.Cx;
             y = k.FlY * c.Y / c.Z + k.Cy;
         }
+
+        /// <summary>
+        /// The pixel position of <paramref name="p"/> through <paramref name="lens"/> (null: the pinhole above, same
+        /// expression): COLMAP's ImgFromCam for the written OPENCV / FULL_OPENCV / OPENCV_FISHEYE camera — (X/Z, Y/Z)
+        /// distorted (<see cref="LensDistortion.Distort"/>, models.h's formulas, checked against them in
+        /// ConvertLensTests), then f·x + c.
+        /// </summary>
+        public void Project(Vector3d p, CameraIntrinsics k, LensDistortion lens, out double x, out double y)
+        {
+            if (lens == null)
+            {
+                Project(p, k, out x, out y);
+                return;
+            }
+            var c = ToCamera(p);
+            lens.Distort(c.X / c.Z, c.Y / c.Z, out var xd, out var yd);
+            x = k.FlX * xd + k.Cx;
+            y = k.FlY * yd + k.Cy;
+        }
     }
 }

@@ -99,7 +99,7 @@ namespace NerfDatasetCreator
                 if (observed != null)
                     for (var k = 0; k < observed.Length; k++)
                     {
-                        pose.Project(model.Points[observed[k]].Position, model.Camera, out var x, out var y);
+                        pose.Project(model.Points[observed[k]].Position, model.Camera, model.Lens, out var x, out var y);
                         if (k > 0) w.Write(' ');
                         w.Write(R(x)); w.Write(' '); w.Write(R(y)); w.Write(' '); w.Write(I(observed[k] + 1));
                     }

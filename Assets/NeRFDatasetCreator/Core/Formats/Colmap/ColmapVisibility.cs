@@ -9,20 +9,22 @@ namespace NerfDatasetCreator
     /// (and masks): the ground truth a COLMAP track records. Point P (with unit normal n) is observed by an image when
     /// <list type="number">
     /// <item>it is in front of the camera (Z &gt; 0 in COLMAP's camera frame) and its projection (x, y) — COLMAP's PINHOLE
-    /// formulas, <see cref="ColmapPose"/> — has all four nearest pixel centres inside the image: the 2×2 block
+    /// formulas, or with a lens its distorted projection (the written OPENCV / OPENCV_FISHEYE camera's, <see cref="ColmapPose"/>),
+    /// where the lens images that ray and no other (the pixel undistorts back to it) — has all four nearest pixel centres inside the image: the 2×2 block
     /// (⌊x − ½⌋ … +1, ⌊y − ½⌋ … +1), i.e. ½ ≤ x &lt; W − ½ and likewise y;</item>
     /// <item>it is not seen edge-on: |cos θ| ≥ <see cref="MinCosine"/>, θ between n and the viewing ray;</item>
     /// <item>at each of those four pixel centres the mask (when the dataset has masks) is 255 and the depth map holds a
     /// surface (0 = none, 65535 = clamped, both refused) whose depth d·q (q = 0.001 output units a step) agrees with
-    /// the depth of P's tangent plane along that pixel's ray, z_plane = (n_c·P_c)/(n_c·r), r = ((u − cx)/fx, (v − cy)/fy, 1),
+    /// the depth of P's tangent plane along that pixel's ray, z_plane = (n_c·P_c)/(n_c·r), r = ((u − cx)/fx, (v − cy)/fy, 1)
+    /// (with a lens, r = (undistort((u − cx)/fx, (v − cy)/fy), 1): the ray the distorted pixel centre sees),
     /// within τ = q/2 + κ·Φ, Φ = Z/(min(fx, fy)·|cos θ|), κ = <see cref="FootprintFraction"/>.</item>
     /// </list>
     /// Why τ is that. Φ is the local pixel footprint: one pixel covers Z/f output units across the ray at depth Z and
     /// Z/(f·cos θ) along a surface tilted by θ, whose depth changes by at most that much within the pixel. The tangent
     /// plane removes the first-order part of the depth difference between P and the pixel centres, so what is left
     /// is: the 16-bit quantisation, ±q/2 (0.5 mm at scale 1: round(z·1000)); where the renderer sampled the pixel —
-    /// at its centre for supersampling 1 and odd k, up to √2/(2k) px off it for even k (pixels.md §4), at most
-    /// 0.354·Φ·|sin θ| for k = 2; mesh faceting (interpolated normals differ from the face normal by a few degrees,
+    /// at its centre for supersampling 1 and odd k; for even k the harmonic mean of the central samples, the centre's
+    /// depth on a plane, and a sample up to √2/(2k) px off it across a step (pixels.md §4), at most 0.354·Φ·|sin θ| for k = 2; mesh faceting (interpolated normals differ from the face normal by a few degrees,
     /// tens of percent of Φ·tan Δ only at grazing angles, which the cosine limit removes) and curvature (Φ²/2R,
     /// 10⁻⁵ units for R = 1 at 800 px). κ = ½ covers these with margin and stays far below anything that hides a
     /// point: an occluder at least half a pixel's footprint in front of P (≈ 2 mm for a unit object 4 units away at
@@ -76,6 +78,7 @@ namespace NerfDatasetCreator
             var arrays = new PointArrays(points);
             var k = scene.Intrinsics;
             var masks = scene.HasMasks;
+            var rays = scene.Lens != null ? new LensRays(k, scene.Lens) : null;
             var result = new int[scene.Frames.Count][];
             var visible = new List<int>();
             for (var v = 0; v < scene.Frames.Count; v++)
@@ -83,7 +86,7 @@ namespace NerfDatasetCreator
                 var frame = scene.Frames[v];
                 var depth = ReadDepth(Path.Combine(scene.RootDirectory, frame.DepthPath), k);
                 var mask = masks ? ReadMask(Path.Combine(scene.RootDirectory, frame.MaskPath), k) : null;
-                Observe(ColmapPose.FromCameraToWorld(frame.CameraToWorld), k, depth, mask, scene.DepthUnitScale, arrays, visible);
+                Observe(ColmapPose.FromCameraToWorld(frame.CameraToWorld), k, depth, mask, scene.DepthUnitScale, arrays, visible, scene.Lens, rays);
                 result[v] = visible.ToArray();
             }
             return result;
@@ -95,8 +98,9 @@ namespace NerfDatasetCreator
         /// <paramref name="mask"/> W×H bytes, or null to use depth alone.
         /// </summary>
         public static void Observe(ColmapPose pose, CameraIntrinsics k, ushort[] depth, byte[] mask, double depthUnit,
-            PointArrays points, List<int> visible)
+            PointArrays points, List<int> visible, LensDistortion lens = null, LensRays rays = null)
         {
+            if (lens != null && rays == null) rays = new LensRays(k, lens);
             int width = k.Width, height = k.Height;
             if (depth == null || depth.Length != width * height) throw new ArgumentException("The depth map must hold W×H samples.", nameof(depth));
             if (mask != null && mask.Length != width * height) throw new ArgumentException("The mask must hold W×H samples.", nameof(mask));
@@ -113,9 +117,23 @@ namespace NerfDatasetCreator
                 if (!(zc > 0)) continue;
                 var xc = r00 * px + r01 * py + r02 * pz + tx;
                 var yc = r10 * px + r11 * py + r12 * pz + ty;
-                // The same expression as ColmapPose.Project, so the decision is about the very (x, y) written.
-                var fu = fx * xc / zc + cx - 0.5;
-                var fv = fy * yc / zc + cy - 0.5;
+                // The same expressions as ColmapPose.Project, so the decision is about the very (x, y) written.
+                double fu, fv;
+                if (lens == null)
+                {
+                    fu = fx * xc / zc + cx - 0.5;
+                    fv = fy * yc / zc + cy - 0.5;
+                }
+                else
+                {
+                    double xn = xc / zc, yn = yc / zc;
+                    lens.Distort(xn, yn, out var xd, out var yd);
+                    // Beyond where a lens's polynomial turns back, Distort folds a second ray onto an imaged pixel: the
+                    // image there shows the ray the pixel undistorts to, not this one.
+                    if (!lens.Undistort(xd, yd, out var ux, out var uy) || !(Math.Abs(ux - xn) + Math.Abs(uy - yn) <= 1e-6 * (1 + Math.Abs(xn) + Math.Abs(yn)))) continue;
+                    fu = fx * xd + cx - 0.5;
+                    fv = fy * yd + cy - 0.5;
+                }
                 if (!(fu >= 0 && fv >= 0)) continue;
                 int i0 = (int)fu, j0 = (int)fv;
                 if (i0 + 1 >= width || j0 + 1 >= height) continue;
@@ -150,13 +168,47 @@ namespace NerfDatasetCreator
                     if (mask != null && mask[at] != Foreground) { seen = false; break; }
                     int steps = depth[at];
                     if (steps == 0 || steps == ushort.MaxValue) { seen = false; break; }
-                    var rx = (u + 0.5 - cx) / fx;
-                    var ry = (v + 0.5 - cy) / fy;
+                    double rx, ry;
+                    if (rays == null)
+                    {
+                        rx = (u + 0.5 - cx) / fx;
+                        ry = (v + 0.5 - cy) / fy;
+                    }
+                    else
+                    {
+                        rx = rays.X[at];
+                        ry = rays.Y[at];
+                        if (double.IsNaN(rx)) { seen = false; break; }
+                    }
                     var planeDepth = planeDot / (ncx * rx + ncy * ry + ncz);
                     if (!(Math.Abs(planeDepth - steps * depthUnit) <= tolerance)) seen = false;
                 }
                 if (seen) visible.Add(i);
             }
+        }
+
+        /// <summary>
+        /// Through a lens, the ray each pixel centre sees: (x, y) with z = 1 in COLMAP's camera frame (y down), the
+        /// undistorted normalised position of ((u + ½ − cx)/fx, (v + ½ − cy)/fy); NaN where the lens images no ray. Built
+        /// once per export (one camera for every image), W×H of each.
+        /// </summary>
+        public sealed class LensRays
+        {
+            public LensRays(CameraIntrinsics k, LensDistortion lens)
+            {
+                int width = k.Width, height = k.Height;
+                X = new double[width * height];
+                Y = new double[width * height];
+                for (var v = 0; v < height; v++)
+                    for (var u = 0; u < width; u++)
+                    {
+                        var at = v * width + u;
+                        if (lens.Undistort((u + 0.5 - k.Cx) / k.FlX, (v + 0.5 - k.Cy) / k.FlY, out var x, out var y)) { X[at] = x; Y[at] = y; }
+                        else X[at] = Y[at] = double.NaN;
+                    }
+            }
+
+            internal readonly double[] X, Y;
         }
 
         static ushort[] ReadDepth(string path, CameraIntrinsics k)

@@ -12,7 +12,10 @@ namespace NerfDatasetCreator.Tests
     /// the gains, the EXIF), label ids, encoding — write byte for byte what they wrote before the stage order moved out of
     /// the Editor into Core (issue 31). The expected SHA-256 sums of every file the analytic dataset writes were taken
     /// from the code before the move (commit 261f467, where the test support ordered the stages itself) running this very
-    /// test; a sum that changes means an output changed.
+    /// test; a sum that changes means an output changed. Re-pinned since: the four depth PNGs of "lens-blur-shared" (data
+    /// passes at the supersampled size), when a pixel's depth became the harmonic mean of its block's central samples
+    /// (issue 32 item 19) — those very files are shown to hold the analytic depth at each pixel centre by
+    /// <see cref="DepthAtPixelCentreTests"/>, which checks their sums against these.
     /// </summary>
     [TestFixture]
     public class ViewPipelineBytesTests
@@ -23,7 +26,7 @@ namespace NerfDatasetCreator.Tests
 
         [TearDown] public void Delete() => _temp.Dispose();
 
-        static AnalyticDataset.Options Options(bool lens, bool dataAtOutputSize, bool blur)
+        internal static AnalyticDataset.Options Options(bool lens, bool dataAtOutputSize, bool blur)
         {
             var options = new AnalyticDataset.Options
             {
@@ -69,7 +72,7 @@ namespace NerfDatasetCreator.Tests
         }
 
         /// <summary>The SHA-256 of every file under <paramref name="folder"/>, by its path relative to it ('/' separated).</summary>
-        static SortedDictionary<string, string> Sums(string folder)
+        internal static SortedDictionary<string, string> Sums(string folder)
         {
             var sums = new SortedDictionary<string, string>(StringComparer.Ordinal);
             using (var sha = SHA256.Create())
@@ -81,7 +84,7 @@ namespace NerfDatasetCreator.Tests
             return sums;
         }
 
-        static readonly Dictionary<string, string> Expected = new Dictionary<string, string>
+        internal static readonly Dictionary<string, string> Expected = new Dictionary<string, string>
         {
             ["blur/dataset_config.json"] = "22825d1e22a3839d45f35c76b29fead9f0442f0878926eb9e057e9b3097d7101",
             ["blur/labels.json"] = "c9805994b087748ec1b1d089a35c0893b9ec4daabde211f8caf0f5d0b48e8cbc",
@@ -168,7 +171,7 @@ namespace NerfDatasetCreator.Tests
             ["lens-blur-shared/labels_preview_val.png"] = "21f577fd9a80d158e1d5e206bee403a3da9616153e1eed54bdc1014a704a85a2",
             ["lens-blur-shared/rig_preview.png"] = "e3506216b17d2dfcafa6287ec044dcbbea060d34014d65bc9853ca1d617f1ffa",
             ["lens-blur-shared/test/r_0.png"] = "c418b92858072b18461ffed0ae00a5963003673818d45875d7f05a4b37030a37",
-            ["lens-blur-shared/test/r_0_depth_0000.png"] = "3b41bbff6f720f04adb033985894e6ed10b1c6d8a331b9aba17ee8ae1b12f3f8",
+            ["lens-blur-shared/test/r_0_depth_0000.png"] = "d1d5d38231b9b70bc100a62d26cd00c33f9dd40096281bb40ac4dae7490245ad",
             ["lens-blur-shared/test/r_0_instance_0000.png"] = "480a42029aad2f57763b6ccdc8ac15eaadaff30c75083ef5ab72de5fb3c3f23a",
             ["lens-blur-shared/test/r_0_mask_0000.png"] = "c6d99fc5e431ca24e8c6240d0640509d7521289ec81967ba49a5b2ece0f7290c",
             ["lens-blur-shared/test/r_0_normal_0000.png"] = "7af7b4b35d1077ba27d574686ffc7526495cf67b0f087e7edaaa2fc1d45eef63",
@@ -176,7 +179,7 @@ namespace NerfDatasetCreator.Tests
             ["lens-blur-shared/test/r_0_sharp_0000.png"] = "96fcc24faf9ffd42482c986007c1f6f2986f67d1a388116d5449b508f68ac7fa",
             ["lens-blur-shared/train/r_0.png"] = "cef1df80e4acb77a7071bc53776fcaabd7a1beb3f49e48b3e72e2c4c948eb218",
             ["lens-blur-shared/train/r_0_clean.png"] = "14fa24018b92e193489eb1c81122b455f6856203d44655580d7dd0eff94e789b",
-            ["lens-blur-shared/train/r_0_depth_0000.png"] = "aaad420e28a9866212b6f444233d892fb60ca7e1851298480e26c32d55c8c8f7",
+            ["lens-blur-shared/train/r_0_depth_0000.png"] = "99c7daa2ebcc9cff3d858edf5500586e39900c0dfbeb7b59612761dc97e96ec4",
             ["lens-blur-shared/train/r_0_instance_0000.png"] = "21f1e9f0ca9c26817ec2250243774b079d1145cb1f18b9fec31f623d9cdb15a6",
             ["lens-blur-shared/train/r_0_mask_0000.png"] = "79a5f070d61d5dcf1b77651fefba239829a240ecbea6ab5a1880446c1d6b874c",
             ["lens-blur-shared/train/r_0_normal_0000.png"] = "2569ccaa705f9d088aa4fde26ed759853b5ac9c96a11a345895f9bd736926e20",
@@ -184,7 +187,7 @@ namespace NerfDatasetCreator.Tests
             ["lens-blur-shared/train/r_0_sharp_0000.png"] = "09e679316262bda1f7b56031823bed53885e829493b397fbc99468420a2fd0bc",
             ["lens-blur-shared/train/r_1.png"] = "7f036982466f2f258dc5f5dc4f6513ff7d48ce78ae536e03d16763f83ff1bba5",
             ["lens-blur-shared/train/r_1_clean.png"] = "2164062a83450c6627ba9902677cbdfb54cf8c2a34d35df967fc3b94a814d534",
-            ["lens-blur-shared/train/r_1_depth_0000.png"] = "395b2f1caa5352b40f3e07ffd7ba0f6a8b591fefce5ba43b0c8bcf60a90dd888",
+            ["lens-blur-shared/train/r_1_depth_0000.png"] = "f07254c2841fe072459fa482dfa9f75eedee826d8160ae524880567e279f0492",
             ["lens-blur-shared/train/r_1_instance_0000.png"] = "776a0d70dada3b0768cb338144ea730d2af727c2f1c50b176b740141b70135f2",
             ["lens-blur-shared/train/r_1_mask_0000.png"] = "694d5e65b9f9d1dff2aabcf4cbd020109a6781468d04e539db302651e911754b",
             ["lens-blur-shared/train/r_1_normal_0000.png"] = "4a768c6b41676418155921068c988f1e3a77ca38a5c87ae4ea3d1f517bc2bce0",
@@ -194,7 +197,7 @@ namespace NerfDatasetCreator.Tests
             ["lens-blur-shared/transforms_train.json"] = "509a93d4c25c4579cd722cd14b4b6bc984ab98425883e3ec311308aa9ad99647",
             ["lens-blur-shared/transforms_val.json"] = "68fdb909d2e4bfb6e64ba29b564a9d6c4d69f34cc6001e2f467a6913c745ea99",
             ["lens-blur-shared/val/r_0.png"] = "fd8f04d03c0836b38494136c21312b4fb9e4bf82d947201feacc454f34fdf94a",
-            ["lens-blur-shared/val/r_0_depth_0000.png"] = "14c0a0bb7738f12bc63a7b7bc9e2fa4a7d74da6e7ad334e6d5b8dad5beddcd53",
+            ["lens-blur-shared/val/r_0_depth_0000.png"] = "f095f348e4b010bd94136967b9e62b4d45ae1dd93954dfbca1eebe02a13a0a2e",
             ["lens-blur-shared/val/r_0_instance_0000.png"] = "abcb2891ced32a2f02f01782f948b97db34ffeaaad4b24dbd144c5d5c6d63e66",
             ["lens-blur-shared/val/r_0_mask_0000.png"] = "bdbc08c144e752e97e63e8ca426f2424b55ccc2056dc440705ac40a3c2764b5e",
             ["lens-blur-shared/val/r_0_normal_0000.png"] = "1d50a87ea87d1fe8e1583a6000cc359f0d869f2ade9d62351a48a20adfcb0456",

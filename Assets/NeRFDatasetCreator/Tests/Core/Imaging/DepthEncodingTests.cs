@@ -66,8 +66,8 @@ namespace NerfDatasetCreator.Tests
         [Test]
         public void AnEdgeBlockTakesOneSurfaceNeverTheMean()
         {
-            // k = 2. Block 1: lower-left background, the rest 5 m → 5 m (not 3.75). Block 2: 1 m and 9 m → one of
-            // them by the documented order (lower-left first), never 5 m. Block 3: nothing → 0.
+            // k = 2. Block 1: lower-left background, the rest 5 m → 5 m (not 3.75). Block 2: 1 m and 9 m → the nearest
+            // surface, 1 m, never 5 m (nor the harmonic mean 1.8 m). Block 3: nothing → 0.
             var frame = FrameBuilder.Frame(3, 1, 2);
             frame.Depth = new float[frame.Width * frame.Height];
             void Set(int x, int yTop, float z) => frame.Depth[FrameBuilder.Index(frame, x, yTop)] = z;
@@ -120,6 +120,50 @@ namespace NerfDatasetCreator.Tests
             DepthEncoding.ToMetres(frame, bottomFirst, RowDirection.BottomRowFirst);
             Assert.That(topFirst, Is.EqualTo(new[] { 1.5f, 0f, 100f, 0f }));
             Assert.That(bottomFirst, Is.EqualTo(new[] { 100f, 0f, 1.5f, 0f }));
+        }
+
+        /// <summary>
+        /// Issue 32 item 19. A slanted plane seen by a pinhole has 1/z affine in screen position; at k = 2 the block's four
+        /// samples sit at the pixel centre ± ¼ px, so the harmonic mean of their depths is the plane's depth at the centre
+        /// (to float rounding), where the lower-left sample alone lay a quarter pixel off it (1/z changing by 0.006 per
+        /// pixel across and 0.003 down: ~0.2 % off at k = 2; the block's samples stay within the 2 % of one smooth surface).
+        /// </summary>
+        [TestCase(2)]
+        [TestCase(4)]
+        public void EvenSupersamplingGivesAPlanesDepthAtThePixelCentre(int k)
+        {
+            const int w = 5, h = 4;
+            var frame = FrameBuilder.Frame(w, h, k);
+            frame.Depth = new float[frame.Width * frame.Height];
+            // 1/z at continuous output position (i, j), top-left origin: a plane ~2.4 units away.
+            double InverseZ(double i, double j) => 0.4 + 0.006 * i + 0.003 * j;
+            for (var ys = 0; ys < frame.Height; ys++)
+                for (var xs = 0; xs < frame.Width; xs++)
+                    frame.Depth[FrameBuilder.Index(frame, xs, ys)] = (float)(1 / InverseZ((xs + 0.5) / k, (ys + 0.5) / k));
+            var metres = new float[w * h];
+            DepthEncoding.ToMetres(frame, metres, RowDirection.TopRowFirst);
+            for (var oy = 0; oy < h; oy++)
+                for (var ox = 0; ox < w; ox++)
+                {
+                    var centre = 1 / InverseZ(ox + 0.5, oy + 0.5);
+                    Assert.That(metres[oy * w + ox], Is.EqualTo(centre).Within(2e-6 * centre), $"pixel ({ox}, {oy})");
+                }
+        }
+
+        [Test]
+        public void AStepInsideTheCentralSamplesTakesTheNearestSurface()
+        {
+            // k = 2: 2 m and 2.1 m (5 % apart: a step, not one surface) → 2 m, never their mean; 3 m and 3.03 m (1 %: one
+            // slanted surface) → their harmonic mean 2 / (1/3 + 1/3.03).
+            var frame = FrameBuilder.Frame(2, 1, 2);
+            frame.Depth = new float[frame.Width * frame.Height];
+            void Set(int x, int yTop, float z) => frame.Depth[FrameBuilder.Index(frame, x, yTop)] = z;
+            Set(0, 0, 2.1f); Set(1, 0, 2f); Set(0, 1, 2.1f); Set(1, 1, 2f);
+            Set(2, 0, 3f); Set(3, 0, 3.03f); Set(2, 1, 3f); Set(3, 1, 3.03f);
+            var metres = new float[2];
+            DepthEncoding.ToMetres(frame, metres, RowDirection.TopRowFirst);
+            Assert.That(metres[0], Is.EqualTo(2f));
+            Assert.That(metres[1], Is.EqualTo(4 / (2 / 3.0 + 2 / 3.03)).Within(1e-6));
         }
     }
 }

@@ -75,6 +75,13 @@ namespace NerfDatasetCreator.Tests
 
             /// <summary>Called with the pipeline once every view is written (its statistics: <see cref="ViewFileWriter.Matting"/>).</summary>
             public Action<ViewPipeline> Written { get; set; }
+
+            /// <summary>
+            /// Called per view with its scene and the ray through each OUTPUT pixel position (<see cref="Rays"/>: NeRF's
+            /// pinhole, or the written lens's distorted pixel — never the wide render), so a test can trace what a file's
+            /// pixel centre must show, independently of the capture's stages.
+            /// </summary>
+            public Action<PlannedView, AnalyticScene, RayOf> OutputRays { get; set; }
         }
 
         /// <summary>
@@ -144,6 +151,7 @@ namespace NerfDatasetCreator.Tests
                 var data = options.DataAtOutputSize && options.Supersampling > 1 ? Render(scene, rays, w, h, options, run.Plan.Normalisation.Scale, 1) : frame;
                 var blurred = view.Motion != null ? Blurred(scene, view, frame, run.Plan, options, RaysAt, w, h) : null;
                 pipeline.Write(view, frame, data, blurred);
+                options.OutputRays?.Invoke(view, scene, Rays(view.TransformMatrix, run.Plan.Intrinsics, lens));
                 if (options.BlendIds) WriteBlendedIds(session, view, frame);
             }
             options.Written?.Invoke(pipeline);

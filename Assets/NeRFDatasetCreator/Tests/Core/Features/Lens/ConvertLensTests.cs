@@ -259,7 +259,7 @@ namespace NerfDatasetCreator.Tests
         /// OPENCV_FISHEYE: θ = atan r, (uu, vv) = (u, v)·θ/r (unscaled when r ≤ ε), θ² = uu² + vv², radial = k1 θ² + k2 θ⁴ + k3 θ⁶ + k4 θ⁸,
         /// du = uu·radial; then x = fx (·+d·) + cx.
         /// </summary>
-        static (double x, double y) ColmapProjects(string model, double[] p, double[] q, double[] t, Vector3d X)
+        internal static (double x, double y) ColmapProjects(string model, double[] p, double[] q, double[] t, Vector3d X)
         {
             double w = q[0], a = q[1], b = q[2], c = q[3];
             var R = new[,]

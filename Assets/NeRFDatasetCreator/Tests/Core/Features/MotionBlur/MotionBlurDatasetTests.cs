@@ -116,6 +116,26 @@ namespace NerfDatasetCreator.Tests
             Assert.That(report.Warnings.Select(w => w.ToString()), Has.None.Contains("no frame names"));
         }
 
+        [Test]
+        public void ValidateFindsASharpImageMissingOutsideOrOfTheWrongLayout()
+        {
+            // Issue 32 item 20: validate checked depth, normal, mask and id keys but not sharp_path.
+            var folder = Copy(_global);
+            File.Delete(Path.Combine(folder, "train", "r_1_sharp_0000.png"));
+            // A sharp image that is an 8-bit grey PNG (a mask) instead of RGBA.
+            File.Copy(Path.Combine(folder, "train", "r_2_mask_0000.png"), Path.Combine(folder, "train", "r_2_sharp_0000.png"), true);
+            EditFrames(folder, frame =>
+            {
+                if ((string)frame["file_path"] == "./train/r_3") frame[MotionBlurKeys.SharpPath] = "../outside_sharp.png";
+            });
+            var problems = DatasetValidator.Validate(folder).Problems.Select(p => p.ToString()).ToList();
+            var text = string.Join("\n", problems);
+            Assert.That(problems, Has.Some.Contains("sharp_path ./train/r_1_sharp_0000.png is missing."), text);
+            Assert.That(problems, Has.Some.Contains("sharp_path ./train/r_2_sharp_0000.png is 8-bit grey, expected 8-bit RGBA"), text);
+            Assert.That(problems, Has.Some.Contains("sharp_path ../outside_sharp.png leaves the dataset folder."), text);
+            Assert.That(problems.Count, Is.EqualTo(3), text);
+        }
+
         string Copy(string source) => DatasetFaults.Copy(source, _temp.Combine("fault-" + ++_copies));
 
         static void EditFrames(string folder, Action<JObject> edit)

@@ -42,7 +42,10 @@ namespace NerfDatasetCreator.Tests
         public readonly List<Image> Images = new List<Image>();
         public readonly List<Point> Points = new List<Point>();
 
-        static readonly string[] ModelNames = { "SIMPLE_PINHOLE", "PINHOLE" };
+        // COLMAP's model ids and parameter counts (src/colmap/sensor/models.h: SIMPLE_PINHOLE 0, PINHOLE 1, SIMPLE_RADIAL 2,
+        // RADIAL 3, OPENCV 4, OPENCV_FISHEYE 5, FULL_OPENCV 6).
+        static readonly string[] ModelNames = { "SIMPLE_PINHOLE", "PINHOLE", "SIMPLE_RADIAL", "RADIAL", "OPENCV", "OPENCV_FISHEYE", "FULL_OPENCV" };
+        static readonly int[] ParamCounts = { 3, 4, 4, 5, 8, 8, 12 };
 
         public static ColmapTestModel ReadText(string folder)
         {
@@ -96,7 +99,7 @@ namespace NerfDatasetCreator.Tests
                 {
                     var camera = new Camera { Id = (int)r.ReadUInt32(), ModelId = r.ReadInt32(), Width = (int)r.ReadUInt64(), Height = (int)r.ReadUInt64() };
                     camera.Model = ModelNames[camera.ModelId];
-                    camera.Params = Enumerable.Range(0, camera.ModelId == 1 ? 4 : 3).Select(_ => r.ReadDouble()).ToArray();
+                    camera.Params = Enumerable.Range(0, ParamCounts[camera.ModelId]).Select(_ => r.ReadDouble()).ToArray();
                     model.Cameras[camera.Id] = camera;
                 }
                 AssertEnd(r, "cameras.bin");
