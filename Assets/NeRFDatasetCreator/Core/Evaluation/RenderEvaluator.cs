@@ -113,8 +113,10 @@ namespace NerfDatasetCreator
                 result.Geometry = GeometryEvaluation.Run(truth ?? GeometryTruth.Resolve(dataset, options.GeometryPath, options.TruthMeshPath, options.Step), options.GeometryPath, options.Threshold, options.TruthPoints, progress);
 
             // The report first, metrics.json last: a metrics.json marks a complete evaluation.
-            FileOps.WriteNewText(Path.Combine(outFolder, ReportHtml.FileName), ReportHtml.Build(result));
-            FileOps.WriteNewText(Path.Combine(outFolder, MetricsJson.FileName), MetricsJson.Text(MetricsJson.Build(result)));
+            // Each written whole or not at all (AtomicFile); the journal goes last: a kill before leaves a folder the next run recognises.
+            AtomicFile.WriteNewText(Path.Combine(outFolder, ReportHtml.FileName), ReportHtml.Build(result));
+            AtomicFile.WriteNewText(Path.Combine(outFolder, MetricsJson.FileName), MetricsJson.Text(MetricsJson.Build(result)));
+            EvaluationOutput.Finish(outFolder);
         }
 
         /// <summary>Every render must have the ground truth's size (read from the PNG headers before any pixel is decoded).</summary>
