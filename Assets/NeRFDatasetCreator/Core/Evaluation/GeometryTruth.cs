@@ -123,7 +123,7 @@ namespace NerfDatasetCreator
                     "If it is this capture's target in the output frame, pass it explicitly: --gt-mesh " + path + "; or capture again with the geometry pack on.");
             note = "--geometry is scored against " + relative + ", found by its conventional name: the dataset has no " + DatasetLayout.ConfigFileName +
                    " to record it. Pass --gt-mesh to name the ground truth yourself.";
-            return (path, "the conventional " + relative + " (no " + DatasetLayout.ConfigFileName + " records it)");
+            return (path, "the geometry pack " + relative + ", by its conventional name (no " + DatasetLayout.ConfigFileName + " records it)");
         }
 
         /// <summary>Set when the ground truth was found by its conventional name only (<see cref="PackFile"/>): evaluate prints it as a note.</summary>

@@ -65,7 +65,7 @@ namespace NerfDatasetCreator.Tests
         {
             Assert.That(File.Exists(Path.Combine(_dataset, DatasetLayout.ConfigFileName)), Is.False);
             var result = RenderEvaluator.Run(Options("conventional"));
-            Assert.That(result.Geometry.TruthSource, Is.EqualTo("the conventional geometry/target_mesh.ply (no dataset_config.json records it)"));
+            Assert.That(result.Geometry.TruthSource, Is.EqualTo("the geometry pack geometry/target_mesh.ply, by its conventional name (no dataset_config.json records it)"));
             Assert.That(result.Notes, Has.Member("--geometry is scored against geometry/target_mesh.ply, found by its conventional name: the dataset has no dataset_config.json to record it. Pass --gt-mesh to name the ground truth yourself."));
         }
     }
