@@ -127,6 +127,26 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(Entries(dataset), Is.EqualTo(before));
         }
 
+        [Test]
+        public void CleanNeverActsThroughALinkNamedLikeAWorkingFolder()
+        {
+            // A folder elsewhere that looks like an interrupted plan of "lego" (our journal, an ended run), reached by a
+            // link carrying a working folder's name: clean must not delete it, nor the link.
+            var elsewhere = _scratch.PathOf("elsewhere");
+            Directory.CreateDirectory(elsewhere);
+            File.WriteAllText(Path.Combine(elsewhere, "keep.txt"), "the user's");
+            var output = _scratch.PathOf("lego");
+            new OperationJournal { Operation = "write", Output = output, Owner = new OperationOwner(Environment.MachineName, int.MaxValue - 7, null) }.Save(elsewhere);
+            var link = WorkingFolders.NewPartial(output, DateTime.UtcNow);
+            Directory.CreateSymbolicLink(link, elsewhere);
+
+            var clean = ToolRun.Of("clean", _scratch.Root);
+            Assert.That(clean.ExitCode, Is.EqualTo(0), clean.ToString());
+            Assert.That(clean.Out + clean.Err, Does.Not.Contain("removed"), clean.ToString());
+            Assert.That(Directory.Exists(link), Is.True, "the link stays");
+            Assert.That(File.ReadAllText(Path.Combine(elsewhere, "keep.txt")), Is.EqualTo("the user's"));
+        }
+
         // ---- item 3: a live run's working folder, empty or not ----
 
         [Test]

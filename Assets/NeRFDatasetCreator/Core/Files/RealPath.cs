@@ -32,7 +32,8 @@ namespace NerfDatasetCreator
                 if (part == "..")
                 {
                     // current is real (or below a missing folder, which holds no link): its parent is the physical one.
-                    current = Path.GetDirectoryName(current.TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar)) ?? root;
+                    // The root's parent is the root (Mono's GetDirectoryName throws on "", so it is never asked).
+                    if (current.Length > root.Length) current = Path.GetDirectoryName(current.TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar)) ?? root;
                     continue;
                 }
                 var next = Path.Combine(current, part);

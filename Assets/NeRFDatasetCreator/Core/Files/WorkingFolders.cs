@@ -100,7 +100,7 @@ namespace NerfDatasetCreator
                 foreach (var dir in Directory.EnumerateDirectories(folder))
                 {
                     var working = BornAs(Path.GetFileName(dir));
-                    if (working == null) continue;
+                    if (working == null || PathSafety.IsLink(dir)) continue;
                     var kind = KindOf(working);
                     var belongs = kind == "convert" ? SamePath(folder, output) : !SamePath(folder, output) && SamePath(OutputOf(Path.Combine(folder, working)), output);
                     if (belongs) found.Add(dir);
@@ -153,13 +153,15 @@ namespace NerfDatasetCreator
         {
             var found = new List<string>();
             var parent = Path.GetDirectoryName(output);
+            // A symbolic link is never a working folder (the tool makes none), whatever its name: recovery and clean,
+            // which finish, roll back and delete working folders, never act through one.
             if (parent != null && Directory.Exists(parent))
                 foreach (var dir in Directory.EnumerateDirectories(parent))
-                    if (KindOf(Path.GetFileName(dir)) != null && KindOf(Path.GetFileName(dir)) != "convert" && SamePath(OutputOf(dir), output))
+                    if (KindOf(Path.GetFileName(dir)) != null && KindOf(Path.GetFileName(dir)) != "convert" && SamePath(OutputOf(dir), output) && !PathSafety.IsLink(dir))
                         found.Add(dir);
             if (Directory.Exists(output))
                 foreach (var dir in Directory.EnumerateDirectories(output))
-                    if (KindOf(Path.GetFileName(dir)) == "convert") found.Add(dir);
+                    if (KindOf(Path.GetFileName(dir)) == "convert" && !PathSafety.IsLink(dir)) found.Add(dir);
             found.Sort(StringComparer.Ordinal);
             return found;
         }
