@@ -91,6 +91,13 @@ namespace NerfDatasetCreator
                 if (frame.FilePath == null) { result.Problems.Add(new DatasetProblem(CheckName, file, index, "has no file_path.")); continue; }
                 var colour = frame.Existing("file_path");
                 if (colour == null) { result.Problems.Add(new DatasetProblem(CheckName, frame.FilePath, index, "names no image inside the dataset (looked for the path and the path + \".png\").")); continue; }
+                // Every other file the frame names (depth_path, sharp_path, clean_path, any *_path): a key naming a missing
+                // file or one outside the dataset is a lost pass, never a view quietly checked without it.
+                // One file under two keys (depth_path for instant-ngp, depth_file_path for nerfstudio) is one problem.
+                var lostFiles = new HashSet<string>(StringComparer.Ordinal);
+                foreach (var key in frame.FileKeys)
+                    if (frame.Named(key.Key) is DatasetFile named && named.Problem is string lost && lostFiles.Add(named.Relative))
+                        result.Problems.Add(new DatasetProblem(CheckName, frame.FilePath, index, lost + " " + LostFileFix(named)));
                 if (!TryPose(frame.TransformMatrix, out var pose, out var why)) { result.Problems.Add(new DatasetProblem(CheckName, file, index, "transform_matrix " + why)); continue; }
                 foreach (var poseProblem in DatasetValidator.PoseProblems(pose))
                     result.Problems.Add(new DatasetProblem(CheckName, file, index, poseProblem + (pose.Determinant3x3 < 0 ? " A mirrored rotation is a handedness slip: Unity's Y/Z not swapped, or one camera axis negated." : "")));
@@ -110,6 +117,12 @@ namespace NerfDatasetCreator
                 view.Lens = lens;
             }
         }
+
+        /// <summary>What to do about a file a frame's key names that is missing or outside the dataset.</summary>
+        internal static string LostFileFix(DatasetFile file) =>
+            file.IsInside
+                ? "Restore the file, or capture the dataset again (a frame's " + file.Key + " must name a file that is there)."
+                : "Copy the file into the dataset folder and name it relative to it, or capture the dataset again.";
 
         /// <summary>The camera is completed once the image size is known (<see cref="Complete"/>); the split's keys are kept until then.</summary>
         static void SetCamera(CheckView view, DatasetSplitFile json, double angle)

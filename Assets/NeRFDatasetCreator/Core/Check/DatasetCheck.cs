@@ -45,6 +45,7 @@ namespace NerfDatasetCreator
 
             var dynamic = views.Any(v => v.Time != null);
             var config = DatasetConfig.Read(root);
+            var geometryPack = new GeometryPackDepthCheck(root, config, dynamic);
             var checks = new List<IViewCheck>
             {
                 // A capture over a solid background (or the sky) has alpha 255 everywhere by design.
@@ -57,7 +58,7 @@ namespace NerfDatasetCreator
                 InstanceMaskCheck.For(root, views),
                 new ExposureCheck(root),
                 new MotionBlurCheck(),
-                new GeometryPackDepthCheck(root, config, dynamic),
+                geometryPack,
             };
             var multiView = new MultiViewGeometryCheck();
             var reprojection = new InstanceReprojectionCheck();
@@ -126,6 +127,7 @@ namespace NerfDatasetCreator
                 foreach (var p in found) report.Add(p);
             }
             progress?.Invoke(total, total);
+            foreach (var p in geometryPack.PackProblems) report.Add(p);
 
             report.Add(new DatasetCheckResult(CheckDatasetReader.CheckName,
                 read.Problems.Count > 0 || decoded < views.Count ? DatasetCheckStatus.Failed : DatasetCheckStatus.Passed,

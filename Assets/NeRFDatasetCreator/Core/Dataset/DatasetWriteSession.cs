@@ -64,10 +64,10 @@ namespace NerfDatasetCreator
             var parent = Path.GetDirectoryName(full);
             FileOps.CreateDirectory(parent);
             var working = WorkingFolders.NewPartial(full, now ?? DateTime.UtcNow);
-            FileOps.CreateDirectory(working);
-            // Registered before the journal names this process, so that no recovery here takes it for an ended run.
+            // Registered before the journal names this process, so that no recovery here takes it for an ended run; born
+            // with its journal, so that no recovery in another process takes it for a run killed at birth (WorkingFolders.Create).
             OperationOwner.Register(working);
-            new OperationJournal { Operation = "write", Output = full }.Save(working);
+            WorkingFolders.Create(working, new OperationJournal { Operation = "write", Output = full });
             return new DatasetWriteSession(full, working, policy, rendersImages) { Recovered = recovered, Leftovers = Leftover.Of(full, working) };
         }
 

@@ -74,13 +74,9 @@ namespace NerfDatasetCreator
                     "is inside the Unity project's Assets folder, so Unity would import every image (slow, and it creates a .meta per file).",
                     "Use the default <project>/" + DefaultParentFolder + "/, any folder outside Assets, or a folder whose name ends in '~' (e.g. Assets/Datasets~/), which Unity ignores."));
 
-            for (var ancestor = Path.GetDirectoryName(full); ancestor != null; ancestor = Path.GetDirectoryName(ancestor))
-                if (LooksLikeDataset(ancestor))
-                {
-                    problems.Add(new ValidationProblem(field, shown, "is inside the existing dataset " + ancestor + "; loaders would see a mixture.",
-                        "Choose a folder outside any dataset."));
-                    break;
-                }
+            var inside = WhyInsideDataset(full, null);
+            if (inside != null)
+                problems.Add(new ValidationProblem(field, shown, inside + "; loaders would see a mixture.", "Choose a folder outside any dataset."));
 
             if (File.Exists(full))
                 problems.Add(new ValidationProblem(field, shown, "is an existing file, not a folder.", "Choose another dataset name or folder."));
@@ -102,6 +98,32 @@ namespace NerfDatasetCreator
             var writable = CheckWritable(full);
             if (writable != null) problems.Add(new ValidationProblem(field, shown, writable, "Choose a folder you can write to."));
             return problems;
+        }
+
+        /// <summary>
+        /// The one "never inside the dataset" rule of every command that writes (plan and capture, evaluate, check
+        /// <c>--json</c>, merge's shard warning): why writing at <paramref name="path"/> would really write into
+        /// <paramref name="dataset"/> — or, when that is null, into any existing dataset above it — with every symbolic
+        /// link on the way followed (<see cref="RealPath"/>); null when it would not. The clause names the dataset, and
+        /// the real path when a link leads there ("is inside the existing dataset /d (through a symbolic link: it is
+        /// really /d/x)"); a link that cannot be resolved is refused too.
+        /// </summary>
+        public static string WhyInsideDataset(string path, string dataset)
+        {
+            var full = Path.GetFullPath(path).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar);
+            var real = RealPath.Of(full, out var unresolved);
+            if (real == null) return unresolved + ", so where it leads cannot be checked";
+            var via = real == full ? "" : " (through a symbolic link: it is really " + real + ")";
+            if (dataset != null)
+            {
+                var realDataset = RealPath.Of(dataset, out unresolved);
+                if (realDataset == null) return "names the dataset " + dataset + ", which " + unresolved;
+                return RealPath.Inside(real, realDataset) ? "is inside the dataset " + Path.GetFullPath(dataset).TrimEnd(Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar) + via : null;
+            }
+            for (var ancestor = Path.GetDirectoryName(real); ancestor != null; ancestor = Path.GetDirectoryName(ancestor))
+                if (LooksLikeDataset(ancestor))
+                    return "is inside the existing dataset " + ancestor + via;
+            return null;
         }
 
         /// <summary>The Assets folder <paramref name="full"/> is imported from, or null when it is not imported.</summary>

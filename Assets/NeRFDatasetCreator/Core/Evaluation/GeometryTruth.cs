@@ -45,8 +45,9 @@ namespace NerfDatasetCreator
             {
                 if (step.HasValue)
                     throw Refuse("--step", step.Value.ToString(System.Globalization.CultureInfo.InvariantCulture), "picks a time step, but " + dataset.Root + " is a static capture (no time record, no per-frame time).", "Leave --step out.");
-                var (path, source) = truthMeshPath != null ? (System.IO.Path.GetFullPath(truthMeshPath), "--gt-mesh") : PackFile(dataset, reconstructionPath, entries.FirstOrDefault());
-                return new GeometryTruth { Path = path, Source = source, Train = train, TrainFrames = train.Frames };
+                string staticNote = null;
+                var (path, source) = truthMeshPath != null ? (System.IO.Path.GetFullPath(truthMeshPath), "--gt-mesh") : PackFile(dataset, reconstructionPath, entries.FirstOrDefault(), out staticNote);
+                return new GeometryTruth { Path = path, Source = source, Train = train, TrainFrames = train.Frames, Note = staticNote };
             }
 
             var perStep = dataset.Config?.GeometryIsPerStep == true;
@@ -88,8 +89,9 @@ namespace NerfDatasetCreator
                 throw Refuse("--step", k.ToString(System.Globalization.CultureInfo.InvariantCulture), "matches no train view (no frame of transforms_train.json has time_step " + k +
                     (time.HasValue ? " or time " + time.Value.ToString("0.######", System.Globalization.CultureInfo.InvariantCulture) : "") + ").",
                     "Pick a step the train split holds" + (known.Count > 0 ? " (" + StepList(entries) + ")" : "") + ".");
-            var (truth, from) = truthMeshPath != null ? (System.IO.Path.GetFullPath(truthMeshPath), "--gt-mesh") : PackFile(dataset, reconstructionPath, entry);
-            return new GeometryTruth { Path = truth, Source = from + ", time step " + k, Step = k, Time = time ?? frames[0].Time, Train = train, TrainFrames = frames };
+            string note = null;
+            var (truth, from) = truthMeshPath != null ? (System.IO.Path.GetFullPath(truthMeshPath), "--gt-mesh") : PackFile(dataset, reconstructionPath, entry, out note);
+            return new GeometryTruth { Path = truth, Source = from + ", time step " + k, Step = k, Time = time ?? frames[0].Time, Train = train, TrainFrames = frames, Note = note };
         }
 
         /// <summary>Step k's normalised time from dataset_config.json's time record (k/(steps − 1)), or null when there is none.</summary>
@@ -100,16 +102,32 @@ namespace NerfDatasetCreator
             return k / (double)(steps.Value - 1);
         }
 
-        /// <summary>The pack file of <paramref name="entry"/> (or the conventional <c>geometry/target_mesh.ply</c>); refuses when it is missing.</summary>
-        static (string, string) PackFile(EvaluationDataset dataset, string reconstructionPath, GeometryPackEntry entry)
+        /// <summary>
+        /// The pack file of <paramref name="entry"/>; refuses when it is missing. Without a record: in this plugin's dataset
+        /// (a dataset_config.json) an unrecorded <c>geometry/target_mesh.ply</c> is refused — a leftover of another capture
+        /// would score the reconstruction against the wrong surface, and <c>validate</c> warns that evaluate does not use it;
+        /// in another tool's dataset (no dataset_config.json) the conventional file is used, and <paramref name="note"/> says so.
+        /// </summary>
+        static (string, string) PackFile(EvaluationDataset dataset, string reconstructionPath, GeometryPackEntry entry, out string note)
         {
+            note = null;
             var relative = entry?.File ?? TargetMeshPly.RelativePath;
             var path = PathSafety.Inside(dataset.Root, relative, out _);
             if (path == null || !File.Exists(path))
                 throw Refuse("--geometry", reconstructionPath ?? "", "needs the ground-truth mesh, and " + System.IO.Path.Combine(dataset.Root, relative) + " does not exist (the dataset has no geometry pack).",
                     "Pass the target's mesh in the dataset's output frame and units with --gt-mesh <file.ply|.obj>.");
-            return (path, entry != null ? "the geometry pack recorded in dataset_config.json (" + relative + ")" : "the geometry pack " + relative);
+            if (entry != null) return (path, "the geometry pack recorded in dataset_config.json (" + relative + ")");
+            if (dataset.Config != null)
+                throw Refuse("--geometry", reconstructionPath ?? "", "needs the ground-truth mesh, and " + path + " is not recorded in " + DatasetLayout.ConfigFileName +
+                                                                    "'s geometry, so it is not taken for this capture's target (a leftover of another capture?).",
+                    "If it is this capture's target in the output frame, pass it explicitly: --gt-mesh " + path + "; or capture again with the geometry pack on.");
+            note = "--geometry is scored against " + relative + ", found by its conventional name: the dataset has no " + DatasetLayout.ConfigFileName +
+                   " to record it. Pass --gt-mesh to name the ground truth yourself.";
+            return (path, "the geometry pack " + relative + ", by its conventional name (no " + DatasetLayout.ConfigFileName + " records it)");
         }
+
+        /// <summary>Set when the ground truth was found by its conventional name only (<see cref="PackFile"/>): evaluate prints it as a note.</summary>
+        public string Note { get; private set; }
 
         static string StepList(IReadOnlyList<GeometryPackEntry> entries)
         {

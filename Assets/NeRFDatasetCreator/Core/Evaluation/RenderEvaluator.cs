@@ -56,6 +56,7 @@ namespace NerfDatasetCreator
             if (wantNormals && !dataset.HasNormals) { wantNormals = false; result.Notes.Add("The renders include normals, but " + dataset.Unscored("normal", "normal_path", f => f.NormalPath) + ": normals not scored."); }
             if (firstColumn > 0)
                 result.Notes.Add("The 3DGS renders are the right half of each view (render.py with --train_test_exp keeps columns W//2 … W − 1 of the render and of gt): scored against that half of the dataset's images, from column " + firstColumn + ".");
+            if (truth?.Note != null) result.Notes.Add(truth.Note);
             if (!dataset.HasMasks) result.Notes.Add("The dataset's " + options.Split + " split has no masks: PSNR in the mask not computed.");
             if (renders.Layout == RenderLayout.Nerfstudio && wantDepth)
                 result.Notes.Add(options.DepthAlongRay
@@ -113,8 +114,10 @@ namespace NerfDatasetCreator
                 result.Geometry = GeometryEvaluation.Run(truth ?? GeometryTruth.Resolve(dataset, options.GeometryPath, options.TruthMeshPath, options.Step), options.GeometryPath, options.Threshold, options.TruthPoints, progress);
 
             // The report first, metrics.json last: a metrics.json marks a complete evaluation.
-            FileOps.WriteNewText(Path.Combine(outFolder, ReportHtml.FileName), ReportHtml.Build(result));
-            FileOps.WriteNewText(Path.Combine(outFolder, MetricsJson.FileName), MetricsJson.Text(MetricsJson.Build(result)));
+            // Each written whole or not at all (AtomicFile); the journal goes last: a kill before leaves a folder the next run recognises.
+            AtomicFile.WriteNewText(Path.Combine(outFolder, ReportHtml.FileName), ReportHtml.Build(result));
+            AtomicFile.WriteNewText(Path.Combine(outFolder, MetricsJson.FileName), MetricsJson.Text(MetricsJson.Build(result)));
+            EvaluationOutput.Finish(outFolder);
         }
 
         /// <summary>Every render must have the ground truth's size (read from the PNG headers before any pixel is decoded).</summary>

@@ -114,6 +114,42 @@ namespace NerfDatasetCreator
             }
         }
 
+        /// <summary>
+        /// The run as a part of a file name, for what must carry its owner before any file can (a report's temporary file,
+        /// a working folder being born): <c>&lt;host&gt;-&lt;pid&gt;-&lt;start&gt;</c>, the host's ASCII letters and digits
+        /// (at most 24, "unknown" for none) and the start as <c>yyyyMMddHHmmss</c> UTC ("0" when unknown).
+        /// </summary>
+        public string NameTag =>
+            HostTag(Host) + "-" + ProcessId.ToString(CultureInfo.InvariantCulture) + "-" +
+            (ProcessStart?.ToString("yyyyMMddHHmmss", CultureInfo.InvariantCulture) ?? "0");
+
+        /// <summary>A regular expression matching exactly a <see cref="NameTag"/>, with groups host, pid and start.</summary>
+        public const string NameTagPattern = @"(?<host>[A-Za-z0-9]{1,24})-(?<pid>[0-9]{1,10})-(?<start>[0-9]{14}|0)";
+
+        /// <summary>The owner a <see cref="NameTagPattern"/> match names, or null when its numbers do not parse.</summary>
+        public static OperationOwner FromNameTag(System.Text.RegularExpressions.Match match)
+        {
+            if (!match.Success || !int.TryParse(match.Groups["pid"].Value, NumberStyles.None, CultureInfo.InvariantCulture, out var pid)) return null;
+            DateTime? start = null;
+            if (match.Groups["start"].Value != "0")
+            {
+                if (!DateTime.TryParseExact(match.Groups["start"].Value, "yyyyMMddHHmmss", CultureInfo.InvariantCulture,
+                        DateTimeStyles.AssumeUniversal | DateTimeStyles.AdjustToUniversal, out var parsed)) return null;
+                start = parsed;
+            }
+            var host = match.Groups["host"].Value;
+            // The tag keeps a shortened host: the same shortening of this machine's name is this machine.
+            return new OperationOwner(host == HostTag(Current.Host) ? Current.Host : host, pid, start);
+        }
+
+        static string HostTag(string host)
+        {
+            var kept = new System.Text.StringBuilder();
+            foreach (var c in host ?? "")
+                if (c < 128 && char.IsLetterOrDigit(c) && kept.Length < 24) kept.Append(c);
+            return kept.Length > 0 ? kept.ToString() : "unknown";
+        }
+
         static bool SameStart(DateTime? a, DateTime? b) =>
             !a.HasValue || !b.HasValue || (a.Value - b.Value).Duration() <= StartTolerance;
 

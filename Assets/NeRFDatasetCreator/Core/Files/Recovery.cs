@@ -43,9 +43,11 @@ namespace NerfDatasetCreator
             foreach (var working in WorkingFolders.Of(output))
             {
                 var journal = OperationJournal.Load(working);
-                if (journal == null && WorkingFolders.KindOf(Path.GetFileName(working)) != "replaced" && WorkingFolders.HoldsNoFile(working) && !OperationOwner.IsRunningHere(working))
+                if (journal == null && WorkingFolders.KindOf(Path.GetFileName(working)) != "replaced" && WorkingFolders.HoldsNoFile(working) && !OperationOwner.IsRunningHere(working) &&
+                    OperationJournal.Load(working) == null) // read again: a live run rewriting its journal has it under one of two names at every instant
                 {
-                    // Killed between creating the folder and writing its journal: nothing to finish, nothing to keep.
+                    // No run makes a working folder without its journal naming the run (WorkingFolders.Create): this one was
+                    // killed at birth by an older version of the tool, or made by hand. Nothing to finish, nothing to keep.
                     FileOps.DeleteDirectory(working);
                     continue;
                 }
@@ -71,6 +73,15 @@ namespace NerfDatasetCreator
                     case "merge": Merge(working, journal, output, notes); break;
                     case "convert": Convert(working, journal, output, notes); break;
                 }
+            }
+
+            // A run killed while its working folder was being born (WorkingFolders.Create): the name proves whose it is, and
+            // once that run has ended it holds nothing but perhaps its journal.
+            foreach (var birth in WorkingFolders.BirthsOf(output))
+            {
+                var owner = WorkingFolders.BirthOwner(Path.GetFileName(birth));
+                if (owner == null || PathSafety.IsLink(birth) || OperationOwner.WhyMayBeRunning(owner, birth) != null || !WorkingFolders.HoldsNoFile(birth)) continue;
+                FileOps.DeleteDirectory(birth);
             }
 
             // A dataset moved aside by a replace whose journal is gone, with nothing under its name: put it back.

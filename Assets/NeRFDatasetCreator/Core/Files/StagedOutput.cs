@@ -38,9 +38,8 @@ namespace NerfDatasetCreator
             FileOps.CreateDirectory(output);
             var working = WorkingFolders.NewConvert(output, now ?? DateTime.UtcNow);
             var journal = new OperationJournal { Operation = operation, Output = output, CreatedOutput = created };
-            FileOps.CreateDirectory(working);
             OperationOwner.Register(working); // before the journal names this process: no recovery here takes it for an ended run
-            journal.Save(working);
+            WorkingFolders.Create(working, journal); // born with its journal: never an owner-less empty folder
             return new StagedOutput(output, working, journal);
         }
 

@@ -45,6 +45,71 @@ namespace NerfDatasetCreator
         static readonly Regex ReplacedName = new Regex(@"^(.+)\.replaced-[0-9a-f]{8}~\z", RegexOptions.CultureInvariant);
         static readonly Regex MergingName = new Regex(@"^\.(.+)\.merging-[0-9a-f]{8}\z", RegexOptions.CultureInvariant);
 
+        /// <summary>
+        /// Creates the working folder <paramref name="working"/> with <paramref name="journal"/> (naming this run, its
+        /// owner) already inside: both are made under a birth name that names the run too,
+        /// <c>.&lt;working name&gt;.birth-&lt;host&gt;-&lt;pid&gt;-&lt;start&gt;~</c> (<see cref="OperationOwner.NameTag"/>), and
+        /// renamed into place in one step. So no folder under a working folder's name is ever without its owner — a
+        /// recovery in another process, which removes a journal-less empty working folder as a run killed at birth, can
+        /// never take a live run's new folder for one — and a run killed during its birth leaves a folder whose name
+        /// proves whose it is (<see cref="Recovery"/> removes it once that run has ended). The caller registers
+        /// <paramref name="working"/> first (<see cref="OperationOwner.Register"/>).
+        /// </summary>
+        public static void Create(string working, OperationJournal journal)
+        {
+            var birth = Path.Combine(Path.GetDirectoryName(working) ?? ".", "." + Path.GetFileName(working) + BirthMarker + OperationOwner.Current.NameTag + "~");
+            OperationOwner.Register(birth);
+            try
+            {
+                FileOps.CreateDirectory(birth);
+                journal.Save(birth);
+                FileOps.MoveDirectory(birth, working);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                if (Directory.Exists(birth)) Directory.Delete(birth, true); // only this run's journal is in it
+                throw;
+            }
+            finally
+            {
+                OperationOwner.Release(birth);
+            }
+        }
+
+        const string BirthMarker = ".birth-";
+
+        static readonly Regex BirthName = new Regex(@"^\.(?<working>.+)" + Regex.Escape(BirthMarker) + OperationOwner.NameTagPattern + @"~\z", RegexOptions.CultureInvariant);
+
+        /// <summary>The working folder a birth folder's name (<see cref="Create"/>) becomes, or null for any other name.</summary>
+        public static string BornAs(string name)
+        {
+            var match = name == null ? Match.Empty : BirthName.Match(name);
+            return match.Success && KindOf(match.Groups["working"].Value) != null ? match.Groups["working"].Value : null;
+        }
+
+        /// <summary>The run a birth folder's name names (<see cref="Create"/>), or null for any other name.</summary>
+        public static OperationOwner BirthOwner(string name) => BornAs(name) == null ? null : OperationOwner.FromNameTag(BirthName.Match(name));
+
+        /// <summary>The birth folders (<see cref="Create"/>) of <paramref name="output"/>'s working folders: beside it and, for convert, inside it.</summary>
+        public static IReadOnlyList<string> BirthsOf(string output)
+        {
+            var found = new List<string>();
+            foreach (var folder in new[] { Path.GetDirectoryName(output), output })
+            {
+                if (folder == null || !Directory.Exists(folder)) continue;
+                foreach (var dir in Directory.EnumerateDirectories(folder))
+                {
+                    var working = BornAs(Path.GetFileName(dir));
+                    if (working == null || PathSafety.IsLink(dir)) continue;
+                    var kind = KindOf(working);
+                    var belongs = kind == "convert" ? SamePath(folder, output) : !SamePath(folder, output) && SamePath(OutputOf(Path.Combine(folder, working)), output);
+                    if (belongs) found.Add(dir);
+                }
+            }
+            found.Sort(StringComparer.Ordinal);
+            return found;
+        }
+
         /// <summary>What kind of working folder <paramref name="name"/> is — only for the exact names the tool writes — or null for any other name.</summary>
         public static string KindOf(string name)
         {
@@ -64,7 +129,7 @@ namespace NerfDatasetCreator
         /// <c>nerf-dataset clean</c> lists such a folder as "not ours" and leaves it alone.
         /// </summary>
         public static bool LooksLikeOne(string name) =>
-            name != null && KindOf(name) == null &&
+            name != null && KindOf(name) == null && BornAs(name) == null &&
             (name.IndexOf(PartialMarker, StringComparison.Ordinal) >= 0 || name.IndexOf(ReplacedMarker, StringComparison.Ordinal) >= 0 ||
              name.IndexOf(MergingMarker, StringComparison.Ordinal) >= 0);
 
@@ -88,13 +153,15 @@ namespace NerfDatasetCreator
         {
             var found = new List<string>();
             var parent = Path.GetDirectoryName(output);
+            // A symbolic link is never a working folder (the tool makes none), whatever its name: recovery and clean,
+            // which finish, roll back and delete working folders, never act through one.
             if (parent != null && Directory.Exists(parent))
                 foreach (var dir in Directory.EnumerateDirectories(parent))
-                    if (KindOf(Path.GetFileName(dir)) != null && KindOf(Path.GetFileName(dir)) != "convert" && SamePath(OutputOf(dir), output))
+                    if (KindOf(Path.GetFileName(dir)) != null && KindOf(Path.GetFileName(dir)) != "convert" && SamePath(OutputOf(dir), output) && !PathSafety.IsLink(dir))
                         found.Add(dir);
             if (Directory.Exists(output))
                 foreach (var dir in Directory.EnumerateDirectories(output))
-                    if (KindOf(Path.GetFileName(dir)) == "convert") found.Add(dir);
+                    if (KindOf(Path.GetFileName(dir)) == "convert" && !PathSafety.IsLink(dir)) found.Add(dir);
             found.Sort(StringComparer.Ordinal);
             return found;
         }

@@ -32,8 +32,7 @@ namespace NerfDatasetCreator
             OperationOwner.Register(output);
             try
             {
-                FileOps.CreateDirectory(staging);
-                journal.Save(staging);
+                WorkingFolders.Create(staging, journal); // born with its journal: never an owner-less empty folder
                 foreach (var t in transfers)
                 {
                     var destination = Path.Combine(staging, t.Relative.Replace('/', Path.DirectorySeparatorChar));

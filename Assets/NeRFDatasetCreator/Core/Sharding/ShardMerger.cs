@@ -53,7 +53,8 @@ namespace NerfDatasetCreator
 
             var shards = ShardFolder.ReadAll(shardFolders, problems);
             if (problems.Count > 0) return new MergeResult(output, problems, warnings, empty, 0, notes);
-            foreach (var shard in shards.Where(s => output.StartsWith(s.Folder + Path.DirectorySeparatorChar, System.StringComparison.Ordinal)))
+            // The real path, every link followed (SafeOutput's one rule): a link into a shard is inside it.
+            foreach (var shard in shards.Where(s => SafeOutput.WhyInsideDataset(output, s.Folder) != null))
                 warnings.Add("--out " + output + " is inside " + shard.Name + "; the merged dataset will sit in a shard folder (choose a folder beside the shards).");
             MergeChecks.CheckShardSet(shards, problems);
             if (problems.Count > 0) return new MergeResult(output, problems, warnings, empty, 0, notes);

@@ -6,7 +6,8 @@ namespace NerfDatasetCreator
     /// <summary>
     /// <c>nerf-dataset check d [--split S] [--json FILE] [--max-views N]</c>: <see cref="DatasetCheck"/>'s summary (one
     /// line per check with its figure and threshold), then one line per problem naming file, frame and check; exit 1
-    /// on any problem. <c>--json</c> writes the whole report to a new file and never replaces an existing one.
+    /// on any problem. <c>--json</c> writes the whole report to a new file outside the dataset, complete or not at all
+    /// (<see cref="AtomicFile"/>), and never replaces an existing one.
     /// </summary>
     public static class CheckCommand
     {
@@ -61,6 +62,13 @@ namespace NerfDatasetCreator
                 stderr.WriteLine("error: the folder of " + json + " does not exist. Create it, or name a file in an existing folder for --json.");
                 return ToolExitCodes.Failure;
             }
+            // The real path, every link followed (SafeOutput's one rule): check never adds a file to the dataset it checks.
+            var inside = json == null ? null : SafeOutput.WhyInsideDataset(json, folder);
+            if (inside != null)
+            {
+                stderr.WriteLine("error: --json " + json + " " + inside + "; check never adds files to the dataset it checks. Name a file outside the dataset for --json.");
+                return ToolExitCodes.Failure;
+            }
 
             var report = DatasetCheck.Run(folder, new DatasetCheckOptions { Split = options.Split, MaxViews = options.MaxViews });
             stdout.WriteLine("check " + Path.GetFullPath(folder) + ": " + report.ViewsChecked + " views in " +
@@ -73,10 +81,9 @@ namespace NerfDatasetCreator
             {
                 try
                 {
-                    // CreateNew: a file that appeared since the test above is not replaced either.
-                    using (var stream = new FileStream(json, FileMode.CreateNew, FileAccess.Write))
-                    using (var writer = new StreamWriter(stream, new System.Text.UTF8Encoding(false)))
-                        writer.Write(report.ToJson());
+                    // Written beside it and renamed when complete: a kill leaves no half-written report under the name, and
+                    // a file that appeared since the test above is not replaced either (AtomicFile).
+                    AtomicFile.WriteNewText(json, report.ToJson());
                     stdout.WriteLine("report: " + json);
                 }
                 catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)

@@ -60,9 +60,51 @@ namespace NerfDatasetCreator
                 _skip = "the dataset has no geometry pack";
                 return;
             }
+            // Every recorded mesh, not only the ones compared below: a pack recorded but lost or damaged is a failure,
+            // never a skip (evaluate would score against it).
+            foreach (var entry in entries)
+            {
+                var why = Damage(root, entry);
+                if (why != null) Damaged(entry, why);
+            }
             if (entries.Count > MaxMeshes)
                 entries = Enumerable.Range(0, MaxMeshes).Select(i => entries[(int)((long)i * (entries.Count - 1) / (MaxMeshes - 1))]).Distinct().ToList();
             _entries = entries;
+        }
+
+        /// <summary>
+        /// The recorded meshes that are outside the dataset, missing, changed since the capture or unreadable, each naming
+        /// the file and the fix: <see cref="DatasetCheck"/> reports them as problems of this check.
+        /// </summary>
+        public IReadOnlyList<DatasetProblem> PackProblems => _damaged;
+
+        readonly List<DatasetProblem> _damaged = new List<DatasetProblem>();
+        readonly HashSet<GeometryPackEntry> _damagedEntries = new HashSet<GeometryPackEntry>();
+
+        void Damaged(GeometryPackEntry entry, string why)
+        {
+            if (!_damagedEntries.Add(entry)) return;
+            _damaged.Add(new DatasetProblem(CheckName, entry.File, -1, "is recorded in " + DatasetLayout.ConfigFileName + " as the geometry pack" +
+                (entry.Step.HasValue ? " of time step " + entry.Step.Value : "") + " but " + why +
+                ". Capture the dataset again with the geometry pack on (or remove the geometry record from " + DatasetLayout.ConfigFileName + " if the dataset should have none)."));
+        }
+
+        /// <summary>Why a recorded mesh cannot be the target's surface (outside, missing, not the recorded bytes), or null.</summary>
+        static string Damage(string root, GeometryPackEntry entry)
+        {
+            var path = PathSafety.Inside(root, entry.File, out var outside);
+            if (path == null) return "its path " + outside;
+            if (!File.Exists(path)) return "does not exist";
+            if (entry.Sha256 == null) return null;
+            try
+            {
+                return string.Equals(PointCloudRecord.HashOf(path), entry.Sha256, StringComparison.OrdinalIgnoreCase) ? null
+                    : "does not have the SHA-256 recorded for it (truncated, replaced or edited after the capture)";
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                return "cannot be read (" + e.Message + ")";
+            }
         }
 
         /// <summary>The mesh of the view's time, or null.</summary>
@@ -111,12 +153,17 @@ namespace NerfDatasetCreator
             if (ReferenceEquals(entry, _loaded)) return _xyz != null;
             _loaded = entry;
             _xyz = null;
+            if (_damagedEntries.Contains(entry)) return false; // reported once, as a problem
             var path = PathSafety.Inside(_root, entry.File, out _);
-            if (path == null || !File.Exists(path)) return false; // validate reports it
+            if (path == null || !File.Exists(path)) return false;
             try
             {
                 var mesh = GeometryFile.Read(path);
-                if (mesh.TriangleCount == 0) return false;
+                if (mesh.TriangleCount == 0)
+                {
+                    Damaged(entry, "has no triangles");
+                    return false;
+                }
                 var points = SurfaceSampler.Sample(new[] { mesh }, Points, 0x636865636b);
                 _xyz = new double[points.Count * 3];
                 for (var i = 0; i < points.Count; i++)
@@ -129,6 +176,7 @@ namespace NerfDatasetCreator
             }
             catch (Exception e) when (e is InvalidDataException || e is IOException || e is InvalidParameterException)
             {
+                Damaged(entry, "cannot be read: " + e.Message);
                 return false;
             }
         }
@@ -145,6 +193,9 @@ namespace NerfDatasetCreator
         public DatasetCheckResult Finish()
         {
             if (_entries == null) return DatasetCheckResult.Skip(Name, _skip);
+            if (_damaged.Count > 0)
+                return new DatasetCheckResult(Name, DatasetCheckStatus.Failed, _damaged.Count + (_damaged.Count == 1 ? " recorded mesh" : " recorded meshes") + " lost or damaged",
+                    "every recorded mesh inside the dataset, present, unchanged and readable", _damaged.Count + " problem(s)");
             if (_views == 0) return DatasetCheckResult.Skip(Name, "no view with depth at a time the geometry pack holds sees " + MinPointsInView + " or more of its points");
             return new DatasetCheckResult(Name, _bad > 0 ? DatasetCheckStatus.Failed : DatasetCheckStatus.Passed,
                 _views + " views, " + _entries.Count + (_entries.Count == 1 ? " mesh" : " meshes") + ", worst view " + CheckFigures.Percent(_worst) + " in front of the depth or off it",

@@ -145,10 +145,18 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(result.Figure, Does.StartWith("21 views, 3 meshes"), "(4 train + 1 val + 2 test cameras) × 3 steps, each against its own step's mesh");
 
                 // Step 2's file holds step 0's surface: the views at time 1 see the sphere elsewhere.
+                // A capture that wrote the wrong mesh records that mesh's SHA-256, so the record agrees with the file and
+                // only the comparison with depth can catch it (a file changed after the capture fails on its hash alone).
                 File.Copy(Path.Combine(folder, GeometryPackSteps.RelativePath(0)), Path.Combine(folder, GeometryPackSteps.RelativePath(2)), true);
+                var configPath = Path.Combine(folder, DatasetLayout.ConfigFileName);
+                var config = Config(folder);
+                var hash0 = GeometryPackStepRecord.Entries(config).Single(e => e.Step == 0).Sha256;
+                foreach (var step in config.SelectTokens("$..steps[?(@.step == 2)]")) step["sha256"] = hash0;
+                File.WriteAllText(configPath, config.ToString());
+                Assert.That(GeometryPackStepRecord.Entries(Config(folder)).Single(e => e.Step == 2).Sha256, Is.EqualTo(hash0));
                 var swapped = DatasetCheck.Run(folder, new DatasetCheckOptions());
                 Assert.That(swapped.Results.Single(r => r.Name == GeometryPackDepthCheck.CheckName).Status, Is.EqualTo(DatasetCheckStatus.Failed));
-                Assert.That(swapped.Problems.Where(p => p.Check == GeometryPackDepthCheck.CheckName).Select(p => p.Message), Has.All.Contains("time step 2"));
+                Assert.That(swapped.Problems.Where(p => p.Check == GeometryPackDepthCheck.CheckName).Select(p => p.Message), Has.All.Contains("time step 2").And.All.Contains("in front of the depth"));
             }
         }
 
