@@ -13,7 +13,8 @@ namespace NerfDatasetCreator
         public static bool WriteInto(string datasetFolder, DatasetCheckReport report)
         {
             if (report == null || report.Cancelled || string.IsNullOrEmpty(datasetFolder) || !Directory.Exists(datasetFolder)) return false;
-            FileOps.WriteText(Path.Combine(datasetFolder, DatasetCheck.ReportFileName), report.ToJson());
+            // Atomic: a kill or a domain reload mid-write leaves the old report or the new one, never half a file.
+            AtomicFile.ReplaceText(Path.Combine(datasetFolder, DatasetCheck.ReportFileName), report.ToJson());
             return true;
         }
     }

@@ -55,6 +55,39 @@ namespace NerfDatasetCreator
             WriteNew(path, stream => stream.Write(bytes, 0, bytes.Length));
         }
 
+        /// <summary>
+        /// Writes <paramref name="path"/> as UTF-8 text, replacing the file there in one rename (<see cref="File.Replace(string, string, string)"/>):
+        /// for a file the product provably owns under a fixed name (the self-check's <c>check_report.json</c> inside a
+        /// dataset it captured), which a rerun rewrites. A reader sees the old file or the new one, never half of either.
+        /// </summary>
+        public static void ReplaceText(string path, string text)
+        {
+            path = Path.GetFullPath(path);
+            if (!File.Exists(path))
+            {
+                WriteNewText(path, text);
+                return;
+            }
+            RemoveLeftovers(path);
+            var temp = TempPath(path, OperationOwner.Current);
+            OperationOwner.Register(temp);
+            try
+            {
+                if (File.Exists(temp)) FileOps.DeleteFile(temp);
+                FileOps.WriteText(temp, text);
+                File.Replace(temp, path, null);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                if (File.Exists(temp)) File.Delete(temp);
+                throw;
+            }
+            finally
+            {
+                OperationOwner.Release(temp);
+            }
+        }
+
         /// <summary>The temporary file <paramref name="owner"/> writes <paramref name="path"/> through.</summary>
         public static string TempPath(string path, OperationOwner owner) =>
             Path.Combine(Path.GetDirectoryName(path) ?? ".", "." + Path.GetFileName(path) + Marker + owner.NameTag + "~");

@@ -14,6 +14,9 @@ namespace NerfDatasetCreator.Tests
     /// callers gave when each parsed the file itself.
     /// </summary>
     [TestFixture]
+    // Sets FileOps.Faults, which every file operation of the process sees: never beside another fixture (dotnet runs
+    // fixtures side by side, Tests/Core.Tests/ParallelFixtures.cs).
+    [Parallelizable(ParallelScope.None)]
     public class DatasetConfigTests
     {
         static readonly DateTime Created = new DateTime(2026, 11, 22, 12, 30, 5, DateTimeKind.Utc);

@@ -12,6 +12,9 @@ namespace NerfDatasetCreator.Tests
     /// <c>Tests/Tool.Tests/DataSafetyTests</c>.
     /// </summary>
     [TestFixture]
+    // Sets FileOps.Faults, which every file operation of the process sees: never beside another fixture (dotnet runs
+    // fixtures side by side, Tests/Core.Tests/ParallelFixtures.cs).
+    [Parallelizable(ParallelScope.None)]
     public class AtomicFileTests
     {
         TempFolder _temp;

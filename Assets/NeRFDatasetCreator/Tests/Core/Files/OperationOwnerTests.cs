@@ -13,6 +13,9 @@ namespace NerfDatasetCreator.Tests
     /// Runner too, where the Editor's capture and its tools window share one process.
     /// </summary>
     [TestFixture]
+    // Sets FileOps.Faults, which every file operation of the process sees: never beside another fixture (dotnet runs
+    // fixtures side by side, Tests/Core.Tests/ParallelFixtures.cs).
+    [Parallelizable(ParallelScope.None)]
     public class OperationOwnerTests
     {
         TempFolder _temp;

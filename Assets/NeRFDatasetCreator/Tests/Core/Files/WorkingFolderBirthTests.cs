@@ -14,6 +14,9 @@ namespace NerfDatasetCreator.Tests
     /// The real second process (a live <c>sleep</c> owning a still-empty folder) is <c>Tests/Tool.Tests/DataSafetyTests</c>.
     /// </summary>
     [TestFixture]
+    // Sets FileOps.Faults, which every file operation of the process sees: never beside another fixture (dotnet runs
+    // fixtures side by side, Tests/Core.Tests/ParallelFixtures.cs).
+    [Parallelizable(ParallelScope.None)]
     public class WorkingFolderBirthTests
     {
         TempFolder _temp;

@@ -10,6 +10,9 @@ namespace NerfDatasetCreator.Tests
     /// always complete under its name afterwards. Runs in Unity's Test Runner too.
     /// </summary>
     [TestFixture]
+    // Sets FileOps.Faults, which every file operation of the process sees: never beside another fixture (dotnet runs
+    // fixtures side by side, Tests/Core.Tests/ParallelFixtures.cs).
+    [Parallelizable(ParallelScope.None)]
     public class WriteSessionRecoveryTests
     {
         TempFolder _temp;
