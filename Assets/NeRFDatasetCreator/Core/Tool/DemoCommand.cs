@@ -110,7 +110,7 @@ namespace NerfDatasetCreator
                 stderr.WriteLine("demo refused: nothing was written.");
                 return ToolExitCodes.Failure;
             }
-            stdout.WriteLine("demo: wrote " + written + " STAND-IN renders of " + Path.GetFullPath(options.RendersFor) + "'s " + DemoRenders.Split + " split into " + Path.GetFullPath(options.Folder) +
+            stdout.WriteLine("demo: wrote " + written + (written == 1 ? " STAND-IN render of " : " STAND-IN renders of ") + Path.GetFullPath(options.RendersFor) + "'s " + DemoRenders.Split + " split into " + Path.GetFullPath(options.Folder) +
                              " (traced from the demo's scene, deliberately imperfect; not a trained model: " + DemoRenders.NoteFileName + ")");
             stdout.WriteLine("next:");
             stdout.WriteLine("  " + Line("evaluate", options.RendersFor, "--renders", options.Folder));
