@@ -10,7 +10,7 @@ namespace NerfDatasetCreator.Benchmarks
     /// <summary>
     /// <c>nerf-dataset check</c> on a 300-view 800×800 dataset with depth, normals and masks (issue 21), and PNG decoding
     /// of its files, which the check spends most of its time on. The dataset is rendered once (the test scene of
-    /// Tests/Core/TestSupport/AnalyticScene.cs, one ray per pixel through NeRF's ray formula, the plugin's own PNG writer) into
+    /// Core/Demo/AnalyticScene.cs, one ray per pixel through NeRF's ray formula, the plugin's own PNG writer) into
     /// a folder under the temp folder that later runs reuse. run-all decodes the same files with Pillow in the same run.
     /// </summary>
     static class CheckBenchmark

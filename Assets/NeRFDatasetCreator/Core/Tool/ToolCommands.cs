@@ -23,6 +23,7 @@ namespace NerfDatasetCreator
             CleanCommand.Command,
             CheckCommand.Command,
             EvaluateCommand.Command,
+            DemoCommand.Command,
         };
 
         /// <summary>What <c>--help</c> prints: one line per command, then the exit codes.</summary>

@@ -6,7 +6,7 @@ using UnityEngine;
 namespace NerfDatasetCreator.Editor
 {
     /// <summary>
-    /// Window ▸ NeRF Dataset Tools: the headless tool's validate, check, convert, evaluate, merge and clean on any folder (datasets live
+    /// Window ▸ NeRF Dataset Tools: the headless tool's demo, validate, check, convert, evaluate, merge and clean on any folder (datasets live
     /// outside Assets/, where the Project window's context menu does not reach), run in the editor by
     /// <see cref="DatasetToolRunner"/> with the tool's own messages and the equivalent terminal command.
     /// </summary>
@@ -20,6 +20,8 @@ namespace NerfDatasetCreator.Editor
         [SerializeField] string mergedFolder = "";
         [SerializeField] bool moveFiles;
         [SerializeField] string cleanFolder = "";
+        [SerializeField] string demoFolder = "";
+        [SerializeField] DemoPreset demoPreset = DemoPreset.Static;
         [SerializeField] Vector2 scroll;
         [SerializeField] Vector2 outputScroll;
 
@@ -49,10 +51,14 @@ namespace NerfDatasetCreator.Editor
             }
             else if (string.IsNullOrEmpty(window.cleanFolder))
                 window.cleanFolder = Path.Combine(ProjectRoot, SafeOutput.DefaultParentFolder);
+            if (string.IsNullOrEmpty(window.demoFolder)) window.demoFolder = DefaultDemoFolder;
             return window;
         }
 
         static string ProjectRoot => Path.GetDirectoryName(Application.dataPath);
+
+        /// <summary>Where the Demo button writes unless told otherwise: beside the captures, outside Assets (no import).</summary>
+        internal static string DefaultDemoFolder => Path.Combine(ProjectRoot, SafeOutput.DefaultParentFolder, "demo");
 
         void OnEnable() => DatasetToolRunner.Changed += Repaint;
 
@@ -63,6 +69,8 @@ namespace NerfDatasetCreator.Editor
             scroll = EditorGUILayout.BeginScrollView(scroll);
             using (new EditorGUI.DisabledScope(DatasetToolRunner.IsRunning))
             {
+                DrawDemo();
+                EditorGUILayout.Space();
                 EditorGUILayout.LabelField("Check and export a dataset", EditorStyles.boldLabel);
                 datasetFolder = FolderField("Dataset folder", datasetFolder, "A Blender-format dataset: a capture, a merged shard set, or nerf_synthetic.", f => datasetFolder = f);
                 using (new EditorGUI.DisabledScope(string.IsNullOrWhiteSpace(datasetFolder)))
@@ -114,6 +122,28 @@ namespace NerfDatasetCreator.Editor
             EditorGUILayout.Space();
             DrawLastRun(ref outputScroll);
             EditorGUILayout.EndScrollView();
+        }
+
+        /// <summary>
+        /// nerf-dataset demo: a checked dataset of the built-in analytic scene, no capture needed, so that Check, the exports
+        /// and Evaluate can be tried at once; the dataset folder field below is set to it. The preset popup is
+        /// EditorGUILayout.EnumPopup(GUIContent, Enum, params GUILayoutOption[]) (UnityCsReference Editor/Mono/EditorGUILayout.cs
+        /// line 962 in 2022.3.76f1, 973 in 6000.0.78f1), which lists DemoPreset's names.
+        /// </summary>
+        void DrawDemo()
+        {
+            EditorGUILayout.LabelField("Try it: a demo dataset", EditorStyles.boldLabel);
+            demoFolder = FolderField("Demo folder", demoFolder, "A new or empty folder, or an earlier demo (replaced). Never inside Assets.", f => demoFolder = f);
+            EditorGUILayout.BeginHorizontal();
+            demoPreset = (DemoPreset)EditorGUILayout.EnumPopup(new GUIContent("Preset", "static: RGBA, depth, normals, masks; or one feature on top: dynamic, labels, lens, exposure, blur."), demoPreset);
+            using (new EditorGUI.DisabledScope(string.IsNullOrWhiteSpace(demoFolder)))
+                if (GUILayout.Button(new GUIContent("Write demo", "nerf-dataset demo: a small trainable dataset of a built-in scene, written through the capture's own writers and checked (check_report.json)."), GUILayout.Width(110)))
+                {
+                    datasetFolder = demoFolder;
+                    GUI.FocusControl(null); // a focused text field would keep showing its old text
+                    Run("demo", DemoCommand.Arguments(demoFolder, demoPreset));
+                }
+            EditorGUILayout.EndHorizontal();
         }
 
         /// <summary>The "Export for …" buttons, shared with the creator window's result (<see cref="ExportSection"/>).</summary>

@@ -20,7 +20,7 @@ namespace NerfDatasetCreator.Tests
         static MattingTally Tally(string project, string name, AnalyticDataset.Options options)
         {
             MattingTally tally = null;
-            options.Written = pipeline => tally = pipeline.Files.Matting;
+            options.AfterViews = pipeline => tally = pipeline.Files.Matting;
             AnalyticDataset.Write(project, name, options);
             return tally;
         }
@@ -54,7 +54,7 @@ namespace NerfDatasetCreator.Tests
             };
             LensPinholeCover wide = null;
             MattingTally tally = null;
-            options.Written = pipeline =>
+            options.AfterViews = pipeline =>
             {
                 wide = pipeline.WideRender;
                 tally = pipeline.Files.Matting;

@@ -143,33 +143,9 @@ namespace NerfDatasetCreator.Tests
             }
         }
 
-        /// <summary>A UV sphere centred at the origin, faces counter-clockwise seen from outside, unit normals.</summary>
-        public static SurfaceMesh UvSphere(double radius, int rings, int segments, string name = "sphere")
-        {
-            var vertices = new List<Vector3d>();
-            var normals = new List<Vector3d>();
-            for (var r = 0; r <= rings; r++)
-            {
-                var theta = Math.PI * r / rings;
-                for (var s = 0; s < segments; s++)
-                {
-                    var phi = 2 * Math.PI * s / segments;
-                    var n = new Vector3d(Math.Sin(theta) * Math.Cos(phi), Math.Sin(theta) * Math.Sin(phi), Math.Cos(theta));
-                    vertices.Add(n * radius);
-                    normals.Add(n);
-                }
-            }
-            var triangles = new List<int>();
-            for (var r = 0; r < rings; r++)
-                for (var s = 0; s < segments; s++)
-                {
-                    int a = r * segments + s, b = r * segments + (s + 1) % segments, c = (r + 1) * segments + s, d = (r + 1) * segments + (s + 1) % segments;
-                    // (c − a) runs along e_θ, (b − a) along e_φ and e_θ × e_φ = e_r: (a, c, b) and (b, c, d) are counter-clockwise seen from outside.
-                    if (r > 0) { triangles.Add(a); triangles.Add(c); triangles.Add(b); }
-                    if (r < rings - 1) { triangles.Add(b); triangles.Add(c); triangles.Add(d); }
-                }
-            return new SurfaceMesh(vertices, triangles, normals, name: name);
-        }
+        /// <summary>A UV sphere centred at the origin (<see cref="AnalyticSceneMeshes.UvSphere"/>).</summary>
+        public static SurfaceMesh UvSphere(double radius, int rings, int segments, string name = "sphere") =>
+            AnalyticSceneMeshes.UvSphere(radius, rings, segments, name);
 
         /// <summary>
         /// The test view composited on white as 8-bit RGB (what a model trained with a white background renders),

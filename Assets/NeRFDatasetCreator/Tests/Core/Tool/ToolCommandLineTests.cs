@@ -133,13 +133,14 @@ namespace NerfDatasetCreator.Tests
             "  clean <dir> [--dry-run]                                 finish or roll back interrupted runs, remove their leftover folders\n" +
             "  check <dir> [--split S] [--json FILE] [--max-views N]   decode the images and check that alpha, masks, depth, normals, poses and point cloud agree\n" +
             "  evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]  score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html\n" +
+            "  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur] [--views N] [--size PX] [--renders-for <dataset>]  write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
 
         [Test]
         public void TheHelpTextIsBuiltFromTheCommandTableAsReleased()
         {
             Assert.That(ToolCommands.Usage, Is.EqualTo(ReleasedUsage));
-            Assert.That(ToolCommands.All.Select(c => c.Name), Is.EqualTo(new[] { "plan", "validate", "merge", "convert", "clean", "check", "evaluate" }));
+            Assert.That(ToolCommands.All.Select(c => c.Name), Is.EqualTo(new[] { "plan", "validate", "merge", "convert", "clean", "check", "evaluate", "demo" }));
         }
 
         [Test]

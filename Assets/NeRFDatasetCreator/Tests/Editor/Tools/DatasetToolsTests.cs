@@ -79,6 +79,22 @@ namespace NerfDatasetCreator.Editor.Tests
         }
 
         [UnityTest]
+        public IEnumerator DemoInTheEditorWritesTheToolsCheckedDataset()
+        {
+            // The Demo button's command line, made small: the same command the tool runs, through the editor's runner.
+            var folder = Path.Combine(_root, "demo");
+            var button = DemoCommand.Arguments(folder, DemoPreset.Labels);
+            Assert.That(button, Is.EqualTo(new[] { "demo", folder, "--preset", "labels" }));
+            LogAssert.Expect(LogType.Log, new Regex("^NeRF Dataset Creator: nerf-dataset demo .* \\(exit 0\\)"));
+            Assert.That(DatasetToolRunner.Start("demo", new[] { "demo", folder, "--preset", "labels", "--views", "4", "--size", "32" }), Is.True);
+            yield return UntilDone();
+            Assert.That(DatasetToolRunner.Last.Succeeded, Is.True, string.Join("\n", DatasetToolRunner.Last.Lines));
+            Assert.That(DatasetToolRunner.Last.Output, Does.Contain("check: passed"));
+            Assert.That(File.Exists(Path.Combine(folder, DatasetCheck.ReportFileName)), Is.True);
+            Assert.That(File.Exists(Path.Combine(folder, DatasetLayout.LabelsFileName)), Is.True);
+        }
+
+        [UnityTest]
         public IEnumerator TheToolsWindowOpensOnAFolderAndDraws()
         {
             var window = DatasetToolsWindow.Open(_root);

@@ -1,21 +1,23 @@
 using System;
 using System.Collections.Generic;
 using System.Linq;
-using NUnit.Framework;
+using System.Threading.Tasks;
 
-namespace NerfDatasetCreator.Tests
+namespace NerfDatasetCreator
 {
     /// <summary>
     /// Writes a real dataset folder through the capture's own Core path — <see cref="DatasetRun"/>'s plan, transforms
     /// and dataset_config.json, <see cref="ViewPipeline"/>'s per-view stages (lens, blur/sharp, then
     /// <see cref="ViewFileWriter"/>: difference matting, mask, 16-bit depth, normals, ids, exposure, PNG),
     /// <c>points3d.ply</c> with its record — from readbacks ray-traced per sample through NeRF's own ray formula
-    /// (<see cref="NerfRays"/>) from each view's written <c>transform_matrix</c> and <c>camera_angle_x</c>: exactly what a
-    /// correct capture of <see cref="AnalyticScene"/> must give. With a lens, each sample is traced along its distorted
+    /// (<see cref="NerfRay"/>, written here from the formula, not from the check's cameras) from each view's written
+    /// <c>transform_matrix</c> and <c>camera_angle_x</c>: exactly what a correct capture of <see cref="AnalyticScene"/>
+    /// must give. The test suite's datasets and <c>nerf-dataset demo</c> (<see cref="DemoDataset"/>) both come from here;
+    /// the options marked "a planted fault" exist for the check's tests only. With a lens, each sample is traced along its distorted
     /// pixel's ray (the written model's undistortion), or — <see cref="Options.ThroughWideRender"/> — the capture's own
     /// path is taken: a wide pinhole render (<see cref="LensCapture.WideRender"/>) resampled by <see cref="LensResampler"/>.
     /// </summary>
-    static class AnalyticDataset
+    public static class AnalyticDataset
     {
         public sealed class Options
         {
@@ -67,14 +69,26 @@ namespace NerfDatasetCreator.Tests
             /// <summary>Further settings (e.g. exposure), applied last.</summary>
             public Action<DatasetSettings> Configure { get; set; }
 
-            /// <summary>The geometry pack's meshes (Unity world) at a normalised time (<see cref="AnalyticSceneMeshes.At"/>); null: no pack.</summary>
+            /// <summary>The tests' plain layout, or the demo's textured one with a crate (<see cref="AnalyticLook"/>).</summary>
+            public AnalyticLook Look = AnalyticLook.Test;
+
+            /// <summary>Views rendered at once (1: in plan order). The files do not depend on it: each view's are its own.</summary>
+            public int Threads = 1;
+
+            /// <summary>The provenance's time written into dataset_config.json (fixed, so that the files are the same every run).</summary>
+            public DateTime Written = new DateTime(2026, 11, 27, 10, 0, 0, DateTimeKind.Utc);
+
+            /// <summary>The replace policy of the dataset folder (never by default: a test writes into a fresh folder).</summary>
+            public OverwritePolicy Overwrite = OverwritePolicy.Never;
+
+            /// <summary>The geometry pack's meshes (Unity world) at a normalised time (<see cref="AnalyticSceneMeshes.At(double)"/>); null: no pack.</summary>
             public Func<double, IReadOnlyList<SurfaceMesh>> MeshesAt { get; set; }
 
             /// <summary><c>"geometryPack": "everyStep"</c>.</summary>
             public bool GeometryPackEveryStep { get; set; }
 
             /// <summary>Called with the pipeline once every view is written (its statistics: <see cref="ViewFileWriter.Matting"/>).</summary>
-            public Action<ViewPipeline> Written { get; set; }
+            public Action<ViewPipeline> AfterViews { get; set; }
 
             /// <summary>
             /// Called per view with its scene and the ray through each OUTPUT pixel position (<see cref="Rays"/>: NeRF's
@@ -89,15 +103,18 @@ namespace NerfDatasetCreator.Tests
         /// sphere, tag Sphere), Glass (tag Sphere) and Slab (tag Ground), in the order <see cref="AnalyticScene"/>'s ids
         /// follow; listed here in another order, since ids must not depend on it.
         /// </summary>
-        public static SceneObjectInfo[] LabelObjects()
+        public static SceneObjectInfo[] LabelObjects(AnalyticLook look = AnalyticLook.Test)
         {
             var target = new SceneNode("Analytic", 0);
-            return new[]
+            var objects = new List<SceneObjectInfo>
             {
                 new SceneObjectInfo(new[] { target, new SceneNode("Slab", 2, "Ground", "Default") }, 1),
                 new SceneObjectInfo(new[] { target, new SceneNode("Ball", 0, "Sphere", "Default") }, 1),
                 new SceneObjectInfo(new[] { target, new SceneNode("Glass", 1, "Sphere", "TransparentFX") }, 1),
             };
+            // The demo's crate is the fourth box-after-spheres id (AnalyticScene's order), with a class of its own.
+            if (look == AnalyticLook.Demo) objects.Add(new SceneObjectInfo(new[] { target, new SceneNode("Crate", 3, "Crate", "Default") }, 1));
+            return objects.ToArray();
         }
 
         public static readonly Vector3d Centre = new Vector3d(1, 2, 3);
@@ -106,8 +123,15 @@ namespace NerfDatasetCreator.Tests
         /// <summary>Renders the dataset into <paramref name="project"/>/NeRFDatasets/<paramref name="name"/> and returns its folder.</summary>
         public static string Write(string project, string name, Options options)
         {
+            var run = Prepare(project, name, options);
+            return Render(run, options);
+        }
+
+        /// <summary>The settings <see cref="Write"/> renders with (before <see cref="Options.Configure"/>).</summary>
+        static DatasetSettings SettingsOf(string name, Options options)
+        {
             var settings = new DatasetSettings { Name = name, Width = options.Width, Height = options.Height, Supersampling = options.Supersampling, Distance = options.Normalised ? 8 : 4,
-                Lens = options.Lens.Clone(), Loaders = options.Loaders };
+                Lens = options.Lens.Clone(), Loaders = options.Loaders, Overwrite = options.Overwrite };
             if (options.VerticalFovDegrees > 0) settings.Camera.VerticalFovDegrees = options.VerticalFovDegrees;
             if (options.Distance > 0) settings.Distance = options.Distance;
             if (options.Normalised) settings.Normalisation = NormalisationMode.NerfSyntheticScale; // s = 4 / 8
@@ -129,10 +153,23 @@ namespace NerfDatasetCreator.Tests
             if (options.MotionBlur != null) settings.MotionBlur = options.MotionBlur.Clone();
             settings.GeometryPackEveryStep = options.GeometryPackEveryStep;
             options.Configure?.Invoke(settings);
-            var run = DatasetRun.Prepare(settings, new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project, options.Shard, options.DatasetFolder);
-            Assert.That(run.Problems, Is.Empty, "the test dataset's settings");
+            return settings;
+        }
+
+        /// <summary>
+        /// The run <see cref="Write"/> makes, prepared (plan, output folder checked) but not begun: its
+        /// <see cref="DatasetRun.Problems"/> say why the folder cannot be written (<c>nerf-dataset demo</c> prints them).
+        /// </summary>
+        public static DatasetRun Prepare(string project, string name, Options options) =>
+            DatasetRun.Prepare(SettingsOf(name, options), new PlanTarget(Centre, Radius, options.TimeSteps > 1 ? 1 : 0), project, options.Shard, options.DatasetFolder);
+
+        /// <summary>Renders and writes the prepared <paramref name="run"/> (<see cref="Prepare"/>) and returns its folder.</summary>
+        public static string Render(DatasetRun run, Options options)
+        {
+            if (!run.IsValid) throw new InvalidParameterException(run.Problems);
+            var settings = run.FullPlan.Settings;
             var session = run.Begin();
-            var labels = options.Labels ? LabelTable.Build(settings.Labels, LabelObjects()) : null;
+            var labels = options.Labels ? LabelTable.Build(settings.Labels, LabelObjects(options.Look)) : null;
             // The capture's own per-view stages (Core's ViewPipeline). Without ThroughWideRender a lens's distorted rays are
             // traced here, per pixel: an independent oracle of the lens stage, whose frames are then at the output frame.
             var pipeline = options.ThroughWideRender ? new ViewPipeline(run.Plan, session, null, labels)
@@ -143,7 +180,11 @@ namespace NerfDatasetCreator.Tests
             foreach (var view in run.Plan.Views)
             {
                 var time = view.Time?.Normalised ?? 0;
-                if (!scenes.TryGetValue(time, out var scene)) scenes[time] = scene = AnalyticScene.Layout(run.Plan.Normalisation, Centre, time);
+                if (!scenes.ContainsKey(time)) scenes[time] = AnalyticScene.Layout(run.Plan.Normalisation, Centre, time, options.Look);
+            }
+            void WriteView(PlannedView view)
+            {
+                var scene = scenes[view.Time?.Normalised ?? 0];
                 RayOf RaysAt(Matrix4x4d c2w) => wide != null ? Pinhole(c2w, wide) : Rays(c2w, run.Plan.Intrinsics, lens);
                 var rays = RaysAt(view.TransformMatrix);
                 int w = wide != null ? wide.Width : run.Plan.Intrinsics.Width, h = wide != null ? wide.Height : run.Plan.Intrinsics.Height;
@@ -154,10 +195,13 @@ namespace NerfDatasetCreator.Tests
                 options.OutputRays?.Invoke(view, scene, Rays(view.TransformMatrix, run.Plan.Intrinsics, lens));
                 if (options.BlendIds) WriteBlendedIds(session, view, frame);
             }
-            options.Written?.Invoke(pipeline);
-            var cloud = options.PointCloud > 0 ? AnalyticScene.Layout(run.Plan.Normalisation, Centre).Surface(options.PointCloud) : null;
+            // The views are independent (ViewPipeline is thread-safe, one view per thread), so their files are the same in any order.
+            if (options.Threads > 1) Parallel.ForEach(run.Plan.Views, new ParallelOptions { MaxDegreeOfParallelism = options.Threads }, WriteView);
+            else foreach (var view in run.Plan.Views) WriteView(view);
+            options.AfterViews?.Invoke(pipeline);
+            var cloud = options.PointCloud > 0 ? AnalyticScene.Layout(run.Plan.Normalisation, Centre, 0, options.Look).Surface(options.PointCloud) : null;
             var meshesAt = options.MeshesAt;
-            run.Finish(session, new Provenance(new DateTime(2026, 11, 27, 10, 0, 0, DateTimeKind.Utc)), cloud, meshesAt?.Invoke(0), labels,
+            run.Finish(session, new Provenance(options.Written), cloud, meshesAt?.Invoke(0), labels,
                 meshesAt == null || run.Plan.Time == null ? (Func<int, IReadOnlyList<SurfaceMesh>>)null : k => meshesAt(run.Plan.Time.NormalisedOf(k)));
             return run.DatasetFolder;
         }
@@ -185,23 +229,34 @@ namespace NerfDatasetCreator.Tests
         /// <summary>A ray through continuous pixel (i, j) (top-left origin) whose camera-frame z component is −1, so its parameter is z-depth.</summary>
         public delegate void RayOf(double i, double j, out Vector3d origin, out Vector3d direction);
 
-        /// <summary>NeRF's pinhole ray (<see cref="NerfRays"/>) without a lens; with one, the distorted pixel's ray: (i, j) → normalised (x_d, y_d), y down → undistort.</summary>
+        /// <summary>NeRF's pinhole ray (<see cref="NerfRay"/>) without a lens; with one, the distorted pixel's ray: (i, j) → normalised (x_d, y_d), y down → undistort.</summary>
         public static RayOf Rays(Matrix4x4d c2w, CameraIntrinsics intrinsics, LensDistortion lens)
         {
             var rows = c2w.ToRows();
             if (lens == null)
                 return (double i, double j, out Vector3d o, out Vector3d d) =>
                 {
-                    NerfRays.Ray(rows, intrinsics.CameraAngleX, intrinsics.Width, intrinsics.Height, i, j, out var origin, out var direction);
-                    o = new Vector3d(origin[0], origin[1], origin[2]);
-                    d = new Vector3d(direction[0], direction[1], direction[2]);
+                    NerfRay(rows, intrinsics.CameraAngleX, intrinsics.Width, intrinsics.Height, i, j, out o, out d);
                 };
             return (double i, double j, out Vector3d o, out Vector3d d) =>
             {
-                Assert.That(lens.Undistort((i - intrinsics.Cx) / intrinsics.FlX, (j - intrinsics.Cy) / intrinsics.FlY, out var x, out var y), Is.True, "the lens images every pixel");
+                if (!lens.Undistort((i - intrinsics.Cx) / intrinsics.FlX, (j - intrinsics.Cy) / intrinsics.FlY, out var x, out var y))
+                    throw new InvalidOperationException("The lens does not image pixel (" + i + ", " + j + "): choose a milder distortion.");
                 o = new Vector3d(rows[0][3], rows[1][3], rows[2][3]);
                 d = Camera(rows, x, -y, -1);
             };
+        }
+
+        /// <summary>
+        /// NeRF's own ray (bmild/nerf run_nerf_helpers.get_rays), written from the formula: for pixel (i, j), column i and
+        /// row j from the top, the camera-space direction is ((i − W/2)/f, −(j − H/2)/f, −1) rotated by the c2w matrix's
+        /// 3×3 part, f = 0.5·W / tan(0.5·camera_angle_x); the origin is its translation.
+        /// </summary>
+        static void NerfRay(double[][] c2w, double cameraAngleX, int width, int height, double i, double j, out Vector3d origin, out Vector3d direction)
+        {
+            var focal = 0.5 * width / Math.Tan(0.5 * cameraAngleX);
+            origin = new Vector3d(c2w[0][3], c2w[1][3], c2w[2][3]);
+            direction = Camera(c2w, (i - width * 0.5) / focal, -(j - height * 0.5) / focal, -1);
         }
 
         /// <summary>The wide pinhole render's ray: focal F, principal point (Cx, Cy) of <paramref name="wide"/>.</summary>
@@ -219,7 +274,7 @@ namespace NerfDatasetCreator.Tests
             rows[0][0] * x + rows[0][1] * y + rows[0][2] * z, rows[1][0] * x + rows[1][1] * y + rows[1][2] * z, rows[2][0] * x + rows[2][1] * y + rows[2][2] * z);
 
         /// <summary>The readbacks of one view of <paramref name="width"/> × <paramref name="height"/> pixels at supersampling <paramref name="k"/>: colour over black and white (halves), mask, eye z-depth (metric) and output-world normals, rows bottom first.</summary>
-        internal static RawFrame Render(AnalyticScene scene, RayOf rays, int width, int height, Options options, double scale, int k)
+        public static RawFrame Render(AnalyticScene scene, RayOf rays, int width, int height, Options options, double scale, int k)
         {
             int w = width * k, h = height * k;
             var frame = new RawFrame(w, h, k)
@@ -229,6 +284,10 @@ namespace NerfDatasetCreator.Tests
                 InstanceIds = options.Labels ? new ushort[w * h] : null,
             };
             var light = new Vector3d(0.3, -0.5, 0.8).Normalized();
+            // The colour arrays of each compositing depth, reused from sample to sample (no garbage per ray).
+            var scratch = new double[2 * (CompositeDepth + 1)][];
+            for (var n = 0; n < scratch.Length; n++) scratch[n] = new double[3];
+            double[] black = scratch[0], white = scratch[1];
             for (var ys = 0; ys < h; ys++)
                 for (var xs = 0; xs < w; xs++)
                 {
@@ -236,8 +295,12 @@ namespace NerfDatasetCreator.Tests
                     double i = (xs + 0.5) / k, j = (ys + 0.5) / k;
                     rays(i, j, out var o, out var d);
                     var p = ((h - 1 - ys) * w + xs); // readbacks are bottom row first
-                    double[] black = { 0, 0, 0 }, white = { 1, 1, 1 };
-                    Composite(scene, o, d, 0, light, black, white, out var first, out var normal, 3);
+                    for (var c = 0; c < 3; c++)
+                    {
+                        black[c] = 0;
+                        white[c] = 1;
+                    }
+                    Composite(scene, o, d, 0, light, black, white, out var first, out var normal, CompositeDepth, scratch);
                     for (var c = 0; c < 3; c++)
                     {
                         frame.ColorOverBlack[p * 4 + c] = Half(black[c]);
@@ -256,12 +319,15 @@ namespace NerfDatasetCreator.Tests
             return frame;
         }
 
+        /// <summary>How many surfaces along a ray are blended at most (the glass sphere's two and what lies behind).</summary>
+        const int CompositeDepth = 3;
+
         /// <summary>
         /// Blends the surfaces along the ray front to back over black and over white, as the GPU does (out = F + T·B):
         /// Lambert-shaded colour, glass at its alpha. Returns the first surface's t and normal (depth and normals are of it).
         /// </summary>
         static void Composite(AnalyticScene scene, Vector3d o, Vector3d d, double after, Vector3d light, double[] black, double[] white,
-            out double first, out Vector3d firstNormal, int depthLeft)
+            out double first, out Vector3d firstNormal, int depthLeft, double[][] scratch)
         {
             first = double.PositiveInfinity;
             firstNormal = Vector3d.Zero;
@@ -269,8 +335,14 @@ namespace NerfDatasetCreator.Tests
             first = t;
             firstNormal = normal;
             var shade = 0.35 + 0.65 * Math.Max(0, Vector3d.Dot(normal, light));
-            double[] behindBlack = { 0, 0, 0 }, behindWhite = { 1, 1, 1 };
-            if (alpha < 1) Composite(scene, o, d, t + 1e-9, light, behindBlack, behindWhite, out _, out _, depthLeft - 1);
+            // This depth's arrays for what lies behind (depth CompositeDepth uses scratch[0, 1] for the sample itself).
+            double[] behindBlack = scratch[2 * (CompositeDepth - depthLeft + 1)], behindWhite = scratch[2 * (CompositeDepth - depthLeft + 1) + 1];
+            for (var c = 0; c < 3; c++)
+            {
+                behindBlack[c] = 0;
+                behindWhite[c] = 1;
+            }
+            if (alpha < 1) Composite(scene, o, d, t + 1e-9, light, behindBlack, behindWhite, out _, out _, depthLeft - 1, scratch);
             for (var c = 0; c < 3; c++)
             {
                 var surface = colour[c] * shade;

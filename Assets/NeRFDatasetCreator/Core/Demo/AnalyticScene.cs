@@ -1,19 +1,20 @@
 using System;
 using System.Collections.Generic;
 
-namespace NerfDatasetCreator.Tests
+namespace NerfDatasetCreator
 {
     /// <summary>
-    /// The test suite's one analytic scene, and its one ray–sphere solver (<see cref="HitSphere"/>): spheres (one may be
-    /// glass, partly transparent) and axis-aligned boxes, ray-traced exactly. The capture's test layout
-    /// (<see cref="Layout"/>) is made in Unity's world and converted with the plan's own <see cref="SceneNormalisation"/>,
-    /// so a dataset rendered from it (<see cref="AnalyticDataset"/>, through Core's ViewPipeline) is what a capture of that
-    /// layout must give; its meshes are <see cref="AnalyticSceneMeshes"/>. The evaluation's unit sphere
-    /// (<see cref="AnalyticSphereDataset"/>) is a scene of this class too. The one other scene the tests keep is
-    /// <see cref="SphereScene"/>: the independent oracle of the COLMAP track tests (it writes its dataset by hand, not
-    /// through Core's writers, with depths and masks of its own rounding), which casts its rays through this scene.
+    /// The one analytic scene of the test suite and of <c>nerf-dataset demo</c> (Documentation~/maintainers/demo.md),
+    /// and its one ray–sphere solver (<see cref="HitSphere"/>): spheres (one may be glass, partly transparent) and
+    /// axis-aligned boxes, ray-traced exactly. The layout (<see cref="Layout"/>) is made in Unity's world and converted
+    /// with the plan's own <see cref="SceneNormalisation"/>, so a dataset rendered from it (<see cref="AnalyticDataset"/>,
+    /// through Core's ViewPipeline) is what a capture of that layout must give; its meshes are
+    /// <see cref="AnalyticSceneMeshes"/>. The tests' layout is untextured (their pinned bytes were made so); the demo's
+    /// (<see cref="AnalyticLook.Demo"/>) adds procedural texture, which a trainer needs to place its surfaces, and a
+    /// fourth object. The test suite keeps one other scene, <c>Tests/Core/TestSupport/SphereScene</c>: the independent
+    /// oracle of the COLMAP track tests, which casts its rays through this scene.
     /// </summary>
-    sealed class AnalyticScene
+    public sealed class AnalyticScene
     {
         public sealed class Sphere
         {
@@ -21,39 +22,55 @@ namespace NerfDatasetCreator.Tests
             public double Radius;
             public double[] Colour;
             public double Alpha = 1;
+
+            /// <summary>Null: one colour. Else the second colour of a latitude–longitude checker (<see cref="Bands"/> × 2·Bands cells).</summary>
+            public double[] Colour2;
+            public int Bands = 6;
         }
 
         public sealed class Box
         {
             public Vector3d Min, Max;
             public double[] Colour;
+
+            /// <summary>Null: one colour. Else the second colour of a 3-D checker of cubes of side <see cref="Cell"/> from <see cref="Min"/>.</summary>
+            public double[] Colour2;
+            public double Cell = 1;
         }
 
         public readonly List<Sphere> Spheres = new List<Sphere>();
         public readonly List<Box> Boxes = new List<Box>();
 
         /// <summary>
-        /// The test layout in Unity's world around <paramref name="centre"/>: an opaque sphere up-left, a glass sphere to the
+        /// The layout in Unity's world around <paramref name="centre"/>: an opaque sphere up-left, a glass sphere to the
         /// right, a wide slab underneath (flat faces, and no up-down symmetry, so a flip shows); at <paramref name="time"/> in
-        /// [0, 1] the opaque sphere moves 0.4 along Unity +X.
+        /// [0, 1] the opaque sphere moves 0.4 along Unity +X. <see cref="AnalyticLook.Demo"/> textures every object and puts
+        /// a crate on the slab, in front of the glass sphere (no left–right or front–back symmetry either).
         /// </summary>
-        public static AnalyticScene Layout(SceneNormalisation normalisation, Vector3d centre, double time = 0)
+        public static AnalyticScene Layout(SceneNormalisation normalisation, Vector3d centre, double time = 0, AnalyticLook look = AnalyticLook.Test)
         {
             var s = normalisation.Scale;
+            var demo = look == AnalyticLook.Demo;
             Vector3d Out(Vector3d offset) => normalisation.ApplyToUnityPoint(centre + offset);
             var scene = new AnalyticScene();
-            scene.Spheres.Add(new Sphere { Centre = Out(OpaqueOffset(time)), Radius = OpaqueRadius * s, Colour = new[] { 0.8, 0.25, 0.1 } });
-            scene.Spheres.Add(new Sphere { Centre = Out(GlassOffset), Radius = GlassRadius * s, Colour = new[] { 0.2, 0.4, 0.9 }, Alpha = 0.5 });
-            var a = Out(SlabLow);
-            var b = Out(SlabHigh);
-            scene.Boxes.Add(new Box
-            {
-                Min = new Vector3d(Math.Min(a.X, b.X), Math.Min(a.Y, b.Y), Math.Min(a.Z, b.Z)),
-                Max = new Vector3d(Math.Max(a.X, b.X), Math.Max(a.Y, b.Y), Math.Max(a.Z, b.Z)),
-                Colour = new[] { 0.3, 0.7, 0.3 },
-            });
+            scene.Spheres.Add(new Sphere { Centre = Out(OpaqueOffset(time)), Radius = OpaqueRadius * s, Colour = new[] { 0.8, 0.25, 0.1 },
+                Colour2 = demo ? new[] { 0.95, 0.8, 0.2 } : null, Bands = 6 });
+            scene.Spheres.Add(new Sphere { Centre = Out(GlassOffset), Radius = GlassRadius * s, Colour = new[] { 0.2, 0.4, 0.9 }, Alpha = 0.5,
+                Colour2 = demo ? new[] { 0.85, 0.9, 1.0 } : null, Bands = 4 });
+            scene.Boxes.Add(BoxBetween(Out(SlabLow), Out(SlabHigh), new[] { 0.3, 0.7, 0.3 }, demo ? new[] { 0.9, 0.9, 0.8 } : null, 0.2 * s));
+            if (demo) scene.Boxes.Add(BoxBetween(Out(CrateLow), Out(CrateHigh), new[] { 0.55, 0.35, 0.15 }, new[] { 0.15, 0.1, 0.35 }, 0.1 * s));
             return scene;
         }
+
+        /// <summary>The axis-aligned box with corners <paramref name="a"/> and <paramref name="b"/> (output world: the normalisation may swap and flip axes).</summary>
+        static Box BoxBetween(Vector3d a, Vector3d b, double[] colour, double[] colour2, double cell) => new Box
+        {
+            Min = new Vector3d(Math.Min(a.X, b.X), Math.Min(a.Y, b.Y), Math.Min(a.Z, b.Z)),
+            Max = new Vector3d(Math.Max(a.X, b.X), Math.Max(a.Y, b.Y), Math.Max(a.Z, b.Z)),
+            Colour = colour,
+            Colour2 = colour2,
+            Cell = cell,
+        };
 
         /// <summary>The layout's opaque sphere: its centre's offset from the layout centre at normalised <paramref name="time"/> (Unity units), and its radius.</summary>
         public static Vector3d OpaqueOffset(double time) => new Vector3d(-0.45 + 0.4 * time, 0.35, -0.1);
@@ -67,6 +84,9 @@ namespace NerfDatasetCreator.Tests
 
         /// <summary>The layout's slab: the offsets of two opposite corners.</summary>
         public static readonly Vector3d SlabLow = new Vector3d(-0.9, -0.75, -0.6), SlabHigh = new Vector3d(0.9, -0.35, 0.5);
+
+        /// <summary>The demo's crate on the slab (<see cref="AnalyticLook.Demo"/>): the offsets of two opposite corners; it sits on the slab's top face.</summary>
+        public static readonly Vector3d CrateLow = new Vector3d(0.05, -0.35, -0.5), CrateHigh = new Vector3d(0.45, 0.05, -0.15);
 
         /// <summary>A scene of one opaque sphere of <paramref name="radius"/> at <paramref name="centre"/> (white: the caller colours by normal).</summary>
         public static AnalyticScene OneSphere(Vector3d centre, double radius)
@@ -118,7 +138,7 @@ namespace NerfDatasetCreator.Tests
                 if (!(hit < t)) continue;
                 t = hit;
                 normal = (o + d * hit - s.Centre).Normalized();
-                colour = s.Colour;
+                colour = ColourOf(s, normal);
                 alpha = s.Alpha;
                 objectId = index + 1;
             }
@@ -131,7 +151,7 @@ namespace NerfDatasetCreator.Tests
                 t = hit;
                 normal = axis == 0 ? new Vector3d(sign, 0, 0) : axis == 1 ? new Vector3d(0, sign, 0) : new Vector3d(0, 0, sign);
                 if (hit == far) normal = -normal; // inside the box (never for the test cameras)
-                colour = box.Colour;
+                colour = ColourOf(box, o + d * hit);
                 alpha = 1;
                 objectId = Spheres.Count + index + 1;
             }
@@ -140,27 +160,57 @@ namespace NerfDatasetCreator.Tests
             return colour != null;
         }
 
+        /// <summary>
+        /// The sphere's colour at the point in direction <paramref name="outward"/> from its centre: a checker of latitude
+        /// bands and longitude sectors (it moves with the sphere, so a dynamic scene's texture stays on its object).
+        /// </summary>
+        public static double[] ColourOf(Sphere sphere, Vector3d outward)
+        {
+            if (sphere.Colour2 == null) return sphere.Colour;
+            // Output world: Blender's axes, +Z up.
+            var latitude = Math.Acos(Math.Max(-1, Math.Min(1, outward.Z)));
+            var longitude = Math.Atan2(outward.Y, outward.X) + Math.PI;
+            var band = (int)Math.Floor(latitude / Math.PI * sphere.Bands);
+            var sector = (int)Math.Floor(longitude / (2 * Math.PI) * 2 * sphere.Bands);
+            return ((band + sector) & 1) == 0 ? sphere.Colour : sphere.Colour2;
+        }
+
+        /// <summary>The box's colour at <paramref name="point"/> on its surface: a 3-D checker of cubes from its minimum corner.</summary>
+        public static double[] ColourOf(Box box, Vector3d point)
+        {
+            if (box.Colour2 == null) return box.Colour;
+            var p = point - box.Min;
+            // A point on a face lies on a cell boundary along that face's axis: a tiny inward nudge keeps the face one colour per cell.
+            var c = box.Cell;
+            long Cell(double v, double size) => (long)Math.Floor(Math.Min(Math.Max(v, 1e-9), size - 1e-9) / c);
+            var e = box.Max - box.Min;
+            return ((Cell(p.X, e.X) + Cell(p.Y, e.Y) + Cell(p.Z, e.Z)) & 1) == 0 ? box.Colour : box.Colour2;
+        }
+
+        /// <summary>The ray's entry (near) and exit (far) parameters through the box, the axis and outward sign of the entry face.</summary>
         static bool Slab(Vector3d o, Vector3d d, Box box, out double near, out double far, out int axis, out double sign)
         {
             near = double.NegativeInfinity;
             far = double.PositiveInfinity;
             axis = 0;
             sign = 1;
-            double[] oo = { o.X, o.Y, o.Z }, dd = { d.X, d.Y, d.Z }, lo = { box.Min.X, box.Min.Y, box.Min.Z }, hi = { box.Max.X, box.Max.Y, box.Max.Z };
-            for (var k = 0; k < 3; k++)
-            {
-                if (Math.Abs(dd[k]) < 1e-15)
-                {
-                    if (oo[k] < lo[k] || oo[k] > hi[k]) return false;
-                    continue;
-                }
-                double t1 = (lo[k] - oo[k]) / dd[k], t2 = (hi[k] - oo[k]) / dd[k];
-                var s = -1.0;
-                if (t1 > t2) { var x = t1; t1 = t2; t2 = x; s = 1; }
-                if (t1 > near) { near = t1; axis = k; sign = s; }
-                if (t2 < far) far = t2;
-            }
-            return near <= far && far > 0;
+            // Per axis, without arrays: this runs for every box on every ray of a dataset.
+            return SlabAxis(o.X, d.X, box.Min.X, box.Max.X, 0, ref near, ref far, ref axis, ref sign)
+                   && SlabAxis(o.Y, d.Y, box.Min.Y, box.Max.Y, 1, ref near, ref far, ref axis, ref sign)
+                   && SlabAxis(o.Z, d.Z, box.Min.Z, box.Max.Z, 2, ref near, ref far, ref axis, ref sign)
+                   && near <= far && far > 0;
+        }
+
+        /// <summary>One axis of <see cref="Slab"/>: false when the ray runs parallel to it outside the box.</summary>
+        static bool SlabAxis(double o, double d, double lo, double hi, int k, ref double near, ref double far, ref int axis, ref double sign)
+        {
+            if (Math.Abs(d) < 1e-15) return !(o < lo || o > hi);
+            double t1 = (lo - o) / d, t2 = (hi - o) / d;
+            var s = -1.0;
+            if (t1 > t2) { var x = t1; t1 = t2; t2 = x; s = 1; }
+            if (t1 > near) { near = t1; axis = k; sign = s; }
+            if (t2 < far) far = t2;
+            return true;
         }
 
         /// <summary>Points spread over every surface (by area, deterministic), as <c>points3d.ply</c> holds them.</summary>
@@ -189,7 +239,8 @@ namespace NerfDatasetCreator.Tests
                     var phi = 2 * Math.PI * random.NextDouble();
                     var r = Math.Sqrt(1 - z * z);
                     var dir = new Vector3d(r * Math.Cos(phi), r * Math.Sin(phi), z);
-                    points.Add(new CloudPoint(s.Centre + dir * s.Radius, dir, 200, 100, 50));
+                    if (s.Colour2 == null) points.Add(new CloudPoint(s.Centre + dir * s.Radius, dir, 200, 100, 50));
+                    else points.Add(Coloured(s.Centre + dir * s.Radius, dir, ColourOf(s, dir)));
                 }
                 else
                 {
@@ -202,10 +253,23 @@ namespace NerfDatasetCreator.Tests
                     p[axis] = face % 2 == 0 ? lo[axis] : hi[axis];
                     var normal = new double[3];
                     normal[axis] = face % 2 == 0 ? -1 : 1;
-                    points.Add(new CloudPoint(new Vector3d(p[0], p[1], p[2]), new Vector3d(normal[0], normal[1], normal[2]), 60, 180, 60));
+                    var point = new Vector3d(p[0], p[1], p[2]);
+                    if (b.Colour2 == null) points.Add(new CloudPoint(point, new Vector3d(normal[0], normal[1], normal[2]), 60, 180, 60));
+                    else points.Add(Coloured(point, new Vector3d(normal[0], normal[1], normal[2]), ColourOf(b, point)));
                 }
             }
             return points;
         }
+
+        /// <summary>A textured scene's point: its albedo, sRGB-encoded (what 3DGS starts its Gaussians' colours from).</summary>
+        static CloudPoint Coloured(Vector3d point, Vector3d normal, double[] colour) =>
+            new CloudPoint(point, normal, Srgb.EncodeByteExact(colour[0]), Srgb.EncodeByteExact(colour[1]), Srgb.EncodeByteExact(colour[2]));
+    }
+
+    /// <summary>How <see cref="AnalyticScene.Layout"/> looks: the tests' plain layout, or the demo's textured one with a crate.</summary>
+    public enum AnalyticLook
+    {
+        Test,
+        Demo,
     }
 }

@@ -1,0 +1,36 @@
+using System;
+using System.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// What <c>nerf-dataset demo --preset</c> adds to the plain demo scene: nothing (a static object capture with RGBA,
+    /// depth, normals and masks), or one feature of the capture — moving content, labels, a lens, exposure, motion blur.
+    /// </summary>
+    public enum DemoPreset
+    {
+        Static,
+        Dynamic,
+        Labels,
+        Lens,
+        Exposure,
+        Blur,
+    }
+
+    /// <summary>The presets' command-line names, in <see cref="DemoPreset"/> order.</summary>
+    public static class DemoPresets
+    {
+        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur" };
+
+        public static string Name(DemoPreset preset) => Names[(int)preset];
+
+        /// <summary>The preset named <paramref name="value"/> (any case), or null with a problem naming the choices.</summary>
+        public static DemoPreset? Parse(string value, out ValidationProblem problem)
+        {
+            var index = Array.FindIndex(Names, n => string.Equals(n, value?.Trim(), StringComparison.OrdinalIgnoreCase));
+            problem = index >= 0 ? null
+                : new ValidationProblem("--preset", value ?? "", "is not a demo preset.", "Use one of: " + string.Join(", ", Names.Select(n => n)) + "." + SpellingSuggestion.Sentence(value, Names));
+            return index >= 0 ? (DemoPreset?)index : null;
+        }
+    }
+}

@@ -1,0 +1,185 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// <c>nerf-dataset demo &lt;dir&gt; [--preset P] [--views N] [--size PX]</c>: a small, trainable, checked dataset of the
+    /// built-in analytic scene, written through the capture's own writers (<see cref="DemoDataset"/>), then the next
+    /// commands (check, convert, train, evaluate). <c>demo &lt;dir&gt; --renders-for &lt;demo&gt;</c>: stand-in renders of a
+    /// demo's test split for <c>evaluate</c> (<see cref="DemoRenders"/>). Exit 1 when the folder is refused (nothing is
+    /// written) or the dataset fails its check.
+    /// </summary>
+    public static class DemoCommand
+    {
+        public static readonly ToolCommand Command = ToolCommand.Of("demo",
+            "demo <dir> [--preset static|dynamic|labels|lens|exposure|blur] [--views N] [--size PX] [--renders-for <dataset>]",
+            "write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)",
+            Parse, Run);
+
+        public sealed class Options
+        {
+            /// <summary>Where the dataset (or, with <see cref="RendersFor"/>, the renders) goes: a new or empty folder, or an earlier demo.</summary>
+            public string Folder { get; set; }
+
+            public DemoPreset Preset { get; set; } = DemoPreset.Static;
+
+            /// <summary><c>--views N</c>: train views (val a tenth, test a fifth; a dynamic capture spreads them over its time steps); null for the preset's default.</summary>
+            public int? Views { get; set; }
+
+            /// <summary><c>--size PX</c>: the images' width and height.</summary>
+            public int Size { get; set; } = DemoDataset.DefaultSize;
+
+            /// <summary><c>--renders-for &lt;dataset&gt;</c>: write stand-in renders of this demo dataset's test split instead of a dataset.</summary>
+            public string RendersFor { get; set; }
+        }
+
+        static Options Parse(ToolArguments arguments)
+        {
+            arguments.RefuseUnknownOptions("preset", "views", "size", "renders-for");
+            var options = new Options { Folder = arguments.OnePositional("demo needs exactly one folder to write into, e.g. demo demo/lego.") };
+            if (arguments.TryGet("preset", out var preset))
+            {
+                var parsed = DemoPresets.Parse(preset, out var problem);
+                if (problem != null) arguments.Error(problem.ToString());
+                else options.Preset = parsed.Value;
+            }
+            var views = arguments.WholeNumber("views", DemoDataset.MinViews, v => "--views " + v + ": give the train views, a whole number from " + DemoDataset.MinViews + " to " + DemoDataset.MaxViews + ".");
+            if (views > DemoDataset.MaxViews) arguments.Error("--views " + views + ": give the train views, a whole number from " + DemoDataset.MinViews + " to " + DemoDataset.MaxViews + ".");
+            else options.Views = views;
+            var size = arguments.WholeNumber("size", DemoDataset.MinSize, s => "--size " + s + ": give the image side in pixels, a whole number from " + DemoDataset.MinSize + " to " + DemoDataset.MaxSize + ".");
+            if (size > DemoDataset.MaxSize) arguments.Error("--size " + size + ": give the image side in pixels, a whole number from " + DemoDataset.MinSize + " to " + DemoDataset.MaxSize + ".");
+            else if (size != null) options.Size = size.Value;
+            if (options.Preset == DemoPreset.Lens && options.Size < DemoDataset.MinLensSize)
+                arguments.Error("--size " + options.Size + ": the lens preset needs " + DemoDataset.MinLensSize + " px or more (its depth and mask are resampled from a wide render, and smaller their edges disagree by more than check allows).");
+            options.RendersFor = arguments.OptionalPath("renders-for", "--renders-for is empty; name the demo dataset whose test split to render, e.g. --renders-for demo/lego.");
+            if (options.RendersFor != null && (arguments.Has("preset") || arguments.Has("views") || arguments.Has("size")))
+                arguments.Error("--renders-for renders the views the demo dataset already has: leave out --preset, --views and --size.");
+            return options;
+        }
+
+        /// <summary>The command line of the Dataset Tools' Demo button: <c>demo &lt;folder&gt; --preset &lt;preset&gt;</c>.</summary>
+        public static string[] Arguments(string folder, DemoPreset preset) =>
+            new[] { Command.Name, ToolArguments.Required(folder), "--preset", DemoPresets.Name(preset) };
+
+        public static int Run(Options options, TextWriter stdout, TextWriter stderr) =>
+            options.RendersFor != null ? RunRenders(options, stdout, stderr) : RunDataset(options, stdout, stderr);
+
+        static int RunDataset(Options options, TextWriter stdout, TextWriter stderr)
+        {
+            DemoResult result;
+            try
+            {
+                result = DemoDataset.Write(options.Folder, options.Preset, options.Views ?? DemoDataset.DefaultViewsFor(options.Preset), options.Size, line => stderr.WriteLine("… " + line));
+            }
+            catch (InvalidParameterException e)
+            {
+                foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
+                stderr.WriteLine("demo refused: nothing was written.");
+                return ToolExitCodes.Failure;
+            }
+            var check = result.Check;
+            stdout.WriteLine("demo " + DemoPresets.Name(result.Preset) + ": wrote " + result.Views + " views of " + options.Size + " × " + options.Size + " px into " + result.Folder +
+                             " in " + result.RenderSeconds.ToString("0.0", CultureInfo.InvariantCulture) + " s (" + Contents(result.Preset) + ")");
+            stdout.WriteLine("check: " + (check.Failed ? "FAILED, " + check.Problems.Count + (check.Problems.Count == 1 ? " problem" : " problems") : "passed") + ", " + check.ViewsChecked + " views in " +
+                             check.TotalSeconds.ToString("0.0", CultureInfo.InvariantCulture) + " s; the report is " + Path.Combine(result.Folder, DatasetCheck.ReportFileName));
+            foreach (var problem in check.Problems.Take(10)) stdout.WriteLine("problem: " + problem);
+            if (check.Failed)
+            {
+                stderr.WriteLine("failed: the demo dataset did not pass its own check; please report this with " + DatasetCheck.ReportFileName + ".");
+                return ToolExitCodes.Failure;
+            }
+            stdout.WriteLine("next:");
+            foreach (var line in NextSteps(options.Folder, result.Preset, DatasetConfig.Read(result.Folder).Config?.TargetReach())) stdout.WriteLine("  " + line);
+            return ToolExitCodes.Success;
+        }
+
+        static int RunRenders(Options options, TextWriter stdout, TextWriter stderr)
+        {
+            int written;
+            try
+            {
+                written = DemoRenders.Write(options.RendersFor, options.Folder);
+            }
+            catch (InvalidParameterException e)
+            {
+                foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
+                stderr.WriteLine("demo refused: nothing was written.");
+                return ToolExitCodes.Failure;
+            }
+            stdout.WriteLine("demo: wrote " + written + (written == 1 ? " STAND-IN render of " : " STAND-IN renders of ") + Path.GetFullPath(options.RendersFor) + "'s " + DemoRenders.Split + " split into " + Path.GetFullPath(options.Folder) +
+                             " (traced from the demo's scene, deliberately imperfect; not a trained model: " + DemoRenders.NoteFileName + ")");
+            stdout.WriteLine("next:");
+            stdout.WriteLine("  " + Line("evaluate", options.RendersFor, "--renders", options.Folder));
+            return ToolExitCodes.Success;
+        }
+
+        /// <summary>What the preset's dataset holds besides RGBA, depth, normals and masks.</summary>
+        static string Contents(DemoPreset preset)
+        {
+            var extra = preset == DemoPreset.Dynamic ? ", " + DemoDataset.TimeSteps + " time steps with a moving sphere"
+                : preset == DemoPreset.Labels ? ", instance and semantic maps with labels.json"
+                : preset == DemoPreset.Lens ? ", an OpenCV lens (k1 −0.12, k2 0.02) at a 55° field of view"
+                : preset == DemoPreset.Exposure ? ", random exposure with the clean images beside"
+                : preset == DemoPreset.Blur ? ", camera-shake motion blur with the sharp images beside"
+                : "";
+            return "RGBA, depth, normals, masks" + extra + ", points3d.ply, the geometry pack";
+        }
+
+        /// <summary>The exports that fit the preset's dataset: the static ones, Gaussian Grouping with labels, Dynamic 3D Gaussians for the dynamic one.</summary>
+        public static IReadOnlyList<ExportTarget> Targets(DemoPreset preset)
+        {
+            if (preset == DemoPreset.Dynamic) return new[] { ExportTarget.Dynamic3dgs };
+            var targets = new List<ExportTarget> { ExportTarget.Nerfstudio, ExportTarget.Colmap, ExportTarget.Ngp };
+            if (preset == DemoPreset.Labels) targets.Add(ExportTarget.GaussianGrouping);
+            return targets;
+        }
+
+        /// <summary>
+        /// The commands that follow a demo written into <paramref name="folder"/> (as the user typed it): check, one
+        /// convert per export that fits, the trainers (comments: they run on a GPU machine, and each convert prints its
+        /// exact line), stand-in renders and evaluate.
+        /// </summary>
+        /// <param name="targetReach">How far the target reaches (dataset_config.json), for nerfstudio's scale flags.</param>
+        public static IReadOnlyList<string> NextSteps(string folder, DemoPreset preset, double? targetReach)
+        {
+            var lines = new List<string> { Line("check", folder) };
+            var trains = new List<string>();
+            foreach (var target in Targets(preset))
+            {
+                var name = ExportTargets.Name(target);
+                var output = folder.TrimEnd('/', '\\') + "-" + name;
+                lines.Add(Line("convert", folder, "--to", name, "--out", output));
+                trains.Add("# " + TrainLine(target, output, targetReach));
+            }
+            lines.AddRange(trains);
+            if (preset != DemoPreset.Dynamic)
+            {
+                var renders = folder.TrimEnd('/', '\\') + "-renders";
+                lines.Add(Line("demo", renders, "--renders-for", folder) + "   # stand-in renders: evaluate without a model");
+                lines.Add(Line("evaluate", folder, "--renders", renders) + "   # writes " + renders + "/evaluation-test/" + ReportHtml.FileName);
+            }
+            return lines;
+        }
+
+        /// <summary>One trainer's command for an export at <paramref name="output"/> (Documentation~/exports.md); convert prints the exact one.</summary>
+        static string TrainLine(ExportTarget target, string output, double? targetReach)
+        {
+            switch (target)
+            {
+                case ExportTarget.Nerfstudio: return NerfstudioTraining.Commands(output + "/" + NerfstudioWriter.FileName, targetReach)[0] + "   (nerfstudio)";
+                case ExportTarget.Colmap: return "python train.py -s " + Quote(output) + " --eval   (3D Gaussian Splatting)";
+                case ExportTarget.Ngp: return "./instant-ngp " + Quote(output + "/" + NgpWriter.FileName) + "   (instant-ngp, from its folder)";
+                case ExportTarget.GaussianGrouping: return "python train.py -s " + Quote(output) + " -r 1 --config_file " + Quote(output + "/" + GaussianGrouping.ConfigFileName) + "   (Gaussian Grouping)";
+                default: return "python train.py   (Dynamic 3D Gaussians: copy " + Quote(output) + " to its data/ folder first, as convert says)";
+            }
+        }
+
+        static string Line(string command, params string[] arguments) => "nerf-dataset " + command + " " + string.Join(" ", arguments.Select(Quote));
+
+        static string Quote(string path) => path.IndexOf(' ') >= 0 ? "\"" + path + "\"" : path;
+    }
+}
