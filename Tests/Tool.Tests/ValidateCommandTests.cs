@@ -79,8 +79,9 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(lines[6], Does.StartWith("  check <dir> [--split S] [--json FILE] [--max-views N]"));
             Assert.That(lines[7], Does.StartWith("  evaluate <dir> --renders <dir> [--split test]"));
             Assert.That(lines[8], Does.StartWith("exit codes:"));
-            Assert.That(lines, Has.Length.EqualTo(9));
-            Assert.That(ToolRun.Of("merge", "--help").Out, Is.EqualTo(run.Out), "--help after a command");
+            Assert.That(lines[9], Is.EqualTo("nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version."));
+            Assert.That(lines, Has.Length.EqualTo(10));
+            Assert.That(ToolRun.Of("help").Out, Is.EqualTo(run.Out));
         }
     }
 }

@@ -11,7 +11,10 @@ namespace NerfDatasetCreator
     public static class CheckCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("check", "check <dir> [--split S] [--json FILE] [--max-views N]",
-            "decode the images and check that alpha, masks, depth, normals, poses and point cloud agree", Parse, Run);
+            "decode the images and check that alpha, masks, depth, normals, poses and point cloud agree", Parse, Run).WithOptions(
+            "--split S        only that split: train, val or test (default: all)",
+            "--json FILE      also write the whole report to FILE, a new file (never replaced)",
+            "--max-views N    check at most N views per split, spread evenly (default: all)");
 
         public sealed class Options
         {

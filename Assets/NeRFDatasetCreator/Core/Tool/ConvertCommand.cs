@@ -15,7 +15,14 @@ namespace NerfDatasetCreator
         public static readonly ToolCommand Command = ToolCommand.Of("convert",
             "convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping [--out <dir>] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>]",
             "write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object)",
-            Parse, Run, "depths", "binary");
+            Parse, Run, "depths", "binary").WithOptions(
+            "--to <format>        nerfstudio, colmap (= 3dgs), ngp (= instant-ngp), dynamic3dgs or gaussian-grouping",
+            "--out <dir>          where the export goes (default: the format's place inside the dataset)",
+            "--depths             colmap: also 3D Gaussian Splatting's inverse-depth maps and depth_params.json",
+            "--binary             colmap: cameras.bin, images.bin, points3D.bin instead of the text model",
+            "--points N           colmap: the first N points of points3d.ply (default: all)",
+            "--min-track N        colmap: the fewest images a point must be seen in (0 keeps every point)",
+            "--object <name|id>   nerfstudio: mask every frame to this labelled object (labels.json)");
 
         public sealed class Options
         {
@@ -56,7 +63,7 @@ namespace NerfDatasetCreator
             ColmapModelOptions(arguments, options);
             options.Depths = arguments.Flag("depths");
             options.DatasetFolder = arguments.OnePositional("convert needs exactly one dataset folder.");
-            if (!arguments.TryGet("to", out var to)) arguments.Error("convert needs --to " + string.Join("|", ExportTargets.Names) + ".");
+            if (!arguments.TryGet("to", out var to)) arguments.Error("convert needs --to " + string.Join("|", ExportTargets.Names) + " (or a loader name of the config: 3dgs, instant-ngp).");
             else
             {
                 options.Target = ExportTargets.Parse(to, out var problem);

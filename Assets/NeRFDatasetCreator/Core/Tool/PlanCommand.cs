@@ -11,7 +11,9 @@ namespace NerfDatasetCreator
     public static class PlanCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("plan", "plan --config <settings.json> --out <dir>",
-            "the JSON files and a rig preview, no images", Parse, Run);
+            "the JSON files and a rig preview, no images", Parse, Run).WithOptions(
+            "--config <settings.json>  the settings file (the window's Save, or a sample config)",
+            "--out <dir>               the dataset folder to write (a new folder, or one the tool wrote; the config's outputFolder is ignored)");
 
         public sealed class Options
         {

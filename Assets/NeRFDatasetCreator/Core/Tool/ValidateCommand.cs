@@ -5,7 +5,8 @@ namespace NerfDatasetCreator
     /// <summary><c>nerf-dataset validate d</c>: a summary line, then one line per problem and warning; exit 1 on any problem.</summary>
     public static class ValidateCommand
     {
-        public static readonly ToolCommand Command = ToolCommand.Of("validate", "validate <dir>", "check a Blender-format dataset", Parse, Run);
+        public static readonly ToolCommand Command = ToolCommand.Of("validate", "validate <dir>", "check a Blender-format dataset", Parse, Run).WithOptions(
+            "<dir>  the dataset folder: transforms_train/val/test.json, the images they name, dataset_config.json");
 
         public sealed class Options
         {
