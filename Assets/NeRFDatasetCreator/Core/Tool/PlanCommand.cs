@@ -56,17 +56,19 @@ namespace NerfDatasetCreator
             }
             foreach (var warning in read.Warnings) stderr.WriteLine("warning: " + warning);
 
+            // The config's outputFolder is where Unity's capture puts datasets; --out names this one, which is all plan
+            // needs (its help says so). No warning: the bundled sample config has one, and the README plans it first.
             var settings = read.Settings;
-            if (!string.IsNullOrWhiteSpace(settings.OutputFolder))
-                stderr.WriteLine("warning: " + new ValidationProblem("outputFolder", settings.OutputFolder,
-                    "is ignored by plan: --out names the dataset folder itself.", "Leave outputFolder empty in configs for the tool, or pass the folder as --out."));
-            var problems = CapturePlan.Check(settings, PlanTarget.Headless);
+            // A dynamic config ending at the clip's length is planned with an assumed clip, said in a note (HeadlessClip).
+            var target = HeadlessClip.Target(settings);
+            var problems = CapturePlan.Check(settings, target);
             if (problems.Count > 0)
             {
                 foreach (var problem in problems) stderr.WriteLine("error: " + problem);
                 return ToolExitCodes.UsageError;
             }
-            var plan = CapturePlan.Build(settings, PlanTarget.Headless);
+            if (HeadlessClip.Applies(settings)) stderr.WriteLine("note: " + HeadlessClip.Note(settings));
+            var plan = CapturePlan.Build(settings, target);
             foreach (var warning in plan.Warnings) stderr.WriteLine("warning: " + warning);
 
             DatasetWriteSession session;
