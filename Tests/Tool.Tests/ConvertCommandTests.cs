@@ -38,6 +38,7 @@ namespace NerfDatasetCreator.Tool.Tests
                 "converted " + _dataset + " to nerfstudio:\n" +
                 "  wrote " + file + "\n" +
                 string.Concat(new[] { "train", "val", "test" }.Select(split => "  wrote " + Path.Combine(_dataset, "camera_paths", split + ".json") + "\n")) +
+                "files: every file the export names is inside its folder\n" +
                 // No dataset_config.json here: the target counts as nerf_synthetic's ±1.5 box, 1/1.5 → 0.666.
                 "train with: ns-train nerfacto --data " + file + " nerfstudio-data --orientation-method none --center-method none --auto-scale-poses False --scale-factor 0.666\n" +
                 "train with: ns-train splatfacto --data " + file + " nerfstudio-data --orientation-method none --center-method none\n" +
