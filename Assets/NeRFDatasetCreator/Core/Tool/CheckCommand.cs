@@ -53,6 +53,14 @@ namespace NerfDatasetCreator
                 stderr.WriteLine("error: " + folder + " is not an existing folder. Pass the dataset folder that holds transforms_train.json.");
                 return ToolExitCodes.Failure;
             }
+            if (DatasetConfig.Read(folder).IsPlanOnly)
+            {
+                // One line, as convert refuses a plan, instead of one "image is missing" per planned frame.
+                stderr.WriteLine("error: " + new ValidationProblem(DatasetLayout.ConfigFileName + ": imagesRendered", "false",
+                    "this dataset was planned by nerf-dataset plan and has no images, but check decodes them.",
+                    "Render the dataset with the Unity plugin (window or batch mode) and check that folder; nerf-dataset validate checks a plan's JSON files."));
+                return ToolExitCodes.Failure;
+            }
             var json = options.JsonReport == null ? null : Path.GetFullPath(options.JsonReport);
             if (json != null && (File.Exists(json) || Directory.Exists(json)))
             {
@@ -70,7 +78,7 @@ namespace NerfDatasetCreator
                              report.TotalSeconds.ToString("0.0", System.Globalization.CultureInfo.InvariantCulture) + " s (decoding " +
                              report.DecodeSeconds.ToString("0.0", System.Globalization.CultureInfo.InvariantCulture) + " s)");
             foreach (var line in report.SummaryLines) stdout.WriteLine("  " + line);
-            foreach (var problem in report.Problems) stdout.WriteLine("problem: " + problem);
+            foreach (var line in ProblemList.Lines(report.Problems, "problem: ", json != null ? "the report " + json + " lists every one" : "check --json FILE lists every one")) stdout.WriteLine(line);
 
             if (json != null)
             {
@@ -90,10 +98,10 @@ namespace NerfDatasetCreator
             }
             if (!report.Failed)
             {
-                stdout.WriteLine("OK");
+                stdout.WriteLine(CheckVerdict.Passed(report));
                 return ToolExitCodes.Success;
             }
-            stderr.WriteLine("failed: " + report.Problems.Count + (report.Problems.Count == 1 ? " problem" : " problems"));
+            stderr.WriteLine("failed: " + report.Problems.Count + (report.Problems.Count == 1 ? " problem" : " problems") + " (" + CheckVerdict.Ran(report) + ")");
             return ToolExitCodes.Failure;
         }
     }

@@ -29,8 +29,8 @@ namespace NerfDatasetCreator
         {
             var report = DatasetValidator.Validate(datasetFolder);
             stdout.WriteLine(report.Summary());
-            foreach (var problem in report.Problems) stdout.WriteLine("problem: " + problem);
-            foreach (var warning in report.Warnings) stdout.WriteLine("warning: " + warning);
+            foreach (var line in ProblemList.Lines(report.Problems, "problem: ", null)) stdout.WriteLine(line);
+            foreach (var line in ProblemList.Lines(report.Warnings, "warning: ", null)) stdout.WriteLine(line);
             if (report.IsValid)
             {
                 stdout.WriteLine("OK");
