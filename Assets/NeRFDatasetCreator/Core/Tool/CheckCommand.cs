@@ -48,9 +48,11 @@ namespace NerfDatasetCreator
         public static int Run(Options options, TextWriter stdout, TextWriter stderr)
         {
             var folder = options.DatasetFolder;
-            if (!Directory.Exists(folder))
+            // A file, a missing folder, a capture's working folder or an export: one line saying which (NotADatasetFolder).
+            var notADataset = NotADatasetFolder.Describe(folder);
+            if (notADataset != null || !Directory.Exists(folder))
             {
-                stderr.WriteLine("error: " + folder + " is not an existing folder. Pass the dataset folder that holds transforms_train.json.");
+                stderr.WriteLine("error: " + folder + ": " + (notADataset ?? "is not an existing folder. Pass the dataset folder that holds transforms_train.json."));
                 return ToolExitCodes.Failure;
             }
             if (DatasetConfig.Read(folder).IsPlanOnly)
