@@ -122,7 +122,7 @@ namespace NerfDatasetCreator.Tool.Tests
             var config = _scratch.WriteText("fps.json", Regex.Replace(text, "\"fps\": 0", "\"fps\": 24"));
             var run = ToolRun.Of("plan", "--config", config, "--out", _scratch.PathOf("fps"));
             Assert.That(run.ExitCode, Is.EqualTo(2), run.ToString());
-            Assert.That(run.Err, Does.Contain("error: time.end = \"clip\": needs the length"));
+            Assert.That(run.Err, Does.StartWith("error: " + config + "(").And.Contain("): time.end = \"clip\": needs the length"));
         }
     }
 }

@@ -47,6 +47,13 @@ namespace NerfDatasetCreator
             catch (SettingsFormatException e)
             {
                 foreach (var error in e.All) stderr.WriteLine("error: " + error.Message);
+                // Wrong values leave the rest readable: its range problems are printed now too, not in a second round.
+                if (e.Partial != null)
+                {
+                    var wrong = new System.Collections.Generic.HashSet<string>(e.All.Select(x => x.Field), StringComparer.Ordinal);
+                    foreach (var problem in CapturePlan.Check(e.Partial.Settings, HeadlessClip.Target(e.Partial.Settings)).Where(p => !wrong.Contains(p.Field)))
+                        stderr.WriteLine("error: " + e.Partial.Placed(problem));
+                }
                 return ToolExitCodes.UsageError;
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
@@ -64,7 +71,7 @@ namespace NerfDatasetCreator
             var problems = CapturePlan.Check(settings, target);
             if (problems.Count > 0)
             {
-                foreach (var problem in problems) stderr.WriteLine("error: " + problem);
+                foreach (var problem in problems) stderr.WriteLine("error: " + read.Placed(problem));
                 return ToolExitCodes.UsageError;
             }
             if (HeadlessClip.Applies(settings)) stderr.WriteLine("note: " + HeadlessClip.Note(settings));
