@@ -116,7 +116,7 @@ namespace NerfDatasetCreator.Repository.Tests
             try
             {
                 var relative = "Assets/Samples/" + (string)manifest["displayName"] + "/" + (string)manifest["version"] + "/" + (string)manifest["samples"][0]["displayName"];
-                Assert.That(relative, Is.EqualTo("Assets/Samples/NeRF Dataset Creator/0.1.0/NeRF Sample"));
+                Assert.That(relative, Is.EqualTo("Assets/Samples/NeRF Dataset Creator/0.2.0/NeRF Sample"));
                 var imported = Path.Combine(project, relative);
                 Directory.CreateDirectory(imported);
                 foreach (var source in Directory.GetFiles(SampleFolder))

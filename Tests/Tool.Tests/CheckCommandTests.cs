@@ -40,7 +40,8 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(lines.Where(l => l.StartsWith("  ") && !l.StartsWith("  dataset") && !l.StartsWith("  motion blur")).All(l => l.Contains("; threshold ") && l.EndsWith("; passed")), Is.True, run.ToString());
             Assert.That(lines.Single(l => l.StartsWith("  motion blur: ")), Does.Contain("skipped (no view is motion-blurred"), run.ToString());
             Assert.That(run.Out, Does.Not.Contain("problem:"));
-            Assert.That(run.Out.TrimEnd().Split('\n').Last(), Is.EqualTo("OK"));
+            // Every check but motion blur ran (issue 33: a bare "OK" when most were skipped).
+            Assert.That(run.Out.TrimEnd().Split('\n').Last(), Is.EqualTo("OK (" + (Checks.Length - 1) + " of " + Checks.Length + " checks ran; 1 skipped: motion blur)"));
         }
 
         [Test]
@@ -53,6 +54,34 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(run.Out, Does.Contain("  colour vs geometry: "));
             Assert.That(run.Out, Does.Contain("problem: ./train/r_0.png frame 0 [colour vs geometry]: the alpha's edges lie 1 px right of "), run.ToString());
             Assert.That(run.Err, Does.StartWith("failed: "));
+        }
+
+        [Test]
+        public void APlanIsRefusedInOneLine()
+        {
+            var plan = RenderedDataset.PlanOnly(_scratch, "planned");
+            var run = ToolRun.Of("check", plan);
+            Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
+            Assert.That(run.Out, Is.Empty);
+            Assert.That(run.Err, Is.EqualTo("error: dataset_config.json: imagesRendered = false: this dataset was planned by nerf-dataset plan and has no images, but check decodes them. " +
+                                            "Render the dataset with the Unity plugin (window or batch mode) and check that folder; nerf-dataset validate checks a plan's JSON files.\n"));
+        }
+
+        [Test]
+        public void ManyProblemsOfOneCheckAreCappedWithACount()
+        {
+            // Every image of a 30-view split missing: 20 lines of the one cause, then how many more.
+            var folder = _scratch.PathOf("many-missing");
+            var config = _scratch.WriteText("many.json", "{ \"width\": 32, \"height\": 24, \"splits\": { \"train\": { \"count\": 30 }, \"val\": { \"count\": 1 }, \"test\": { \"count\": 1 } } }");
+            Assert.That(ToolRun.Of("plan", "--config", config, "--out", folder).ExitCode, Is.EqualTo(0));
+            File.Delete(Path.Combine(folder, "dataset_config.json")); // no longer marked as a plan
+            var run = ToolRun.Of("validate", folder);
+            Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
+            var problems = run.Out.Split('\n').Where(l => l.StartsWith("problem: ")).ToList();
+            // 32 images missing (30 train, 1 val, 1 test): 20 shown, then the count of the other 12.
+            Assert.That(problems, Has.Count.EqualTo(21), run.ToString());
+            Assert.That(problems.Last(), Is.EqualTo("problem: … and 12 more like these (32 in all)."));
+            Assert.That(run.Err, Does.Contain("invalid: 32 problems"), "the count is of all of them");
         }
 
         [Test]

@@ -38,6 +38,7 @@ namespace NerfDatasetCreator.Tool.Tests
                 "converted " + _dataset + " to nerfstudio:\n" +
                 "  wrote " + file + "\n" +
                 string.Concat(new[] { "train", "val", "test" }.Select(split => "  wrote " + Path.Combine(_dataset, "camera_paths", split + ".json") + "\n")) +
+                "files: every file the export names is inside its folder\n" +
                 // No dataset_config.json here: the target counts as nerf_synthetic's ±1.5 box, 1/1.5 → 0.666.
                 "train with: ns-train nerfacto --data " + file + " nerfstudio-data --orientation-method none --center-method none --auto-scale-poses False --scale-factor 0.666\n" +
                 "train with: ns-train splatfacto --data " + file + " nerfstudio-data --orientation-method none --center-method none\n" +
@@ -89,6 +90,17 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(frames.Count, Is.EqualTo(RenderedDataset.Train));
             foreach (var frame in frames)
                 Assert.That(File.Exists(Path.Combine(_dataset, "ngp", (string)frame["file_path"])), Is.True, (string)frame["file_path"]);
+        }
+
+        /// <summary>The config's loader names work for --to: 3dgs is the COLMAP source 3DGS reads, instant-ngp the ngp export.</summary>
+        [TestCase("3dgs", "colmap", "sparse/0/cameras.txt")]
+        [TestCase("instant-ngp", "ngp", "transforms.json")]
+        public void TheConfigsLoaderNamesConvertToTheirFormat(string loader, string target, string file)
+        {
+            var run = ToolRun.Of("convert", _dataset, "--to", loader, "--out", _scratch.PathOf("by-loader"));
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.ToString());
+            Assert.That(run.Out, Does.StartWith("converted " + _dataset + " to " + target + ":"));
+            Assert.That(File.Exists(Path.Combine(_scratch.PathOf("by-loader"), file)), Is.True, run.ToString());
         }
 
         [Test]
@@ -203,7 +215,9 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(Centres(json).Take(100), Is.EqualTo(Centres(Json(Path.Combine(lego, "transforms_train.json")))).Within(1e-9));
         }
 
-        [TestCase(new[] { "convert", "ds", "--to", "blender" }, "--to = blender: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping.")]
+        [TestCase(new[] { "convert", "ds", "--to", "blender" }, "--to = blender: is the format the dataset is already in (nerf_synthetic / Blender)")]
+        [TestCase(new[] { "convert", "ds", "--to", "gaussian-splatting" }, "--to = gaussian-splatting: is not an export format.")]
+        [TestCase(new[] { "convert", "ds", "--to", "instantngp" }, "--to = instantngp: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping (or the config's loader names 3dgs = colmap, instant-ngp = ngp). Did you mean \"instant-ngp\"?")]
         [TestCase(new[] { "convert", "ds" }, "convert needs --to nerfstudio|colmap|ngp")]
         [TestCase(new[] { "convert", "--to", "ngp" }, "convert needs exactly one dataset folder")]
         public void UsageErrorsExitTwo(string[] args, string error)

@@ -1,6 +1,7 @@
 using System;
 using System.Diagnostics;
 using System.IO;
+using System.Linq;
 using NUnit.Framework;
 
 namespace NerfDatasetCreator.Tool.Tests
@@ -16,6 +17,18 @@ namespace NerfDatasetCreator.Tool.Tests
 
         /// <summary>The installed <c>nerf-dataset</c> command (the shim dotnet tool install writes).</summary>
         public static string Path => Command.Value;
+
+        /// <summary>The .nupkg <c>dotnet pack</c> wrote (its name carries the version <c>dotnet tool update</c> compares).</summary>
+        public static string PackedPackage
+        {
+            get
+            {
+                _ = Command.Value;
+                return _packed;
+            }
+        }
+
+        static string _packed;
 
         /// <summary>The repository root: the first ancestor of the test binary that holds package.json and ProjectSettings/.</summary>
         public static string RepositoryRoot
@@ -39,6 +52,7 @@ namespace NerfDatasetCreator.Tool.Tests
 
             var project = System.IO.Path.Combine(RepositoryRoot, "Assets", "NeRFDatasetCreator", "Tools~", "nerf-dataset");
             Dotnet("pack \"" + project + "\" -o \"" + feed + "\" --nologo", RepositoryRoot);
+            _packed = Directory.GetFiles(feed, "*.nupkg").Single();
             var config = System.IO.Path.Combine(root, "nuget.config");
             File.WriteAllText(config,
                 "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<configuration><packageSources><clear />" +

@@ -40,6 +40,9 @@ namespace NerfDatasetCreator.Tool.Tests
                 var pack = InstalledTool.Run("dotnet", "pack \"" + Path.Combine(package, "Tools~", "nerf-dataset") + "\" -o \"" + feed + "\" --nologo", root);
                 Assert.That(pack.ExitCode, Is.EqualTo(0), pack.ToString());
                 var nupkg = Directory.GetFiles(feed, "NerfDatasetCreator.Tool.*.nupkg").Single();
+                // The installed package's csproj reads package.json two folders up, the package root's.
+                var version = (string)Newtonsoft.Json.Linq.JObject.Parse(File.ReadAllText(Path.Combine(package, "package.json")))["version"];
+                Assert.That(Path.GetFileName(nupkg), Is.EqualTo("NerfDatasetCreator.Tool." + version + ".nupkg"));
                 using var zip = ZipFile.OpenRead(nupkg);
                 var names = zip.Entries.Select(e => e.FullName).ToList();
                 Assert.That(names, Does.Contain("tools/net10.0/any/nerf-dataset.dll").And.Contain("tools/net10.0/any/DotnetToolSettings.xml").And.Contain("tools/net10.0/any/Newtonsoft.Json.dll"));

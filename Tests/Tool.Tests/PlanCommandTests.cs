@@ -48,6 +48,33 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(bytes.Length, Is.EqualTo(header + (1 + 5 * 22) * 15 + 8 * 22 * 11), "15 bytes per vertex, 11 per edge");
         }
 
+        /// <summary>
+        /// A wrong type and two values out of range: all three in one run, each with its line and column (issue 33:
+        /// "config errors come in two rounds and range errors have no line").
+        /// </summary>
+        [Test]
+        public void EveryConfigErrorIsReportedAtOnceWithItsLine()
+        {
+            var config = _scratch.WriteText("bad.json",
+                "{\n" +
+                "  \"width\": \"wide\",\n" +
+                "  \"distance\": -3,\n" +
+                "  \"splits\": {\n" +
+                "    \"train\": { \"count\": 0 },\n" +
+                "    \"val\": { \"count\": 2 }\n" +
+                "  }\n" +
+                "}\n");
+            var run = ToolRun.Of("plan", "--config", config, "--out", _scratch.PathOf("bad"));
+            Assert.That(run.ExitCode, Is.EqualTo(2), run.ToString());
+            var errors = run.Err.TrimEnd('\n').Split('\n');
+            // Line and column of each value, as the JSON reader counts them (the column after the value).
+            Assert.That(errors, Has.Length.EqualTo(3), run.ToString());
+            Assert.That(errors[0], Is.EqualTo("error: " + config + "(2,17): width: must be a whole number, not \"wide\"."));
+            Assert.That(errors[1], Does.StartWith("error: " + config + "(3,16): distance = -3: must be above 0."));
+            Assert.That(errors[2], Does.StartWith("error: " + config + "(5,25): splits.train.count = 0: leaves the train split empty"));
+            Assert.That(Directory.Exists(_scratch.PathOf("bad")), Is.False);
+        }
+
         [Test]
         public void PlanThenValidateSucceedsOnItsOwnOutput()
         {
@@ -130,7 +157,9 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(run.ExitCode, Is.EqualTo(2));
             var errors = run.Err.Split('\n').Where(l => l.StartsWith("error: ")).ToList();
             Assert.That(errors, Has.Count.EqualTo(3), run.ToString());
-            Assert.That(run.Err, Does.Contain("error: width = 4").And.Contain("error: supersampling = 9").And.Contain("error: splits.val.count = -1"));
+            // Each placed at its value (one line: the columns after 4, 9 and -1).
+            Assert.That(run.Err, Does.Contain("error: " + config + "(1,12): width = 4").And.Contain("error: " + config + "(1,32): supersampling = 9")
+                .And.Contain("error: " + config + "(1,66): splits.val.count = -1"));
         }
 
         [Test]
@@ -139,7 +168,7 @@ namespace NerfDatasetCreator.Tool.Tests
             var config = _scratch.WriteText("auto.json", "{ \"distance\": \"auto\" }");
             var run = ToolRun.Of("plan", "--config", config, "--out", _scratch.PathOf("o"));
             Assert.That(run.ExitCode, Is.EqualTo(2));
-            Assert.That(run.Err, Does.Contain("error: distance = \"auto\": needs the target's bounds"));
+            Assert.That(run.Err, Does.Contain("error: " + config + "(1,20): distance = \"auto\": needs the target's bounds"));
         }
 
         [Test]

@@ -80,8 +80,9 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(lines[7], Does.StartWith("  evaluate <dir> --renders <dir> [--split test]"));
             Assert.That(lines[8], Does.StartWith("  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur]"));
             Assert.That(lines[9], Does.StartWith("exit codes:"));
-            Assert.That(lines, Has.Length.EqualTo(10));
-            Assert.That(ToolRun.Of("merge", "--help").Out, Is.EqualTo(run.Out), "--help after a command");
+            Assert.That(lines[10], Is.EqualTo("nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version."));
+            Assert.That(lines, Has.Length.EqualTo(11));
+            Assert.That(ToolRun.Of("help").Out, Is.EqualTo(run.Out));
         }
     }
 }

@@ -20,9 +20,11 @@ namespace NerfDatasetCreator
         public static DatasetValidationReport Validate(string folder)
         {
             var report = new DatasetValidationReport { Folder = folder };
-            if (!Directory.Exists(folder))
+            // A file, a missing folder, a capture's working folder or an export: one problem saying which (issue 33).
+            var notADataset = NotADatasetFolder.Describe(folder);
+            if (notADataset != null || !Directory.Exists(folder))
             {
-                report.Problems.Add(DatasetProblem.Structure(folder, -1, null, "the dataset folder does not exist."));
+                report.Problems.Add(DatasetProblem.Structure(folder, -1, null, notADataset ?? "the dataset folder does not exist."));
                 return report;
             }
             // Read once; the checks below take it (a malformed config is not validate's concern, an unreadable one is).
@@ -282,7 +284,7 @@ namespace NerfDatasetCreator
                 var relative = frame.FilePath.EndsWith(".png", StringComparison.OrdinalIgnoreCase) || (image.Exists && image.Relative == ExportPaths.Normalise(frame.FilePath))
                     ? frame.FilePath : frame.FilePath + ".png";
                 if (!image.IsInside) Problem("file_path leaves the dataset folder.");
-                else if (!image.Exists) Problem("image " + relative + " is missing.");
+                else if (!image.Exists) Problem(ImageFormats.MissingPng(relative, image.FullPath));
                 else
                 {
                     state.NewlyReferenced.Add(image.Relative);
@@ -380,7 +382,7 @@ namespace NerfDatasetCreator
             }
             catch (InvalidDataException e)
             {
-                problem(shown + " " + e.Message);
+                problem(ImageFormats.IsJpeg(path) ? ImageFormats.NotPng(shown) : shown + " " + e.Message);
             }
             catch (IOException e)
             {

@@ -6,6 +6,6 @@ namespace NerfDatasetCreator
         public const string Name = "NeRF Dataset Creator";
 
         /// <summary>Must equal package.json's "version" (a test checks it).</summary>
-        public const string Version = "0.1.0";
+        public const string Version = "0.2.0";
     }
 }

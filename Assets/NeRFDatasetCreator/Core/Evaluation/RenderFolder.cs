@@ -172,13 +172,20 @@ namespace NerfDatasetCreator
             var folder = !File.Exists(Path.Combine(root, first + ".png")) && Directory.Exists(Path.Combine(root, split)) ? Path.Combine(root, split) : root;
             var views = new List<RenderView>();
             var missing = new List<string>();
+            var jpegs = new List<string>();
             var expected = new HashSet<string>(StringComparer.Ordinal);
             for (var i = 0; i < framePaths.Count; i++)
             {
                 var name = BaseName(framePaths[i]);
                 expected.Add(name + ".png");
                 var png = Path.Combine(folder, name + ".png");
-                if (!File.Exists(png)) { missing.Add(name + ".png"); continue; }
+                if (!File.Exists(png))
+                {
+                    var jpeg = new[] { ".jpg", ".jpeg" }.Select(e => name + e).FirstOrDefault(n => File.Exists(Path.Combine(folder, n)));
+                    if (jpeg != null) jpegs.Add(jpeg);
+                    missing.Add(name + ".png");
+                    continue;
+                }
                 var view = new RenderView(i, framePaths[i], png);
                 if (layout == RenderLayout.Plain)
                 {
@@ -192,6 +199,12 @@ namespace NerfDatasetCreator
                 views.Add(view);
             }
             var source = layout == RenderLayout.InstantNgp ? "instant-ngp names each screenshot after the frame's file_path (scripts/run.py line 343)" : "a plain folder names each render r_<i>.png after the frame's file_path";
+            // JPEG renders are found and named, not reported as missing (issue 33): their loss would be scored as the model's error.
+            if (jpegs.Count > 0)
+                throw Problem(folder, "holds JPEG renders where the PNGs should be (" + Describe(jpegs) + ": " + jpegs.Count + " of " + framePaths.Count +
+                                      " frames); evaluate reads PNG, and JPEG's loss would be scored as the model's error.",
+                    "Render the split again as PNG (converting a JPEG to PNG keeps its loss)" +
+                    (layout == RenderLayout.InstantNgp ? ": instant-ngp's run.py writes each screenshot with the extension of the frame's file_path, so use the dataset's transforms_" + split + ".json, whose file_path has none." : "."));
             if (missing.Count > 0)
                 throw Problem(folder, "has no render for " + missing.Count + " of the " + framePaths.Count + " frames of transforms_" + split + ".json (" + Describe(missing) + "); " + source + ".",
                     layout == RenderLayout.InstantNgp

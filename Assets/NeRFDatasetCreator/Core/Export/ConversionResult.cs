@@ -6,8 +6,9 @@ namespace NerfDatasetCreator
     public sealed class ConversionResult
     {
         public ConversionResult(string outputDirectory, string mainFile, IReadOnlyList<string> writtenFiles, IReadOnlyList<ValidationProblem> warnings,
-            IReadOnlyList<string> trainCommands = null)
+            IReadOnlyList<string> trainCommands = null, string fileReferences = null)
         {
+            FileReferences = fileReferences;
             TrainCommands = trainCommands ?? new string[0];
             OutputDirectory = outputDirectory;
             MainFile = mainFile;
@@ -25,5 +26,8 @@ namespace NerfDatasetCreator
 
         /// <summary>Training commands worked out for this dataset (nerfstudio: one per model family); empty when the format has one fixed command.</summary>
         public IReadOnlyList<string> TrainCommands { get; }
+
+        /// <summary>What the export depends on: whether it holds the files it names or names the dataset's (<see cref="ExportFileReferences.Describe"/>); null when it writes its own.</summary>
+        public string FileReferences { get; }
     }
 }

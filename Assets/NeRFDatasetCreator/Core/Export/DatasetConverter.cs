@@ -22,16 +22,17 @@ namespace NerfDatasetCreator
         /// <param name="depths">COLMAP only: also write 3DGS's inverse-depth maps and depth_params.json (<see cref="GaussianSplattingDepths"/>).</param>
         /// <param name="colmap">COLMAP only: binary or text, how many points, the minimum track length (null: the defaults).</param>
         /// <param name="objectNameOrId">nerfstudio only: mask every frame to this labelled object (<see cref="ObjectMaskExport"/>); null for none.</param>
+        /// <param name="images">nerfstudio and ngp: copy, link or name the dataset's files (<see cref="ExportImages"/>); null: copy outside the dataset, relative inside.</param>
         public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null, bool depths = false, ColmapOptions colmap = null,
-            string objectNameOrId = null)
+            string objectNameOrId = null, ExportImages? images = null)
         {
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
             var time = target == ExportTarget.Dynamic3dgs ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
             if (time != null) warnings.Add(time);
-            if (objectNameOrId != null) return ExportObject(scene, target, objectNameOrId, outDir, warnings);
-            return Export(scene, target, outDir, null, null, warnings, depths, colmap);
+            if (objectNameOrId != null) return ExportObject(scene, target, objectNameOrId, outDir, warnings, images);
+            return Export(scene, target, outDir, null, null, warnings, depths, colmap, images);
         }
 
         /// <summary>Where <c>--object</c> writes: <paramref name="outDir"/>, or <c>&lt;dir&gt;/object_&lt;id&gt;</c> of the object named (resolved from labels.json).</summary>
@@ -44,7 +45,7 @@ namespace NerfDatasetCreator
         }
 
         /// <summary><c>--object</c>: a nerfstudio export whose masks keep one labelled object (<see cref="ObjectMaskExport"/>).</summary>
-        static ConversionResult ExportObject(ExportScene scene, ExportTarget target, string objectNameOrId, string outDir, List<ValidationProblem> warnings)
+        static ConversionResult ExportObject(ExportScene scene, ExportTarget target, string objectNameOrId, string outDir, List<ValidationProblem> warnings, ExportImages? images)
         {
             if (target != ExportTarget.Nerfstudio)
                 throw new InvalidParameterException(new[]
@@ -60,9 +61,9 @@ namespace NerfDatasetCreator
             {
                 var masks = new List<string>();
                 var masked = ObjectMaskExport.WriteMasks(scene, labelled, label, output, warnings, staged, masks);
-                var result = ToNerfstudio(masked, output, warnings, staged);
+                var result = ToNerfstudio(masked, output, warnings, staged, References(ExportTarget.Nerfstudio, images, scene.RootDirectory, output));
                 staged.Commit();
-                return new ConversionResult(result.OutputDirectory, result.MainFile, result.WrittenFiles.Concat(masks).ToList(), result.Warnings, result.TrainCommands);
+                return new ConversionResult(result.OutputDirectory, result.MainFile, result.WrittenFiles.Concat(masks).ToList(), result.Warnings, result.TrainCommands, result.FileReferences);
             }
             catch (Exception e) when (!staged.Placing && !(e is SimulatedStopException))
             {
@@ -78,7 +79,7 @@ namespace NerfDatasetCreator
         /// </summary>
         public static ConversionResult Export(ExportScene scene, ExportTarget target, string outDir = null,
             IReadOnlyList<CloudPoint> points = null, double? sceneRadius = null,
-            List<ValidationProblem> warnings = null, bool depths = false, ColmapOptions colmap = null)
+            List<ValidationProblem> warnings = null, bool depths = false, ColmapOptions colmap = null, ExportImages? images = null)
         {
             warnings = warnings ?? new List<ValidationProblem>();
             if (depths && target != ExportTarget.Colmap)
@@ -89,6 +90,7 @@ namespace NerfDatasetCreator
             InvalidParameterException.ThrowIfAny(LensExports.Refusal(scene.Lens, target, depths));
             warnings.AddRange(MotionBlurExports.Warnings(scene, target));
             var output = OutputFolder(scene.RootDirectory, target, outDir);
+            var references = References(target, images, scene.RootDirectory, output);
             // Label exports need labels.json and every instance map: refused before the output folder is made.
             var labelled = target == ExportTarget.GaussianGrouping ? LabelledDataset.Load(scene, GaussianGroupingExport.What) : null;
             // Everything is written into a working folder inside the output and moved into place when complete (StagedOutput).
@@ -98,8 +100,8 @@ namespace NerfDatasetCreator
                 ConversionResult result;
                 switch (target)
                 {
-                    case ExportTarget.Nerfstudio: result = ToNerfstudio(scene, output, warnings, staged); break;
-                    case ExportTarget.Ngp: result = ToNgp(scene, output, sceneRadius, warnings, staged); break;
+                    case ExportTarget.Nerfstudio: result = ToNerfstudio(scene, output, warnings, staged, references); break;
+                    case ExportTarget.Ngp: result = ToNgp(scene, output, sceneRadius, warnings, staged, references); break;
                     case ExportTarget.Colmap: result = ToColmap(scene, output, points, warnings, depths, colmap ?? ColmapOptions.Default, staged); break;
                     case ExportTarget.Dynamic3dgs: result = Dynamic3DGaussiansExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.GaussianGrouping: result = GaussianGroupingExport.Write(scene, labelled, output, points, warnings, colmap, staged); break;
@@ -129,7 +131,25 @@ namespace NerfDatasetCreator
             }
         }
 
-        internal static ConversionResult ToNerfstudio(ExportScene scene, string outDir, List<ValidationProblem> warnings, StagedOutput staged)
+        /// <summary>
+        /// How the export names the dataset's files: nerfstudio and ngp by <paramref name="images"/> (<see cref="ExportImagesModes.Resolve"/>);
+        /// the other targets write their own images, so link and relative are refused for them.
+        /// </summary>
+        static ExportFileReferences References(ExportTarget target, ExportImages? images, string root, string output)
+        {
+            if (ExportImagesModes.NamesDatasetFiles(target)) return new ExportFileReferences(ExportImagesModes.Resolve(images, root, output), root, output);
+            if (images.HasValue && images.Value != ExportImages.Copy)
+                throw new InvalidParameterException(new[] { ImagesRefusal(target, images.Value) });
+            return null;
+        }
+
+        /// <summary>The refusal of <c>--images link|relative</c> for a target that writes its own images.</summary>
+        public static ValidationProblem ImagesRefusal(ExportTarget target, ExportImages images) =>
+            new ValidationProblem("--images", ExportImagesModes.Name(images),
+                "is for nerfstudio and ngp, whose transforms.json names the dataset's files; --to " + ExportTargets.Name(target) + " writes its own images into the export (renamed or re-encoded), so it is always self-contained.",
+                "Leave --images out.");
+
+        internal static ConversionResult ToNerfstudio(ExportScene scene, string outDir, List<ValidationProblem> warnings, StagedOutput staged, ExportFileReferences references = null)
         {
             outDir = Path.GetFullPath(outDir);
             var file = Path.Combine(outDir, NerfstudioWriter.FileName);
@@ -139,22 +159,34 @@ namespace NerfDatasetCreator
                 warnings.Add(new ValidationProblem("camera_paths", NerfstudioWriter.FileName,
                     "belongs to an inside-out environment capture: the suggested commands let nerfstudio-data centre the poses on the mean camera and scale the cameras into ±1, nerfacto's uncontracted region, so the model's frame is not the file's.",
                     "Map camera_paths/*.json into the model's frame with the run's dataparser_transforms.json (Core's NerfstudioDataparserTransform) before ns-render, or train with the object flags (--center-method none --auto-scale-poses False) and accept a contracted room."));
-            var text = ExportJson.Serialise(NerfstudioWriter.Build(scene, outDir));
+            var text = ExportJson.Serialise(NerfstudioWriter.Build(scene, outDir, references));
+            var placed = PlaceReferencedFiles(references, staged);
             staged.WriteNewText(file, text);
-            return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Nerfstudio, warnings, staged)).ToList(), warnings,
+            return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Nerfstudio, warnings, staged)).Concat(placed).ToList(), warnings,
                 scene.InsideOut
                     ? NerfstudioTraining.EnvironmentCommands(file, scene.Frames.Select(f => f.CameraToWorld.Translation).ToList(), scene.TargetReach)
-                    : NerfstudioTraining.Commands(file, scene.TargetReach));
+                    : NerfstudioTraining.Commands(file, scene.TargetReach),
+                references?.Describe());
         }
 
-        static ConversionResult ToNgp(ExportScene scene, string outDir, double? sceneRadius, List<ValidationProblem> warnings, StagedOutput staged)
+        static ConversionResult ToNgp(ExportScene scene, string outDir, double? sceneRadius, List<ValidationProblem> warnings, StagedOutput staged, ExportFileReferences references)
         {
             outDir = Path.GetFullPath(outDir);
             var file = Path.Combine(outDir, NgpWriter.FileName);
             EnsureAbsent(file);
-            var text = ExportJson.Serialise(NgpWriter.Build(scene, outDir, sceneRadius, warnings));
+            var text = ExportJson.Serialise(NgpWriter.Build(scene, outDir, sceneRadius, warnings, references));
+            var placed = PlaceReferencedFiles(references, staged);
             staged.WriteNewText(file, text);
-            return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Ngp, warnings, staged)).ToList(), warnings);
+            return new ConversionResult(outDir, file, new[] { file }.Concat(CameraPathFiles.Write(scene, outDir, ExportTarget.Ngp, warnings, staged)).Concat(placed).ToList(), warnings,
+                null, references?.Describe());
+        }
+
+        /// <summary>Copies or links the files the JSON names into the export (<see cref="ExportFileReferences"/>), each checked absent first.</summary>
+        static IReadOnlyList<string> PlaceReferencedFiles(ExportFileReferences references, StagedOutput staged)
+        {
+            if (references == null) return new string[0];
+            foreach (var destination in references.Destinations) EnsureAbsent(destination);
+            return references.Place(staged);
         }
 
         internal static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths, ColmapOptions options, StagedOutput staged)

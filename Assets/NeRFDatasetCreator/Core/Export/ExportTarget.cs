@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Linq;
 
 namespace NerfDatasetCreator
@@ -21,14 +22,43 @@ namespace NerfDatasetCreator
     {
         public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping" };
 
+        /// <summary>
+        /// The config's <c>loaders</c> names (<see cref="TargetLoaderNames"/>) that name an export too, so one
+        /// vocabulary works in the config and on the command line: 3D Gaussian Splatting reads a COLMAP source, and
+        /// instant-ngp reads the ngp export. (nerfstudio is the same word in both.)
+        /// </summary>
+        static readonly KeyValuePair<string, ExportTarget>[] LoaderNames =
+        {
+            new KeyValuePair<string, ExportTarget>("3dgs", ExportTarget.Colmap),
+            new KeyValuePair<string, ExportTarget>("instant-ngp", ExportTarget.Ngp),
+        };
+
+        /// <summary>The names of the format the dataset is already in: the Blender loaders read the folder as it is.</summary>
+        static readonly string[] AlreadyNames = { "nerf", "blender" };
+
+        /// <summary>Every name <c>--to</c> accepts (a suggestion may be any of them).</summary>
+        public static IEnumerable<string> Accepted => Names.Concat(LoaderNames.Select(p => p.Key));
+
         public static string Name(ExportTarget target) => Names[(int)target];
 
-        /// <summary>Parses a <c>--to</c> value; null with a problem naming the valid values otherwise.</summary>
+        /// <summary>Parses a <c>--to</c> value (an export name or a config loader name, case ignored); null with a problem naming the valid values otherwise.</summary>
         public static ExportTarget? Parse(string value, out ValidationProblem problem)
         {
-            var index = Array.FindIndex(Names, n => string.Equals(n, value?.Trim(), StringComparison.OrdinalIgnoreCase));
-            problem = index >= 0 ? null : new ValidationProblem("--to", value ?? "", "is not an export format.", "Use one of: " + string.Join(", ", Names.Select(n => n)) + "." + SpellingSuggestion.Sentence(value, Names));
-            return index >= 0 ? (ExportTarget?)index : null;
+            problem = null;
+            var written = value?.Trim();
+            var index = Array.FindIndex(Names, n => string.Equals(n, written, StringComparison.OrdinalIgnoreCase));
+            if (index >= 0) return (ExportTarget)index;
+            foreach (var pair in LoaderNames)
+                if (string.Equals(pair.Key, written, StringComparison.OrdinalIgnoreCase)) return pair.Value;
+            if (AlreadyNames.Any(n => string.Equals(n, written, StringComparison.OrdinalIgnoreCase)))
+            {
+                problem = new ValidationProblem("--to", value, "is the format the dataset is already in (nerf_synthetic / Blender): nerf, nerf-pytorch and the other Blender loaders read the dataset folder as it is.",
+                    "Point the trainer at the dataset folder, or convert to one of: " + string.Join(", ", Names) + ".");
+                return null;
+            }
+            problem = new ValidationProblem("--to", value ?? "", "is not an export format.",
+                "Use one of: " + string.Join(", ", Names) + " (or the config's loader names 3dgs = colmap, instant-ngp = ngp)." + SpellingSuggestion.Sentence(written, Accepted));
+            return null;
         }
     }
 }

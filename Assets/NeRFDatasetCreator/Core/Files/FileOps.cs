@@ -102,6 +102,22 @@ namespace NerfDatasetCreator
         /// <summary>Copies without overwriting.</summary>
         public static void CopyFile(string from, string to) => Run("copy", to, () => File.Copy(from, to, false));
 
+        /// <summary>
+        /// Hard-links <paramref name="to"/> (which must not exist) to <paramref name="from"/> where the file system can
+        /// (<see cref="HardLink"/>), else copies without overwriting; true when linked.
+        /// </summary>
+        public static bool LinkOrCopyFile(string from, string to)
+        {
+            var linked = false;
+            Run("link", to, () =>
+            {
+                if (File.Exists(to) || Directory.Exists(to)) throw new IOException(to + " already exists.");
+                linked = HardLink.TryCreate(from, to);
+                if (!linked) File.Copy(from, to, false);
+            });
+            return linked;
+        }
+
         /// <summary>Moves (renames) a file; the destination must not exist.</summary>
         public static void MoveFile(string from, string to) => Run("move", from, () => File.Move(from, to));
 

@@ -55,6 +55,9 @@ namespace NerfDatasetCreator
         /// <summary>Copies <paramref name="from"/> to what will be <paramref name="finalPath"/>.</summary>
         public void Copy(string from, string finalPath) => FileOps.CopyFile(from, Stage(finalPath));
 
+        /// <summary>Hard-links (else copies) <paramref name="from"/> to what will be <paramref name="finalPath"/>; true when linked.</summary>
+        public bool LinkOrCopy(string from, string finalPath) => FileOps.LinkOrCopyFile(from, Stage(finalPath));
+
         string Stage(string finalPath)
         {
             var relative = Path.GetRelativePath(Output, Path.GetFullPath(finalPath));

@@ -163,7 +163,9 @@ namespace NerfDatasetCreator
                 offset += s.Count;
             }
             var views = new PlannedViewList(splits);
+            var framing = FramingWarning.For(copy, target, distance, copy.Intrinsics());
             var warnings = PlanWarnings.For(copy, target, normalisation, PosesOf(splits))
+                .Concat(framing == null ? new ValidationProblem[0] : new[] { framing })
                 .Concat(CameraSourcePlanning.Warnings(copy, copy.Intrinsics(), imported))
                 .Concat(BlurLengthWarning.For(copy, target, copy.Intrinsics(), views)).ToList();
             return new CapturePlan(copy, target, distance, copy.Intrinsics(), normalisation, warnings, views, time);

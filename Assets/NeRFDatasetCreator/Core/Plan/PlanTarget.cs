@@ -35,6 +35,12 @@ namespace NerfDatasetCreator
         /// </summary>
         public static PlanTarget Headless => new PlanTarget(Vector3d.Zero, 0, 0, true);
 
+        /// <summary>
+        /// The headless tool's target for <c>time.end: "clip"</c>: the clip's length is known only in Unity, so the plan
+        /// assumes <paramref name="assumedClipLengthSeconds"/> and says so (<see cref="HeadlessClip"/>).
+        /// </summary>
+        public static PlanTarget HeadlessWithClip(double assumedClipLengthSeconds) => new PlanTarget(Vector3d.Zero, 0, assumedClipLengthSeconds, true);
+
         /// <summary>True for <see cref="Headless"/>: there is no scene, so no target can be picked.</summary>
         public bool IsHeadless { get; }
 

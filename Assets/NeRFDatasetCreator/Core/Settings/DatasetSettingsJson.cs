@@ -274,9 +274,14 @@ namespace NerfDatasetCreator
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),
             });
-            if (reader.Errors.Count == 1) throw reader.Errors[0];
-            if (reader.Errors.Count > 1) throw new SettingsFormatException(reader.Errors);
-            return new SettingsReadResult(s, reader.Warnings);
+            var result = new SettingsReadResult(s, reader.Warnings, root, sourceName);
+            if (reader.Errors.Count > 0)
+            {
+                var e = reader.Errors.Count == 1 ? reader.Errors[0] : new SettingsFormatException(reader.Errors);
+                e.Partial = result;
+                throw e;
+            }
+            return result;
         }
 
         static void ReadSplit(Reader reader, JToken token, string path, SplitSettings split)

@@ -36,6 +36,13 @@ namespace NerfDatasetCreator
 
         readonly List<SettingsFormatException> _all;
 
+        /// <summary>
+        /// For wrong values (not a syntax error): the settings as read, each wrong value left at its default, so that
+        /// the range checks can run too and every error of the file is reported at once (issue 33: "config errors come
+        /// in two rounds"); null when the text could not be read as a config at all.
+        /// </summary>
+        public SettingsReadResult Partial { get; internal set; }
+
         /// <summary>Every error, in the order of the file (just this one for a syntax error).</summary>
         public IReadOnlyList<SettingsFormatException> All => _all ?? new List<SettingsFormatException> { this };
 

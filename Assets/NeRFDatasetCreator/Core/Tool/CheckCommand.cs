@@ -12,7 +12,10 @@ namespace NerfDatasetCreator
     public static class CheckCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("check", "check <dir> [--split S] [--json FILE] [--max-views N]",
-            "decode the images and check that alpha, masks, depth, normals, poses and point cloud agree", Parse, Run);
+            "decode the images and check that alpha, masks, depth, normals, poses and point cloud agree", Parse, Run).WithOptions(
+            "--split S        only that split: train, val or test (default: all)",
+            "--json FILE      also write the whole report to FILE, a new file (never replaced)",
+            "--max-views N    check at most N views per split, spread evenly (default: all)");
 
         public sealed class Options
         {
@@ -46,9 +49,19 @@ namespace NerfDatasetCreator
         public static int Run(Options options, TextWriter stdout, TextWriter stderr)
         {
             var folder = options.DatasetFolder;
-            if (!Directory.Exists(folder))
+            // A file, a missing folder, a capture's working folder or an export: one line saying which (NotADatasetFolder).
+            var notADataset = NotADatasetFolder.Describe(folder);
+            if (notADataset != null || !Directory.Exists(folder))
             {
-                stderr.WriteLine("error: " + folder + " is not an existing folder. Pass the dataset folder that holds transforms_train.json.");
+                stderr.WriteLine("error: " + folder + ": " + (notADataset ?? "is not an existing folder. Pass the dataset folder that holds transforms_train.json."));
+                return ToolExitCodes.Failure;
+            }
+            if (DatasetConfig.Read(folder).IsPlanOnly)
+            {
+                // One line, as convert refuses a plan, instead of one "image is missing" per planned frame.
+                stderr.WriteLine("error: " + new ValidationProblem(DatasetLayout.ConfigFileName + ": imagesRendered", "false",
+                    "this dataset was planned by nerf-dataset plan and has no images, but check decodes them.",
+                    "Render the dataset with the Unity plugin (window or batch mode) and check that folder; nerf-dataset validate checks a plan's JSON files."));
                 return ToolExitCodes.Failure;
             }
             var json = options.JsonReport == null ? null : Path.GetFullPath(options.JsonReport);
@@ -75,7 +88,7 @@ namespace NerfDatasetCreator
                              report.TotalSeconds.ToString("0.0", System.Globalization.CultureInfo.InvariantCulture) + " s (decoding " +
                              report.DecodeSeconds.ToString("0.0", System.Globalization.CultureInfo.InvariantCulture) + " s)");
             foreach (var line in report.SummaryLines) stdout.WriteLine("  " + line);
-            foreach (var problem in report.Problems) stdout.WriteLine("problem: " + problem);
+            foreach (var line in ProblemList.Lines(report.Problems, "problem: ", json != null ? "the report " + json + " lists every one" : "check --json FILE lists every one")) stdout.WriteLine(line);
 
             if (json != null)
             {
@@ -94,10 +107,10 @@ namespace NerfDatasetCreator
             }
             if (!report.Failed)
             {
-                stdout.WriteLine("OK");
+                stdout.WriteLine(CheckVerdict.Passed(report));
                 return ToolExitCodes.Success;
             }
-            stderr.WriteLine("failed: " + report.Problems.Count + (report.Problems.Count == 1 ? " problem" : " problems"));
+            stderr.WriteLine("failed: " + report.Problems.Count + (report.Problems.Count == 1 ? " problem" : " problems") + " (" + CheckVerdict.Ran(report) + ")");
             return ToolExitCodes.Failure;
         }
     }

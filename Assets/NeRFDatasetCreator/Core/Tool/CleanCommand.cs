@@ -11,7 +11,9 @@ namespace NerfDatasetCreator
     public static class CleanCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("clean", "clean <dir> [--dry-run]",
-            "finish or roll back interrupted runs, remove their leftover folders", Parse, Run, DryRunFlag);
+            "finish or roll back interrupted runs, remove their leftover folders", Parse, Run, DryRunFlag).WithOptions(
+            "<dir>       the folder holding the datasets (e.g. NeRFDatasets), or one dataset",
+            "--dry-run   list what would be finished, rolled back or removed, and change nothing");
 
         const string DryRunFlag = "dry-run";
 

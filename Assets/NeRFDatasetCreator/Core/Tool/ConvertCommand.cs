@@ -13,9 +13,17 @@ namespace NerfDatasetCreator
     public static class ConvertCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("convert",
-            "convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping [--out <dir>] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>]",
+            "convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping [--out <dir>] [--images copy|link|relative] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>]",
             "write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object)",
-            Parse, Run, "depths", "binary");
+            Parse, Run, "depths", "binary").WithOptions(
+            "--to <format>        nerfstudio, colmap (= 3dgs), ngp (= instant-ngp), dynamic3dgs or gaussian-grouping",
+            "--out <dir>          where the export goes (default: the format's place inside the dataset)",
+            "--images copy|link|relative  nerfstudio, ngp: copy the files transforms.json names into the export (default with --out outside the dataset: a self-contained folder), hard-link them (the same without a second copy on disk; copies where the disk cannot link), or name the dataset's by relative path (default inside the dataset)",
+            "--depths             colmap: also 3D Gaussian Splatting's inverse-depth maps and depth_params.json",
+            "--binary             colmap: cameras.bin, images.bin, points3D.bin instead of the text model",
+            "--points N           colmap: the first N points of points3d.ply (default: all)",
+            "--min-track N        colmap: the fewest images a point must be seen in (0 keeps every point)",
+            "--object <name|id>   nerfstudio: mask every frame to this labelled object (labels.json)");
 
         public sealed class Options
         {
@@ -47,16 +55,19 @@ namespace NerfDatasetCreator
 
             /// <summary><c>--object &lt;name|id&gt;</c>: mask every frame to this labelled object (nerfstudio); null for none.</summary>
             public string ObjectName { get; set; }
+
+            /// <summary><c>--images copy|link|relative</c>; null for the default (<see cref="ExportImagesModes.Resolve"/>).</summary>
+            public ExportImages? Images { get; set; }
         }
 
         static Options Parse(ToolArguments arguments)
         {
-            arguments.RefuseUnknownOptions("to", "out", "depths", "binary", "points", "min-track", "object");
+            arguments.RefuseUnknownOptions("to", "out", "depths", "binary", "points", "min-track", "object", "images");
             var options = new Options();
             ColmapModelOptions(arguments, options);
             options.Depths = arguments.Flag("depths");
             options.DatasetFolder = arguments.OnePositional("convert needs exactly one dataset folder.");
-            if (!arguments.TryGet("to", out var to)) arguments.Error("convert needs --to " + string.Join("|", ExportTargets.Names) + ".");
+            if (!arguments.TryGet("to", out var to)) arguments.Error("convert needs --to " + string.Join("|", ExportTargets.Names) + " (or a loader name of the config: 3dgs, instant-ngp).");
             else
             {
                 options.Target = ExportTargets.Parse(to, out var problem);
@@ -72,6 +83,13 @@ namespace NerfDatasetCreator
                 else options.ObjectName = objectName;
             }
             options.OutputFolder = arguments.OptionalPath("out", "--out is empty; leave it out to write into the dataset folder.");
+            if (arguments.TryGet("images", out var images))
+            {
+                options.Images = ExportImagesModes.Parse(images, out var imagesProblem);
+                if (imagesProblem != null) arguments.Error(imagesProblem.ToString());
+                else if (options.Target.HasValue && !ExportImagesModes.NamesDatasetFiles(options.Target.Value) && options.Images != ExportImages.Copy)
+                    arguments.Error(DatasetConverter.ImagesRefusal(options.Target.Value, options.Images.Value).ToString());
+            }
             return options;
         }
 
@@ -104,10 +122,10 @@ namespace NerfDatasetCreator
         const int FilesListedPerFolder = 5;
 
         public static int Run(Options options, TextWriter stdout, TextWriter stderr) =>
-            Run(options.DatasetFolder, options.Target.Value, options.OutputFolder, stdout, stderr, options.Depths, options.ColmapModelOptions, options.ObjectName);
+            Run(options.DatasetFolder, options.Target.Value, options.OutputFolder, stdout, stderr, options.Depths, options.ColmapModelOptions, options.ObjectName, options.Images);
 
         public static int Run(string datasetFolder, ExportTarget target, string outputFolder, TextWriter stdout, TextWriter stderr, bool depths = false, ColmapOptions colmap = null,
-            string objectName = null)
+            string objectName = null, ExportImages? images = null)
         {
             ConversionResult result;
             try
@@ -126,7 +144,7 @@ namespace NerfDatasetCreator
                         return ToolExitCodes.Success;
                     }
                 }
-                result = DatasetConverter.Convert(datasetFolder, target, outputFolder, depths, colmap, objectName);
+                result = DatasetConverter.Convert(datasetFolder, target, outputFolder, depths, colmap, objectName, images);
             }
             catch (InvalidParameterException e)
             {
@@ -159,6 +177,7 @@ namespace NerfDatasetCreator
                 if (files.Count > FilesListedPerFolder) stdout.WriteLine("  wrote " + files.Count + " files into " + folder.Key + Path.DirectorySeparatorChar);
                 else foreach (var file in files) stdout.WriteLine("  wrote " + file);
             }
+            if (result.FileReferences != null) stdout.WriteLine("files: " + result.FileReferences);
             if (result.TrainCommands.Count > 0) foreach (var command in result.TrainCommands) stdout.WriteLine("train with: " + command);
             else stdout.WriteLine("train with: " + NextStep(target, result.MainFile, depths));
             return ToolExitCodes.Success;

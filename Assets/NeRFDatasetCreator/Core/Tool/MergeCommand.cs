@@ -12,7 +12,10 @@ namespace NerfDatasetCreator
     public static class MergeCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("merge", "merge --out <dir> [--files copy|move] <shard-dir>...",
-            "join the folders of a sharded capture", Parse, Run);
+            "join the folders of a sharded capture", Parse, Run).WithOptions(
+            "--out <dir>          the merged dataset folder, which must not exist yet",
+            "--files copy|move    copy the shards' images (default; the shards stay) or move them (no extra disk space)",
+            "<shard-dir>...       the shard folders of one capture, in any order");
 
         public sealed class Options
         {

@@ -11,7 +11,9 @@ namespace NerfDatasetCreator
     public static class PlanCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("plan", "plan --config <settings.json> --out <dir>",
-            "the JSON files and a rig preview, no images", Parse, Run);
+            "the JSON files and a rig preview, no images", Parse, Run).WithOptions(
+            "--config <settings.json>  the settings file (the window's Save, or a sample config)",
+            "--out <dir>               the dataset folder to write (a new folder, or one the tool wrote; the config's outputFolder is ignored)");
 
         public sealed class Options
         {
@@ -45,6 +47,13 @@ namespace NerfDatasetCreator
             catch (SettingsFormatException e)
             {
                 foreach (var error in e.All) stderr.WriteLine("error: " + error.Message);
+                // Wrong values leave the rest readable: its range problems are printed now too, not in a second round.
+                if (e.Partial != null)
+                {
+                    var wrong = new System.Collections.Generic.HashSet<string>(e.All.Select(x => x.Field), StringComparer.Ordinal);
+                    foreach (var problem in CapturePlan.Check(e.Partial.Settings, HeadlessClip.Target(e.Partial.Settings)).Where(p => !wrong.Contains(p.Field)))
+                        stderr.WriteLine("error: " + e.Partial.Placed(problem));
+                }
                 return ToolExitCodes.UsageError;
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
@@ -54,17 +63,19 @@ namespace NerfDatasetCreator
             }
             foreach (var warning in read.Warnings) stderr.WriteLine("warning: " + warning);
 
+            // The config's outputFolder is where Unity's capture puts datasets; --out names this one, which is all plan
+            // needs (its help says so). No warning: the bundled sample config has one, and the README plans it first.
             var settings = read.Settings;
-            if (!string.IsNullOrWhiteSpace(settings.OutputFolder))
-                stderr.WriteLine("warning: " + new ValidationProblem("outputFolder", settings.OutputFolder,
-                    "is ignored by plan: --out names the dataset folder itself.", "Leave outputFolder empty in configs for the tool, or pass the folder as --out."));
-            var problems = CapturePlan.Check(settings, PlanTarget.Headless);
+            // A dynamic config ending at the clip's length is planned with an assumed clip, said in a note (HeadlessClip).
+            var target = HeadlessClip.Target(settings);
+            var problems = CapturePlan.Check(settings, target);
             if (problems.Count > 0)
             {
-                foreach (var problem in problems) stderr.WriteLine("error: " + problem);
+                foreach (var problem in problems) stderr.WriteLine("error: " + read.Placed(problem));
                 return ToolExitCodes.UsageError;
             }
-            var plan = CapturePlan.Build(settings, PlanTarget.Headless);
+            if (HeadlessClip.Applies(settings)) stderr.WriteLine("note: " + HeadlessClip.Note(settings));
+            var plan = CapturePlan.Build(settings, target);
             foreach (var warning in plan.Warnings) stderr.WriteLine("warning: " + warning);
 
             DatasetWriteSession session;

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -17,13 +18,15 @@ namespace NerfDatasetCreator
 
         readonly Func<ToolArguments, ToolInvocation> _parse;
 
-        ToolCommand(string name, string synopsis, string summary, IReadOnlyList<string> flags, Func<ToolArguments, ToolInvocation> parse)
+        ToolCommand(string name, string synopsis, string summary, IReadOnlyList<string> flags, Func<ToolArguments, ToolInvocation> parse,
+            IReadOnlyList<string> options = null)
         {
             Name = name;
             Synopsis = synopsis;
             Summary = summary;
             Flags = flags;
             _parse = parse;
+            Options = options ?? Array.Empty<string>();
         }
 
         /// <param name="name">What the user types first, e.g. "check".</param>
@@ -44,6 +47,26 @@ namespace NerfDatasetCreator
         public string Synopsis { get; }
         public string Summary { get; }
         public IReadOnlyList<string> Flags { get; }
+
+        /// <summary>One line per option for <c>nerf-dataset &lt;command&gt; --help</c> ("--split S  only that split …"); may be empty.</summary>
+        public IReadOnlyList<string> Options { get; }
+
+        /// <summary>This command with its option lines for <see cref="Usage"/>; each line is "--option  what it does".</summary>
+        public ToolCommand WithOptions(params string[] lines) => new ToolCommand(Name, Synopsis, Summary, Flags, _parse, lines);
+
+        /// <summary>
+        /// What <c>nerf-dataset &lt;command&gt; --help</c> prints, and what a usage mistake in this command prints
+        /// after its errors: only this command's synopsis, summary and options, not the whole table.
+        /// </summary>
+        public string Usage
+        {
+            get
+            {
+                var text = "usage: nerf-dataset " + Synopsis + "\n" + Summary + "\n";
+                if (Options.Count > 0) text += "options:\n" + string.Concat(Options.Select(o => "  " + o + "\n"));
+                return text + ToolCommands.ExitCodes;
+            }
+        }
 
         /// <summary>The command's line in <c>--help</c>: the synopsis, then the summary from column 58 or two spaces after it.</summary>
         public string HelpLine

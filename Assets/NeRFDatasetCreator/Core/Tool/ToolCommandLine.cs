@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -19,13 +20,20 @@ namespace NerfDatasetCreator
                 return Help(errors);
             }
             var command = args[0];
-            if (command == "-h" || command == "--help" || command == ToolInvocation.HelpCommand) return Help(errors);
+            if (command == "--version") return Version(args, errors);
+            if (IsHelp(command) || command == ToolInvocation.HelpCommand)
+            {
+                // "help check" is "check --help".
+                if (command == ToolInvocation.HelpCommand && args.Count == 2 && ToolCommands.Find(args[1]) != null) return Help(errors, ToolCommands.Find(args[1]));
+                return Help(errors);
+            }
+            var entry = ToolCommands.Find(command);
             var positionals = new List<string>();
             var options = new Dictionary<string, string>(StringComparer.Ordinal);
             for (var i = 1; i < args.Count; i++)
             {
                 var arg = args[i];
-                if (arg == "-h" || arg == "--help") return Help(errors);
+                if (IsHelp(arg)) return Help(errors, entry);
                 if (arg.StartsWith("--", StringComparison.Ordinal))
                 {
                     string name, value;
@@ -56,20 +64,33 @@ namespace NerfDatasetCreator
                 else positionals.Add(arg);
             }
 
-            var entry = ToolCommands.Find(command);
             if (entry == null)
             {
-                errors.Add("unknown command '" + command + "'.");
+                errors.Add("unknown command '" + command + "'." + SpellingSuggestion.Sentence(command, ToolCommands.All.Select(c => c.Name)));
                 return new ToolInvocation(command, null, errors, null);
             }
             return entry.Parse(new ToolArguments(command, options, positionals, errors));
         }
 
-        static ToolInvocation Help(List<string> errors) =>
+        static bool IsHelp(string arg) => arg == "-h" || arg == "--help";
+
+        /// <summary>The help of <paramref name="command"/> (its usage and options), or the whole table when null.</summary>
+        static ToolInvocation Help(List<string> errors, ToolCommand command = null) =>
             new ToolInvocation(ToolInvocation.HelpCommand, null, errors, (stdout, stderr) =>
             {
-                stdout.WriteLine(ToolCommands.Usage);
+                stdout.WriteLine(command?.Usage ?? ToolCommands.Usage);
                 return ToolExitCodes.Success;
             });
+
+        /// <summary><c>nerf-dataset --version</c>: one line, exit 0; anything after it is a mistake.</summary>
+        static ToolInvocation Version(IReadOnlyList<string> args, List<string> errors)
+        {
+            if (args.Count > 1) errors.Add("--version takes nothing after it ('" + args[1] + "').");
+            return new ToolInvocation(ToolInvocation.VersionCommand, null, errors, (stdout, stderr) =>
+            {
+                stdout.WriteLine(ToolCommands.VersionLine);
+                return ToolExitCodes.Success;
+            });
+        }
     }
 }

@@ -26,11 +26,18 @@ namespace NerfDatasetCreator
             DemoCommand.Command,
         };
 
-        /// <summary>What <c>--help</c> prints: one line per command, then the exit codes.</summary>
+        /// <summary>The last line of every usage text.</summary>
+        public const string ExitCodes = "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
+
+        /// <summary>What <c>--help</c> prints: one line per command, then the exit codes and where the rest is.</summary>
         public static readonly string Usage =
             "usage: nerf-dataset <command> [arguments]\n" +
             string.Concat(All.Select(c => c.HelpLine + "\n")) +
-            "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
+            ExitCodes + "\n" +
+            "nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version.";
+
+        /// <summary>What <c>--version</c> prints: the tool is the package's, so its version is package.json's (<see cref="PluginInfo.Version"/>).</summary>
+        public static string VersionLine => "nerf-dataset " + PluginInfo.Version;
 
         /// <summary>The command named <paramref name="name"/> (case-sensitive), or null.</summary>
         public static ToolCommand Find(string name) => All.FirstOrDefault(c => c.Name == name);
@@ -52,7 +59,8 @@ namespace NerfDatasetCreator
                 if (invocation.Errors.Count > 0)
                 {
                     foreach (var error in invocation.Errors) stderr.WriteLine("error: " + error);
-                    stderr.WriteLine(Usage);
+                    // A known command's mistake prints only that command's usage; no or an unknown command, the table.
+                    stderr.WriteLine(Find(invocation.Command)?.Usage ?? Usage);
                     return ToolExitCodes.UsageError;
                 }
                 return invocation.Run(stdout, stderr);

@@ -9,6 +9,9 @@ namespace NerfDatasetCreator
     {
         public const string HelpCommand = "help";
 
+        /// <summary>The <see cref="Command"/> of <c>nerf-dataset --version</c>.</summary>
+        public const string VersionCommand = "version";
+
         readonly Func<TextWriter, TextWriter, int> _run;
 
         internal ToolInvocation(string command, object options, List<string> errors, Func<TextWriter, TextWriter, int> run)
@@ -19,7 +22,7 @@ namespace NerfDatasetCreator
             _run = run;
         }
 
-        /// <summary>The command's name as typed ("plan", "check" …), or "help".</summary>
+        /// <summary>The command's name as typed ("plan", "check" …), or "help", or "version".</summary>
         public string Command { get; }
 
         /// <summary>The command's own options (<see cref="PlanCommand.Options"/>, <see cref="EvaluationOptions"/> …); null for help or an unknown command.</summary>

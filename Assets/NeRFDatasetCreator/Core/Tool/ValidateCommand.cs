@@ -5,7 +5,8 @@ namespace NerfDatasetCreator
     /// <summary><c>nerf-dataset validate d</c>: a summary line, then one line per problem and warning; exit 1 on any problem.</summary>
     public static class ValidateCommand
     {
-        public static readonly ToolCommand Command = ToolCommand.Of("validate", "validate <dir>", "check a Blender-format dataset", Parse, Run);
+        public static readonly ToolCommand Command = ToolCommand.Of("validate", "validate <dir>", "check a Blender-format dataset", Parse, Run).WithOptions(
+            "<dir>  the dataset folder: transforms_train/val/test.json, the images they name, dataset_config.json");
 
         public sealed class Options
         {
@@ -28,8 +29,8 @@ namespace NerfDatasetCreator
         {
             var report = DatasetValidator.Validate(datasetFolder);
             stdout.WriteLine(report.Summary());
-            foreach (var problem in report.Problems) stdout.WriteLine("problem: " + problem);
-            foreach (var warning in report.Warnings) stdout.WriteLine("warning: " + warning);
+            foreach (var line in ProblemList.Lines(report.Problems, "problem: ", null)) stdout.WriteLine(line);
+            foreach (var line in ProblemList.Lines(report.Warnings, "warning: ", null)) stdout.WriteLine(line);
             if (report.IsValid)
             {
                 stdout.WriteLine("OK");

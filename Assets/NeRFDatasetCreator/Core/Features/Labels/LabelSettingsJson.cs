@@ -15,6 +15,9 @@ namespace NerfDatasetCreator
     {
         public const string Key = "labels";
 
+        /// <summary>What a message advises pasting into a settings file to turn labels on (a test pastes it into the sample config).</summary>
+        public const string TurnOn = "\"labels\": { \"enabled\": true }";
+
         /// <summary>The <c>"labels"</c> section when labels are on; nothing when they are off.</summary>
         public static void Write(JsonWriter w, LabelSettings labels)
         {

@@ -31,7 +31,7 @@ namespace NerfDatasetCreator
                 {
                     new ValidationProblem(what, scene.RootDirectory,
                         "needs the dataset's object labels, but it has no " + DatasetLayout.LabelsFileName + " (it was captured without labels).",
-                        "Capture it again with labels on (the window's Labels section, or \"labels\": { \"enabled\": true } in the settings)."),
+                        "Capture it again with labels on (the window's Labels section, or " + LabelSettingsJson.TurnOn + " in the settings)."),
                 });
             var table = LabelsJson.ReadFile(labels);
             var maps = new List<string>();

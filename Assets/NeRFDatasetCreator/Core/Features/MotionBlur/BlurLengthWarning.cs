@@ -13,30 +13,68 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class BlurLengthWarning
     {
+        /// <summary>One warning per split with views whose blur is longer than <c>subFrames</c> pixels, with advice that can be followed.</summary>
         public static IEnumerable<ValidationProblem> For(DatasetSettings settings, PlanTarget target, CameraIntrinsics intrinsics, IEnumerable<PlannedView> views)
         {
             if (!ShutterPlanning.IsOn(settings)) yield break;
             var n = settings.MotionBlur.SubFrames;
-            double longest = 0;
-            var count = 0;
-            PlannedView worst = null;
+            var count = new int[DatasetSplits.All.Count];
+            var total = new int[DatasetSplits.All.Count];
+            var longest = new double[DatasetSplits.All.Count];
+            var worst = new PlannedView[DatasetSplits.All.Count];
             foreach (var view in views)
             {
                 if (view.Motion == null) continue;
+                var s = (int)view.Split;
+                total[s]++;
                 var length = Length(view, target, intrinsics);
-                if (length > n) count++;
-                if (length > longest)
+                if (length > n) count[s]++;
+                if (length > longest[s])
                 {
-                    longest = length;
-                    worst = view;
+                    longest[s] = length;
+                    worst[s] = view;
                 }
             }
-            if (count == 0) yield break;
-            yield return new ValidationProblem("motionBlur.subFrames", n.ToString(CultureInfo.InvariantCulture),
-                "is fewer than the blur's length in pixels in " + count.ToString(CultureInfo.InvariantCulture) + " view(s) (longest " +
-                ValidationProblem.Format(Math.Round(longest, 1)) + " px, " + worst.FramePath + "): the sub-frames are more than a pixel apart there, so the blur shows " +
-                n + " separate copies (error up to " + ValidationProblem.Format(Math.Round(0.5 / n, 4)) + " of the contrast).",
-                "Raise motionBlur.subFrames to " + ((int)Math.Ceiling(longest)).ToString(CultureInfo.InvariantCulture) + " or more, or shorten motionBlur.shutter or the shake.");
+            foreach (var split in DatasetSplits.All)
+            {
+                var s = (int)split;
+                if (count[s] == 0) continue;
+                yield return new ValidationProblem("motionBlur.subFrames", n.ToString(CultureInfo.InvariantCulture),
+                    "is fewer than the blur's length in pixels in " + count[s].ToString(CultureInfo.InvariantCulture) + " of " + total[s].ToString(CultureInfo.InvariantCulture) + " " +
+                    DatasetSplits.Name(split) + " views (longest " + ValidationProblem.Format(Math.Round(longest[s], 1)) + " px, " + worst[s].FramePath +
+                    "): the sub-frames are more than a pixel apart there, so the blur shows " + n + " separate copies (error up to " +
+                    ValidationProblem.Format(Math.Round(0.5 / n, 4)) + " of the contrast).",
+                    Fix(settings, split, longest[s]));
+            }
+        }
+
+        /// <summary>
+        /// Advice that can be followed: more sub-frames while that is within <see cref="MotionBlurSettings.MaxSubFrames"/>;
+        /// beyond it a shorter shutter (the path blur is proportional to it) or shake, and for a split whose formation
+        /// is random, a formation whose consecutive views are neighbours (a random formation's are far apart, so its
+        /// path — the central difference of its neighbours — is long; issue 33: "Raise subFrames to 722").
+        /// </summary>
+        static string Fix(DatasetSettings settings, DatasetSplit split, double longest)
+        {
+            var needed = (int)Math.Ceiling(longest);
+            if (needed <= MotionBlurSettings.MaxSubFrames)
+                return "Raise motionBlur.subFrames to " + needed.ToString(CultureInfo.InvariantCulture) + " or more, or shorten motionBlur.shutter or the shake.";
+            var max = MotionBlurSettings.MaxSubFrames;
+            var scale = max / longest;
+            var blur = settings.MotionBlur;
+            var name = DatasetSplits.Name(split);
+            if (blur.Camera == ShutterCameraMotion.Shake)
+                return "No sub-frame count covers it (at most " + max + "): with motionBlur.subFrames " + max + ", shorten the shake to " +
+                       ValidationProblem.Format(Math.Floor(scale * 1000) / 1000) + " × its length (motionBlur.shakeDistance " +
+                       ValidationProblem.Format(Math.Floor(blur.ShakeDistance * scale * 1000) / 1000) + ", shakeDegrees " +
+                       ValidationProblem.Format(Math.Floor(blur.ShakeDegrees * scale * 1000) / 1000) + " or less).";
+            var shutter = ValidationProblem.Format(Math.Floor(blur.Shutter * scale * 1000) / 1000);
+            var splitSettings = settings.Split(split);
+            var random = (splitSettings.Source == null || splitSettings.Source.IsFormation) && splitSettings.Formation.Kind == FormationKind.Random;
+            return random
+                ? "No sub-frame count covers it (at most " + max + "): the " + name + " split's random formation puts consecutive views far apart, so the camera's path between them is long. " +
+                  "Give splits." + name + " a formation whose views are neighbours (orbit, halo, semisphere or sphere), or set motionBlur.shutter to " + shutter + " or less with subFrames " + max + "."
+                : "No sub-frame count covers it (at most " + max + "): set motionBlur.shutter to " + shutter + " or less with subFrames " + max + ", or use more views in splits." + name + " (closer neighbours).";
         }
 
         /// <summary>The largest image motion, in output pixels, of the target's centre and four points on its bounding sphere.</summary>

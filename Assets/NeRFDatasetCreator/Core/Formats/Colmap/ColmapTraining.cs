@@ -18,17 +18,8 @@ namespace NerfDatasetCreator
             };
             if (model != null && model.ObservationCount > 0)
                 commands.Add("python simple_trainer.py default --data_dir " + Quote(outDir) + " --data_factor 1 --depth_loss --result_dir " +
-                             Quote("results/" + RunName(outDir)) + "   (gsplat examples/, depth loss from the tracks)");
+                             Quote("results/" + ExportPaths.RunName(outDir, DatasetConverter.ColmapFolderName)) + "   (gsplat examples/, depth loss from the tracks)");
             return commands;
-        }
-
-        /// <summary>The dataset's folder name for the default <c>&lt;dir&gt;/colmap</c>, else the output folder's.</summary>
-        static string RunName(string outDir)
-        {
-            var full = System.IO.Path.GetFullPath(outDir).TrimEnd(System.IO.Path.DirectorySeparatorChar, System.IO.Path.AltDirectorySeparatorChar);
-            var name = System.IO.Path.GetFileName(full);
-            var parent = System.IO.Path.GetFileName(System.IO.Path.GetDirectoryName(full) ?? "");
-            return name == DatasetConverter.ColmapFolderName && parent.Length > 0 ? parent : name;
         }
 
         static string Quote(string path) => path.IndexOf(' ') >= 0 ? "\"" + path + "\"" : path;

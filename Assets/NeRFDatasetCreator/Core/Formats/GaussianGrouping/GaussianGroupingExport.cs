@@ -111,9 +111,8 @@ namespace NerfDatasetCreator
         /// <summary>Training at full size (-r 1: the masks are not resized with the images) with the written num_classes, then its segmentation render.</summary>
         public static IReadOnlyList<string> Commands(string outDir, bool trainSplit)
         {
-            var name = Path.GetFileName(Path.GetDirectoryName(outDir.TrimEnd(Path.DirectorySeparatorChar, '/')) ?? "") ;
-            if (string.IsNullOrEmpty(name)) name = "dataset";
-            var model = "output/" + name;
+            // Named after the dataset for the default <dataset>/gaussian_grouping, after the folder itself for --out (issue 33).
+            var model = "output/" + ExportPaths.RunName(outDir, GaussianGrouping.FolderName);
             return new[]
             {
                 "python train.py -s " + Quote(outDir) + " -r 1 -m " + Quote(model) + " --config_file " + Quote(Path.Combine(outDir, GaussianGrouping.ConfigFileName)) +

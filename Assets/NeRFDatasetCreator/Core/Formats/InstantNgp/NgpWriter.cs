@@ -67,10 +67,11 @@ namespace NerfDatasetCreator
         /// null takes the dataset's own <see cref="ExportScene.DeclaredAabbScale"/> and <see cref="ExportScene.TargetReach"/>
         /// (<see cref="AabbScale.ForDataset"/>).
         /// </param>
+        /// <param name="references">How the dataset's files are named (<see cref="ExportImages"/>); null: by relative path.</param>
         public static JObject Build(ExportScene scene, string outputDirectory, double? sceneRadius = null,
-            ICollection<ValidationProblem> warnings = null)
+            ICollection<ValidationProblem> warnings = null, ExportFileReferences references = null)
         {
-            string Rel(string p) => ExportPaths.RelativeTo(outputDirectory, scene.RootDirectory, p);
+            string Rel(string p) => references != null ? references.Reference(p) : ExportPaths.RelativeTo(outputDirectory, scene.RootDirectory, p);
             var k = scene.Intrinsics;
             var train = scene.Split("train").ToList();
             var depth = train.Count > 0 && train.All(f => f.DepthPath != null);

@@ -20,9 +20,10 @@ namespace NerfDatasetCreator
         public const string FileName = "transforms.json";
 
         /// <summary>The JSON for a transforms.json written into <paramref name="outputDirectory"/>.</summary>
-        public static JObject Build(ExportScene scene, string outputDirectory)
+        /// <param name="references">How the dataset's files are named (<see cref="ExportImages"/>); null: by relative path.</param>
+        public static JObject Build(ExportScene scene, string outputDirectory, ExportFileReferences references = null)
         {
-            string Rel(string p) => ExportPaths.RelativeTo(outputDirectory, scene.RootDirectory, p);
+            string Rel(string p) => references != null ? references.Reference(p) : ExportPaths.RelativeTo(outputDirectory, scene.RootDirectory, p);
             var k = scene.Intrinsics;
             var json = new JObject
             {

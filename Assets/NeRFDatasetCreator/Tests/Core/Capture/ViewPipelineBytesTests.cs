@@ -79,9 +79,21 @@ namespace NerfDatasetCreator.Tests
                 foreach (var path in Directory.GetFiles(folder, "*", SearchOption.AllDirectories))
                 {
                     var relative = path.Substring(folder.Length + 1).Replace('\\', '/');
-                    sums[relative] = string.Concat(sha.ComputeHash(File.ReadAllBytes(path)).Select(b => b.ToString("x2")));
+                    sums[relative] = string.Concat(sha.ComputeHash(AtTheSumsVersion(File.ReadAllBytes(path), relative)).Select(b => b.ToString("x2")));
                 }
             return sums;
+        }
+
+        /// <summary>
+        /// dataset_config.json records the plugin's version, which changes with every release: the sums were taken at
+        /// 0.1.0, so the version is written back as 0.1.0 before hashing (every other byte counts).
+        /// </summary>
+        static byte[] AtTheSumsVersion(byte[] bytes, string relative)
+        {
+            if (!relative.EndsWith(".json", StringComparison.Ordinal)) return bytes;
+            var text = new System.Text.UTF8Encoding(false).GetString(bytes);
+            var pinned = text.Replace("\"pluginVersion\": \"" + PluginInfo.Version + "\"", "\"pluginVersion\": \"0.1.0\"");
+            return pinned == text ? bytes : new System.Text.UTF8Encoding(false).GetBytes(pinned);
         }
 
         internal static readonly Dictionary<string, string> Expected = new Dictionary<string, string>

@@ -9,6 +9,10 @@ namespace NerfDatasetCreator.Tests
         [TestCase("nerfstudio", ExportTarget.Nerfstudio)]
         [TestCase("COLMAP", ExportTarget.Colmap)]
         [TestCase(" ngp ", ExportTarget.Ngp)]
+        // The config's loader names (TargetLoaderNames): 3DGS reads a COLMAP source, instant-ngp the ngp export.
+        [TestCase("3dgs", ExportTarget.Colmap)]
+        [TestCase("3DGS", ExportTarget.Colmap)]
+        [TestCase("instant-ngp", ExportTarget.Ngp)]
         public void Parse_KnownNames(string value, ExportTarget expected)
         {
             Assert.That(ExportTargets.Parse(value, out var problem), Is.EqualTo(expected));
@@ -18,9 +22,28 @@ namespace NerfDatasetCreator.Tests
         [Test]
         public void Parse_UnknownName_ListsTheValidOnes()
         {
-            Assert.That(ExportTargets.Parse("blender", out var problem), Is.Null);
+            Assert.That(ExportTargets.Parse("splat", out var problem), Is.Null);
             Assert.That(problem.Field, Is.EqualTo("--to"));
-            Assert.That(problem.Fix, Is.EqualTo("Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping."));
+            Assert.That(problem.Fix, Is.EqualTo("Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping (or the config's loader names 3dgs = colmap, instant-ngp = ngp)."));
+        }
+
+        [TestCase("3dsg", "3dgs")]
+        [TestCase("instantngp", "instant-ngp")]
+        [TestCase("colmp", "colmap")]
+        [TestCase("nerfstduio", "nerfstudio")]
+        public void Parse_NearMiss_SuggestsTheName(string value, string suggested)
+        {
+            Assert.That(ExportTargets.Parse(value, out var problem), Is.Null);
+            Assert.That(problem.Fix, Does.EndWith(" Did you mean \"" + suggested + "\"?"));
+        }
+
+        [TestCase("nerf")]
+        [TestCase("blender")]
+        public void Parse_TheDatasetsOwnFormat_SaysNoConversionIsNeeded(string value)
+        {
+            Assert.That(ExportTargets.Parse(value, out var problem), Is.Null);
+            Assert.That(problem.Reason, Does.Contain("already in"));
+            Assert.That(problem.Fix, Does.StartWith("Point the trainer at the dataset folder"));
         }
     }
 }

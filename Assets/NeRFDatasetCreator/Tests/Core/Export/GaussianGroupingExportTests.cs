@@ -115,6 +115,22 @@ namespace NerfDatasetCreator.Tests
             }
         }
 
+        /// <summary>
+        /// The model folder of the printed commands is named after the dataset for the default place inside it, and
+        /// after the export folder itself with --out (issue 33: --out exports/lego-gg named the model "exports").
+        /// </summary>
+        [Test]
+        public void TheTrainingCommandNamesTheModelAfterTheDatasetOrTheOutFolder()
+        {
+            var root = Path.GetFullPath(Path.Combine(Path.GetTempPath(), "nowhere"));
+            var inside = GaussianGroupingExport.Commands(Path.Combine(root, "lego", GaussianGrouping.FolderName), false);
+            Assert.That(inside[0], Does.Contain(" -m output/lego "));
+            Assert.That(inside[1], Does.StartWith("python render.py -m output/lego "));
+            var elsewhere = GaussianGroupingExport.Commands(Path.Combine(root, "exports", "lego-gg") + Path.DirectorySeparatorChar, true);
+            Assert.That(elsewhere[0], Does.Contain(" -m output/lego-gg "));
+            Assert.That(elsewhere[1], Does.StartWith("python render.py -m output/lego-gg "));
+        }
+
         [Test]
         public void MaskValuesNumberTheIdsInOrderAndRefuseMoreThan255()
         {

@@ -114,7 +114,10 @@ namespace NerfDatasetCreator.Tests
         [TestCase(new[] { "convert", "d" }, "convert needs --to nerfstudio|colmap|ngp")]
         [TestCase(new[] { "convert", "--to", "ngp" }, "convert needs exactly one dataset folder")]
         [TestCase(new[] { "convert", "a", "b", "--to", "ngp" }, "convert needs exactly one dataset folder")]
-        [TestCase(new[] { "convert", "d", "--to", "blender" }, "--to = blender: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping.")]
+        [TestCase(new[] { "convert", "d", "--to", "splat" }, "--to = splat: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping (or the config's loader names 3dgs = colmap, instant-ngp = ngp).")]
+        [TestCase(new[] { "convert", "d", "--to", "3dg" }, "--to = 3dg: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping (or the config's loader names 3dgs = colmap, instant-ngp = ngp). Did you mean \"3dgs\"?")]
+        [TestCase(new[] { "chek", "d" }, "unknown command 'chek'. Did you mean \"check\"?")]
+        [TestCase(new[] { "--version", "check" }, "--version takes nothing after it ('check').")]
         [TestCase(new[] { "convert", "d", "--to", "ngp", "--out=" }, "--out is empty")]
         [TestCase(new[] { "convert", "d", "--to", "ngp", "--files", "move" }, "convert does not know the option --files")]
         public void UsageMistakes(string[] args, string error)
@@ -129,12 +132,13 @@ namespace NerfDatasetCreator.Tests
             "  plan --config <settings.json> --out <dir>               the JSON files and a rig preview, no images\n" +
             "  validate <dir>                                          check a Blender-format dataset\n" +
             "  merge --out <dir> [--files copy|move] <shard-dir>...    join the folders of a sharded capture\n" +
-            "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping [--out <dir>] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object)\n" +
+            "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping [--out <dir>] [--images copy|link|relative] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object)\n" +
             "  clean <dir> [--dry-run]                                 finish or roll back interrupted runs, remove their leftover folders\n" +
             "  check <dir> [--split S] [--json FILE] [--max-views N]   decode the images and check that alpha, masks, depth, normals, poses and point cloud agree\n" +
             "  evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]  score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html\n" +
             "  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur] [--views N] [--size PX] [--renders-for <dataset>]  write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)\n" +
-            "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error";
+            "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error\n" +
+            "nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version.";
 
         [Test]
         public void TheHelpTextIsBuiltFromTheCommandTableAsReleased()
@@ -184,6 +188,38 @@ namespace NerfDatasetCreator.Tests
             var p = ToolCommandLine.Parse(new[] { "validate", "--dry-run", "d" });
             Assert.That(p.Errors, Is.EqualTo(new[] { "validate does not know the option --dry-run." }));
             Assert.That(((ValidateCommand.Options)p.Options).DatasetFolder, Is.EqualTo("d"));
+        }
+
+        [Test]
+        public void ConfigLoaderNamesParseAsTheirExports()
+        {
+            Assert.That(((ConvertCommand.Options)ToolCommandLine.Parse(new[] { "convert", "d", "--to", "3dgs" }).Options).Target, Is.EqualTo(ExportTarget.Colmap));
+            Assert.That(((ConvertCommand.Options)ToolCommandLine.Parse(new[] { "convert", "d", "--to", "instant-ngp" }).Options).Target, Is.EqualTo(ExportTarget.Ngp));
+            // --depths and the COLMAP model options belong to colmap, whichever name chose it.
+            Assert.That(ToolCommandLine.Parse(new[] { "convert", "d", "--to", "3dgs", "--depths", "--binary" }).Errors, Is.Empty);
+        }
+
+        [Test]
+        public void EveryCommandsUsageNamesOnlyItselfAndListsAnOptionLinePerOptionItTakes()
+        {
+            foreach (var command in ToolCommands.All)
+            {
+                var lines = command.Usage.Split('\n');
+                Assert.That(lines[0], Is.EqualTo("usage: nerf-dataset " + command.Synopsis));
+                Assert.That(lines[1], Is.EqualTo(command.Summary));
+                Assert.That(lines[lines.Length - 1], Is.EqualTo(ToolCommands.ExitCodes));
+                foreach (var other in ToolCommands.All.Where(c => c != command))
+                    Assert.That(command.Usage, Does.Not.Contain(other.HelpLine), command.Name + "'s usage holds " + other.Name + "'s table line");
+            }
+        }
+
+        [TestCase("--version")]
+        public void Version(string arg)
+        {
+            var p = ToolCommandLine.Parse(new[] { arg });
+            Assert.That(p.Command, Is.EqualTo("version"));
+            Assert.That(p.Errors, Is.Empty);
+            Assert.That(ToolCommands.VersionLine, Is.EqualTo("nerf-dataset " + PluginInfo.Version));
         }
 
         [TestCase("help")]

@@ -80,7 +80,10 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(File.Exists(Path.Combine(dataset, "object_4", "transforms.json")));
                 Assert.That(Convert(dataset, ExportTarget.Nerfstudio, "City/Tree", temp.Combine("tree")).code, Is.EqualTo(ToolExitCodes.Success));
                 var frame = JObject.Parse(File.ReadAllText(temp.Combine("tree", "transforms.json")))["frames"][0];
-                Assert.That((string)frame["file_path"], Does.StartWith("../"), "an output outside the dataset names the images relative to itself");
+                // An output outside the dataset holds copies of the images under their dataset paths (convert --images, default copy there).
+                Assert.That((string)frame["file_path"], Is.EqualTo("train/r_0.png"));
+                Assert.That(File.Exists(temp.Combine("tree", "train", "r_0.png")), Is.True);
+                Assert.That(File.Exists(Path.Combine(temp.Combine("tree"), (string)frame["mask_path"])), Is.True, "the object's mask, written into the export");
             }
         }
 
