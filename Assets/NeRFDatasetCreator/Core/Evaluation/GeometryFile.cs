@@ -41,7 +41,7 @@ namespace NerfDatasetCreator
             var triangles = new List<int>();
             var face = new List<int>();
             var lineNumber = 0;
-            foreach (var raw in File.ReadLines(path))
+            foreach (var raw in Lines(path))
             {
                 lineNumber++;
                 var line = raw.Trim();
@@ -74,6 +74,34 @@ namespace NerfDatasetCreator
             }
             if (vertices.Count == 0) throw Bad(path, "has no vertices.", "Export the reconstruction's mesh or points.");
             return Make(vertices, triangles.Count > 0 ? triangles : null, null, Path.GetFileName(path), path);
+        }
+
+        /// <summary>The longest OBJ line read: a few numbers or indices; a longer one (a binary or hostile file) is refused, not held.</summary>
+        const int MaxObjLine = 1 << 16;
+
+        /// <summary>The file's lines, through <see cref="ReadableFile"/> (regular files only, no further than their size), each at most <see cref="MaxObjLine"/> characters.</summary>
+        static IEnumerable<string> Lines(string path)
+        {
+            using (var reader = new StreamReader(ReadableFile.OpenRead(path, ReadableFile.MaxGeometryBytes)))
+            {
+                var line = new System.Text.StringBuilder();
+                var number = 0;
+                while (true)
+                {
+                    var c = reader.Read();
+                    if (c < 0 || c == '\n')
+                    {
+                        if (c < 0 && line.Length == 0) yield break;
+                        number++;
+                        yield return line.ToString().TrimEnd('\r');
+                        line.Clear();
+                        if (c < 0) yield break;
+                        continue;
+                    }
+                    if (line.Length >= MaxObjLine) throw Bad(path + ":" + (number + 1), "has a line longer than " + MaxObjLine + " characters: it is not an OBJ text file.", "Export the reconstruction as OBJ or PLY.");
+                    line.Append((char)c);
+                }
+            }
         }
 
         static bool TryNumber(string text, out double value) => double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out value);

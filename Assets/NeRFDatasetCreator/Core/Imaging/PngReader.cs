@@ -58,7 +58,7 @@ namespace NerfDatasetCreator
         public static PngImage Read(string path)
         {
             byte[] bytes;
-            try { bytes = File.ReadAllBytes(path); }
+            try { bytes = ReadableFile.ReadAllBytes(path, ReadableFile.MaxImageBytes); }
             catch (IOException e) when (e.Message.IndexOf(path, StringComparison.Ordinal) < 0) { throw new IOException(path + ": " + e.Message, e); }
             return Decode(bytes, path);
         }

@@ -29,7 +29,7 @@ namespace NerfDatasetCreator
 
         public static NpyArray ReadGz(string path)
         {
-            using (var file = File.OpenRead(path))
+            using (var file = ReadableFile.OpenRead(path, ReadableFile.MaxGeometryBytes))
             using (var gz = new GZipStream(file, CompressionMode.Decompress))
             using (var memory = new MemoryStream())
             {

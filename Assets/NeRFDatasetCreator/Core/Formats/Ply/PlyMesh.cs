@@ -35,7 +35,7 @@ namespace NerfDatasetCreator
         /// <param name="fail">Makes the exception for a reason and its fix, e.g. ("has no vertices.", "Export the reconstruction's points or mesh.").</param>
         public static PlyMesh Read(string path, Func<string, string, Exception> fail)
         {
-            using (var stream = new BufferedStream(File.OpenRead(path), 1 << 16))
+            using (var stream = ReadableFile.OpenRead(path, ReadableFile.MaxGeometryBytes))
             {
                 var header = PlyHeader.Read(stream, maxLines: MaxHeaderLines);
                 if (header.CutShort) throw fail("ends inside its PLY header.", "Re-export the file.");

@@ -52,7 +52,7 @@ namespace NerfDatasetCreator
         /// <summary>Whether one of the header's first 16 lines is our signature comment (<see cref="PlyWriter.Signature"/>).</summary>
         static bool HasSignature(string path)
         {
-            using (var file = File.OpenRead(path))
+            using (var file = ReadableFile.OpenRead(path, long.MaxValue))
                 return PlyHeader.Read(file, maxLines: 16).Lines.Contains("comment " + PlyWriter.Signature);
         }
     }

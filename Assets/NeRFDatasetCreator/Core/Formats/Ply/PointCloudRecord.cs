@@ -38,7 +38,7 @@ namespace NerfDatasetCreator
         public static string HashOf(string path)
         {
             using (var sha = SHA256.Create())
-            using (var stream = System.IO.File.OpenRead(path))
+            using (var stream = ReadableFile.OpenRead(path, long.MaxValue)) // streamed: any size, but a pipe or device is refused unopened
             {
                 var hash = sha.ComputeHash(stream);
                 var hex = new StringBuilder(hash.Length * 2);
