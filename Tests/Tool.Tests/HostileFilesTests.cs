@@ -1,8 +1,11 @@
 using System;
 using System.Diagnostics;
 using System.IO;
+using System.Linq;
 using System.Runtime.InteropServices;
 using System.Threading.Tasks;
+using NerfDatasetCreator.Tests;
+using Newtonsoft.Json.Linq;
 using NUnit.Framework;
 
 namespace NerfDatasetCreator.Tool.Tests
@@ -88,6 +91,87 @@ namespace NerfDatasetCreator.Tool.Tests
             var validate = Within("validate", _dataset);
             Assert.That(validate.ExitCode, Is.EqualTo(1), validate.ToString()); // validate's streaming read used to say OK
             Assert.That(validate.Out, Does.Contain("problem: transforms_val.json: " + reason));
+        }
+
+        /// <summary>A renders folder of the test split's own images (plain layout): a perfect model.</summary>
+        string Renders()
+        {
+            var renders = _scratch.PathOf("renders");
+            if (Directory.Exists(renders)) return renders;
+            Directory.CreateDirectory(renders);
+            foreach (var image in Directory.GetFiles(Path.Combine(_dataset, "test"), "r_?.png")) File.Copy(image, Path.Combine(renders, Path.GetFileName(image)));
+            return renders;
+        }
+
+        string Write(string name, string text) => _scratch.WriteText(name, text);
+
+        const string Triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+
+        [Test]
+        public void AMaskOfAnotherSizeThanItsImageIsAProblemNamingTheMask()
+        {
+            var test = Path.Combine(_dataset, "transforms_test.json");
+            var json = JObject.Parse(File.ReadAllText(test));
+            foreach (var frame in (JArray)json["frames"])
+            {
+                var mask = (string)frame["file_path"] + "_mask.png";
+                frame["mask_path"] = mask;
+                TestPng.Write(Path.Combine(_dataset, mask.TrimStart('.', '/')), RenderedDataset.Width / 2, RenderedDataset.Height / 2, 8, PngInfo.ColorTypeGray);
+            }
+            File.WriteAllText(test, json.ToString());
+            var run = Within("evaluate", _dataset, "--renders", Renders(), "--out", _scratch.PathOf("eval"));
+            Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
+            var mask0 = Path.Combine(_dataset, "test", "r_0_mask.png");
+            Assert.That(run.Err, Does.Contain("r_0_mask.png = " + mask0 + ": is 16×12 but its frame's image " + Path.Combine(_dataset, "test", "r_0.png") + " is 32×24. Re-capture the mask"));
+        }
+
+        [Test]
+        public void AMetricsJsonWhoseGeneratorIsAnObjectIsNotOursAndIsLeftAlone()
+        {
+            var outFolder = _scratch.PathOf("eval");
+            Directory.CreateDirectory(outFolder);
+            var metrics = Path.Combine(outFolder, "metrics.json");
+            File.WriteAllText(metrics, "{ \"generator\": { \"name\": \"x\" } }");
+            File.WriteAllText(Path.Combine(outFolder, "report.html"), "<html></html>");
+            var run = Within("evaluate", _dataset, "--renders", Renders(), "--out", outFolder);
+            Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
+            Assert.That(run.Err, Does.Contain("holds files named like an evaluation's, but no metrics.json written by"));
+            Assert.That(File.ReadAllText(metrics), Is.EqualTo("{ \"generator\": { \"name\": \"x\" } }"));
+        }
+
+        [Test]
+        public void ADegenerateGroundTruthMeshIsAGtMeshProblemNotTheCapturesPointCloud()
+        {
+            var flat = Write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"); // collinear: zero area
+            var run = Within("evaluate", _dataset, "--renders", Renders(), "--out", _scratch.PathOf("eval"), "--geometry", Write("recon.obj", Triangle), "--gt-mesh", flat);
+            Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
+            Assert.That(run.Err, Does.Contain("--gt-mesh = " + flat + ": has 1 triangle(s) but no surface area (every face degenerate); the ground truth must be a surface to sample. Pass the target's triangle mesh."));
+            Assert.That(run.Err, Does.Not.Contain("pointCloud"));
+        }
+
+        [Test]
+        public void ReconstructionCoordinatesOf1e300AreAProblemNotAnIndexOutOfRange()
+        {
+            var recon = Write("recon.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\nend_header\n1e300 0 0\n0 1e300 0\n0 0 -1e300\n");
+            var run = Within("evaluate", _dataset, "--renders", Renders(), "--out", _scratch.PathOf("eval"), "--geometry", recon, "--gt-mesh", Write("gt.obj", Triangle));
+            Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
+            Assert.That(run.Err, Does.Contain("--geometry = " + recon + ": has a vertex beyond ±1e30 (number 0: 1E+300, 0, 0)"));
+        }
+
+        [TestCase("abc", "has an unreadable header line 'element vertex abc'.")]
+        [TestCase("-5", "has an unreadable header line 'element vertex -5'.")]
+        [TestCase("12345678901234567890", "has an unreadable header line 'element vertex 12345678901234567890'.")]
+        [TestCase("500000000", "is truncated: its header declares element vertex 500000000, at least 1500000000 bytes of ascii data, but only 12 bytes follow the header.")]
+        public void ALyingPlyHeaderIsAProblemNamingTheFileInEvaluate(string count, string reason)
+        {
+            var recon = Write("recon.ply", "ply\nformat ascii 1.0\nelement vertex " + count + "\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 1 1\n");
+            var gt = Write("gt.obj", Triangle);
+            var run = Within("evaluate", _dataset, "--renders", Renders(), "--out", _scratch.PathOf("eval"), "--geometry", recon, "--gt-mesh", gt);
+            Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
+            Assert.That(run.Err, Does.Contain("--geometry = " + recon + ": " + reason));
+            // The same file as the ground truth names --gt-mesh.
+            var asTruth = Within("evaluate", _dataset, "--renders", Renders(), "--out", _scratch.PathOf("eval2"), "--geometry", gt, "--gt-mesh", recon);
+            Assert.That(asTruth.Err, Does.Contain("--gt-mesh = " + recon + ": " + reason), asTruth.ToString());
         }
     }
 }

@@ -114,6 +114,14 @@ namespace NerfDatasetCreator
                 return n;
             }
 
+            public override int ReadByte()
+            {
+                if (left <= 0) return -1;
+                var b = inner.ReadByte(); // FileStream's own buffer: header readers read byte by byte
+                if (b >= 0) left--;
+                return b;
+            }
+
             public override void Flush() { }
             public override long Seek(long offset, SeekOrigin origin) => throw new NotSupportedException();
             public override void SetLength(long value) => throw new NotSupportedException();
