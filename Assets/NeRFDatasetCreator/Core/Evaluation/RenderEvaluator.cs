@@ -180,7 +180,7 @@ namespace NerfDatasetCreator
                 var truthDepth = EvaluationImages.DepthPng(TruthOfImageSize(frame.DepthPath, "depth"), dataset.DepthScale, frame.DepthPath);
                 float[] renderDepth;
                 if (view.DepthFormat == RenderDataFormat.NpyGz)
-                    renderDepth = EvaluationImages.DepthNpy(NpyReader.ReadGz(view.DepthPath), w, h, options.DepthAlongRay, dataset.Focal(w), dataset.Cx ?? w / 2.0, dataset.Cy ?? h / 2.0, view.DepthPath);
+                    renderDepth = EvaluationImages.DepthNpy(NpyReader.ReadGz(view.DepthPath, (long)w * h), w, h, options.DepthAlongRay, dataset.Focal(w), dataset.Cx ?? w / 2.0, dataset.Cy ?? h / 2.0, view.DepthPath);
                 else
                 {
                     var png = PngReader.Read(view.DepthPath);
@@ -193,7 +193,7 @@ namespace NerfDatasetCreator
             {
                 var truthNormals = EvaluationImages.NormalsPng(TruthOfImageSize(frame.NormalPath, "normals"), frame.NormalPath);
                 float[] renderNormals;
-                if (view.NormalFormat == RenderDataFormat.NpyGz) renderNormals = EvaluationImages.NormalsNpy(NpyReader.ReadGz(view.NormalPath), w, h, view.NormalPath);
+                if (view.NormalFormat == RenderDataFormat.NpyGz) renderNormals = EvaluationImages.NormalsNpy(NpyReader.ReadGz(view.NormalPath, 3L * w * h), w, h, view.NormalPath);
                 else
                 {
                     var png = PngReader.Read(view.NormalPath);
