@@ -173,5 +173,22 @@ namespace NerfDatasetCreator.Tool.Tests
             var asTruth = Within("evaluate", _dataset, "--renders", Renders(), "--out", _scratch.PathOf("eval2"), "--geometry", gt, "--gt-mesh", recon);
             Assert.That(asTruth.Err, Does.Contain("--gt-mesh = " + recon + ": " + reason), asTruth.ToString());
         }
+
+        [Test]
+        public void JsonIntegersBeyond32BitsAreProblemsNamingTheKeyInCheckValidateAndEvaluate()
+        {
+            // A geometry step of 1e11 and a point count of 3e9 used to end in "unexpected OverflowException".
+            File.WriteAllText(Path.Combine(_dataset, "dataset_config.json"),
+                "{ \"geometry\": { \"everyStep\": true, \"steps\": [ { \"step\": 100000000000, \"file\": \"geometry/step_0.ply\", \"triangles\": 123456789012345678901234567890 } ] }," +
+                " \"pointCloud\": { \"file\": \"points3d.ply\", \"sha256\": \"00\", \"points\": 3000000000 } }");
+            var validate = Within("validate", _dataset);
+            Assert.That(validate.ExitCode, Is.EqualTo(1), validate.ToString());
+            Assert.That(validate.Out, Does.Contain("problem: dataset_config.json: geometry step = 100000000000 (geometry/step_0.ply) is not a whole number from 0 to 2147483647. Capture again, or correct the record."));
+            var check = Within("check", _dataset);
+            Assert.That(check.Err + check.Out, Does.Not.Contain("unexpected"), check.ToString());
+            var evaluate = Within("evaluate", _dataset, "--renders", Renders(), "--out", _scratch.PathOf("eval"), "--geometry", Write("recon.obj", Triangle));
+            Assert.That(evaluate.ExitCode, Is.EqualTo(1), evaluate.ToString());
+            Assert.That(evaluate.Err, Does.Contain("error: dataset_config.json = " + Path.Combine(_dataset, "dataset_config.json") + ": geometry step = 100000000000 (geometry/step_0.ply) is not a whole number from 0 to 2147483647."));
+        }
     }
 }
