@@ -190,5 +190,43 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(evaluate.ExitCode, Is.EqualTo(1), evaluate.ToString());
             Assert.That(evaluate.Err, Does.Contain("error: dataset_config.json = " + Path.Combine(_dataset, "dataset_config.json") + ": geometry step = 100000000000 (geometry/step_0.ply) is not a whole number from 0 to 2147483647."));
         }
+
+        [TestCase("[0, 0, 0.5]", true, null)]
+        [TestCase("[0, 0, \"x\", 1]", false, "rolling_shutter = [0,0,\"x\",1] is not [A, B, C] or [A, B, C, D] of finite numbers (instant-ngp's t = A + B·u + C·v + D·r).")]
+        [TestCase("[0, 0]", false, "rolling_shutter = [0,0] is not [A, B, C] or [A, B, C, D] of finite numbers (instant-ngp's t = A + B·u + C·v + D·r).")]
+        [TestCase("\"fast\"", false, "rolling_shutter = \"fast\" is not [A, B, C] or [A, B, C, D] of finite numbers (instant-ngp's t = A + B·u + C·v + D·r).")]
+        public void AMalformedRollingShutterIsRefusedByCheckValidateAndTheNgpExport(string value, bool valid, string reason)
+        {
+            // In the train file's top level and, for the same value, in a val frame of its own.
+            var train = Path.Combine(_dataset, "transforms_train.json");
+            var json = JObject.Parse(File.ReadAllText(train));
+            json["rolling_shutter"] = JToken.Parse(value);
+            File.WriteAllText(train, json.ToString());
+            var val = Path.Combine(_dataset, "transforms_val.json");
+            var valJson = JObject.Parse(File.ReadAllText(val));
+            valJson["frames"][1]["rolling_shutter"] = JToken.Parse(value);
+            File.WriteAllText(val, valJson.ToString());
+
+            var validate = Within("validate", _dataset);
+            var check = Within("check", _dataset);
+            var ngp = Within("convert", _dataset, "--to", "ngp", "--out", _scratch.PathOf("ngp"));
+            if (valid)
+            {
+                Assert.That(validate.ExitCode, Is.EqualTo(0), validate.ToString());
+                Assert.That(check.Out, Does.Not.Contain("rolling_shutter"), check.ToString());
+                Assert.That(ngp.ExitCode, Is.EqualTo(0), ngp.ToString());
+                Assert.That(JObject.Parse(File.ReadAllText(Path.Combine(_scratch.PathOf("ngp"), "transforms.json")))["rolling_shutter"].ToString(Newtonsoft.Json.Formatting.None), Is.EqualTo("[0.0,0.0,0.5,0.0]"));
+                return;
+            }
+            Assert.That(validate.ExitCode, Is.EqualTo(1), validate.ToString());
+            Assert.That(validate.Out, Does.Contain("problem: transforms_train.json: " + reason));
+            Assert.That(validate.Out, Does.Contain("problem: transforms_val.json frame 1 (./val/r_1): " + reason));
+            Assert.That(check.ExitCode, Is.EqualTo(1), check.ToString());
+            Assert.That(check.Out, Does.Contain("problem: transforms_train.json [dataset]: " + reason));
+            Assert.That(check.Out, Does.Contain("problem: transforms_val.json frame 1 [dataset]: " + reason));
+            Assert.That(ngp.ExitCode, Is.EqualTo(1), ngp.ToString());
+            Assert.That(ngp.Err, Does.Contain("error: --to ngp = train/r_0.png: " + reason));
+            Assert.That(Directory.Exists(_scratch.PathOf("ngp")), Is.False, "nothing was written");
+        }
     }
 }
