@@ -66,6 +66,18 @@ namespace NerfDatasetCreator.Tool.Tests
         }
 
         [Test]
+        public void AFifoInPlaceOfThePointCloudIsNotTheTargetsSurfaceAndNoFileOperationFailure()
+        {
+            AssumeUnix();
+            var cloud = Path.Combine(_dataset, "points3d.ply");
+            Run("mkfifo", "\"" + cloud + "\"");
+            var validate = Within("validate", _dataset);
+            Assert.That(validate.Out, Does.Contain("warning: points3d.ply: cannot be read (" + cloud + " is empty (0 bytes) or is not a regular file"), validate.ToString());
+            foreach (var run in new[] { validate, Within("check", _dataset) })
+                Assert.That(run.Err, Does.Not.Contain("a file operation failed"), run.ToString());
+        }
+
+        [Test]
         public void ACharacterDeviceInPlaceOfAnImageIsAProblemNotOutOfMemory()
         {
             // A device like /dev/zero (char 1,5) inside the dataset: a symbolic link to /dev/zero leaves the dataset and is refused as such.
