@@ -76,6 +76,9 @@ namespace NerfDatasetCreator
                 result.Problems.Add(new DatasetProblem(CheckName, file, -1, "camera_angle_x " + DatasetCheckResult.Number(angle, "R") +
                     " differs from the other splits' " + DatasetCheckResult.Number(result.CameraAngleX.Value, "R") + "; NeRF reads one for all."));
             var depthScale = json.IntegerDepthScale is double ds && ds > 0 ? ds : DefaultDepthScale;
+            // A malformed rolling_shutter (MotionBlurKeys' one rule) fails the check: instant-ngp would train on it.
+            if (MotionBlurKeys.RollingShutterProblem(json.Top[MotionBlurKeys.RollingShutter]) is string fileShutter)
+                result.Problems.Add(new DatasetProblem(CheckName, file, -1, fileShutter));
             // The lens the loaders read from this file (camera_model, is_fisheye, k1…p2): every projecting check uses it.
             if (json.LensProblems.Count > 0)
             {
@@ -89,6 +92,8 @@ namespace NerfDatasetCreator
             {
                 var frame = json.Frames[index];
                 if (frame.FilePath == null) { result.Problems.Add(new DatasetProblem(CheckName, file, index, "has no file_path.")); continue; }
+                if (MotionBlurKeys.RollingShutterProblem(frame.Json?[MotionBlurKeys.RollingShutter]) is string frameShutter)
+                    result.Problems.Add(new DatasetProblem(CheckName, file, index, frameShutter));
                 var colour = frame.Existing("file_path");
                 if (colour == null) { result.Problems.Add(new DatasetProblem(CheckName, frame.FilePath, index, "names no image inside the dataset (looked for the path and the path + \".png\").")); continue; }
                 // Every other file the frame names (depth_path, sharp_path, clean_path, any *_path): a key naming a missing

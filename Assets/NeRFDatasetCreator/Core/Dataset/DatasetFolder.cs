@@ -213,6 +213,7 @@ namespace NerfDatasetCreator
             doc.H = Integer(root, "h", doc.Problems);
             doc.IntegerDepthScale = Number(root, "integer_depth_scale", doc.Problems, required: false);
             doc.DepthUnitScaleFactor = Number(root, "depth_unit_scale_factor", doc.Problems, required: false);
+            if (MotionBlurKeys.RollingShutterProblem(root[MotionBlurKeys.RollingShutter]) is string shutter) doc.Problems.Add(shutter);
         }
 
         static DatasetFrame ReadFrame(DatasetSplitFile doc, JToken token, int index)
@@ -244,6 +245,7 @@ namespace NerfDatasetCreator
             // Each feature reads its own keys (Core/Features/<Feature>/…Keys.cs): the time keys here, the camera, shutter,
             // exposure and lens keys when first asked for (DatasetFrame).
             frame.Time = TimeKeys.Read(obj);
+            if (MotionBlurKeys.RollingShutterProblem(obj[MotionBlurKeys.RollingShutter]) is string shutter) frame.Problems.Add(shutter);
             return Done(frame);
         }
 

@@ -66,6 +66,7 @@ namespace NerfDatasetCreator
         /// <summary>Reads a PNG file's header and checks its chunk structure; throws <see cref="InvalidDataException"/> saying what is wrong.</summary>
         public static PngInfo Read(string path)
         {
+            ReadableFile.Length(path, long.MaxValue); // a pipe or device is refused unopened (opening a FIFO waits forever)
             using (var stream = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.Read, 4096, FileOptions.SequentialScan))
                 return Read(stream);
         }

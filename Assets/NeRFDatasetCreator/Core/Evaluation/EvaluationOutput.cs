@@ -112,9 +112,12 @@ namespace NerfDatasetCreator
         static bool IsOurs(string metricsPath)
         {
             if (!File.Exists(metricsPath)) return false;
-            try { return (string)JObject.Parse(File.ReadAllText(metricsPath))["generator"] == MetricsJson.Generator; }
+            // Any file that is not an object whose generator is our string is not ours, whatever it holds instead
+            // (an object as generator used to end in "unexpected ArgumentException"); a pipe or huge file is not read.
+            try { return JToken.Parse(FileOps.ReadText(metricsPath)) is JObject o && o["generator"] is JValue g && g.Type == JTokenType.String && (string)g == MetricsJson.Generator; }
             catch (JsonException) { return false; }
-            catch (InvalidCastException) { return false; }
+            catch (IOException) { return false; }
+            catch (UnauthorizedAccessException) { return false; }
         }
 
         static InvalidParameterException Refuse(string path, string reason, string fix) =>

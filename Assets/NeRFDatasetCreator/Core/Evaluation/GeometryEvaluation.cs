@@ -56,11 +56,14 @@ namespace NerfDatasetCreator
             var truthPath = truthChoice.Path;
             result.TruthPath = truthPath;
             result.TruthSource = truthChoice.Source;
-            var truthMesh = GeometryFile.Read(truthPath);
+            var truthMesh = GeometryFile.Read(truthPath, GeometryFile.Truth);
             if (truthMesh.TriangleCount == 0)
-                throw new InvalidParameterException(new[] { new ValidationProblem("--gt-mesh", truthPath, "has no faces; the ground truth must be a surface to sample.", "Pass the target's triangle mesh.") });
+                throw new InvalidParameterException(new[] { new ValidationProblem(GeometryFile.Truth, truthPath, "has no faces; the ground truth must be a surface to sample.", "Pass the target's triangle mesh.") });
             result.TruthTriangles = truthMesh.TriangleCount;
             var truthArea = Area(truthMesh);
+            // Checked here, not left to the sampler, whose message is the capture's point-cloud setting (pointCloud.meshes).
+            if (!(truthArea > 0) || double.IsInfinity(truthArea))
+                throw new InvalidParameterException(new[] { new ValidationProblem(GeometryFile.Truth, truthPath, "has " + truthMesh.TriangleCount + " triangle(s) but " + (truthArea > 0 ? "an infinite" : "no") + " surface area (every face degenerate); the ground truth must be a surface to sample.", "Pass the target's triangle mesh.") });
             progress?.Invoke("geometry: sampling " + truthPoints + " points on the ground-truth mesh (" + truthMesh.TriangleCount + " triangles)");
             var truth = ToFloats(SurfaceSampler.Sample(new[] { truthMesh }, truthPoints, TruthSeed));
             result.TruthDiagonal = Diagonal(truthMesh.Vertices);
@@ -105,7 +108,10 @@ namespace NerfDatasetCreator
             float[] reconstruction;
             if (reconstructionMesh.TriangleCount > 0)
             {
-                var count = (int)Math.Max(1000, Math.Min(SurfaceSampler.MaxCount, Math.Round(truthPoints * Area(reconstructionMesh) / truthArea)));
+                var reconstructionArea = Area(reconstructionMesh);
+                if (!(reconstructionArea > 0) || double.IsInfinity(reconstructionArea))
+                    throw new InvalidParameterException(new[] { new ValidationProblem(GeometryFile.Reconstruction, reconstructionPath, "has " + reconstructionMesh.TriangleCount + " triangle(s) but " + (reconstructionArea > 0 ? "an infinite" : "no") + " surface area (every face degenerate), so it has no surface to sample.", "Export the reconstruction's mesh again, or its points without faces.") });
+                var count = (int)Math.Max(1000, Math.Min(SurfaceSampler.MaxCount, Math.Round(truthPoints * reconstructionArea / truthArea)));
                 progress?.Invoke("geometry: sampling " + count + " points on the reconstruction mesh (" + reconstructionMesh.TriangleCount + " triangles)");
                 reconstruction = ToFloats(SurfaceSampler.Sample(new[] { reconstructionMesh }, count, ReconstructionSeed));
                 result.ReconstructionKind = "mesh (" + reconstructionMesh.TriangleCount + " triangles), sampled to " + count + " points at the ground truth's density";

@@ -15,14 +15,32 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class GeometryFile
     {
-        public static SurfaceMesh Read(string path)
+        /// <param name="option">The option that named the file, which every problem names: <c>--geometry</c> (the reconstruction) or <c>--gt-mesh</c> (the ground truth).</param>
+        public static SurfaceMesh Read(string path, string option = Reconstruction)
         {
-            if (!File.Exists(path)) throw Bad(path, "does not exist.", "Pass an existing .ply or .obj file.");
-            var ext = Path.GetExtension(path).ToLowerInvariant();
-            if (ext == ".ply") return ReadPly(path);
-            if (ext == ".obj") return ReadObj(path);
-            throw Bad(path, "is neither .ply nor .obj.", "Export the reconstruction as PLY (points or mesh) or OBJ.");
+            try
+            {
+                if (!File.Exists(path)) throw Bad(path, "does not exist.", "Pass an existing .ply or .obj file.");
+                var ext = Path.GetExtension(path).ToLowerInvariant();
+                if (ext == ".ply") return ReadPly(path);
+                if (ext == ".obj") return ReadObj(path);
+                throw Bad(path, "is neither .ply nor .obj.", "Export the reconstruction as PLY (points or mesh) or OBJ.");
+            }
+            catch (InvalidParameterException e) when (option != Reconstruction)
+            {
+                throw new InvalidParameterException(e.Problems.Select(p => new ValidationProblem(option, p.Value, p.Reason, p.Fix)).ToList());
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                throw new InvalidParameterException(new[] { new ValidationProblem(option, path, "cannot be read: " + e.Message, "Pass an existing .ply or .obj file.") });
+            }
         }
+
+        /// <summary>The largest coordinate read: far inside float's 3.4e38, so sampled points, differences and extents stay finite.</summary>
+        public const double MaxCoordinate = 1e30;
+
+        public const string Reconstruction = "--geometry";
+        public const string Truth = "--gt-mesh";
 
         // ---- PLY ----
 
@@ -41,7 +59,7 @@ namespace NerfDatasetCreator
             var triangles = new List<int>();
             var face = new List<int>();
             var lineNumber = 0;
-            foreach (var raw in File.ReadLines(path))
+            foreach (var raw in Lines(path))
             {
                 lineNumber++;
                 var line = raw.Trim();
@@ -76,12 +94,47 @@ namespace NerfDatasetCreator
             return Make(vertices, triangles.Count > 0 ? triangles : null, null, Path.GetFileName(path), path);
         }
 
+        /// <summary>The longest OBJ line read: a few numbers or indices; a longer one (a binary or hostile file) is refused, not held.</summary>
+        const int MaxObjLine = 1 << 16;
+
+        /// <summary>The file's lines, through <see cref="ReadableFile"/> (regular files only, no further than their size), each at most <see cref="MaxObjLine"/> characters.</summary>
+        static IEnumerable<string> Lines(string path)
+        {
+            using (var reader = new StreamReader(ReadableFile.OpenRead(path, ReadableFile.MaxGeometryBytes)))
+            {
+                var line = new System.Text.StringBuilder();
+                var number = 0;
+                while (true)
+                {
+                    var c = reader.Read();
+                    if (c < 0 || c == '\n')
+                    {
+                        if (c < 0 && line.Length == 0) yield break;
+                        number++;
+                        yield return line.ToString().TrimEnd('\r');
+                        line.Clear();
+                        if (c < 0) yield break;
+                        continue;
+                    }
+                    if (line.Length >= MaxObjLine) throw Bad(path + ":" + (number + 1), "has a line longer than " + MaxObjLine + " characters: it is not an OBJ text file.", "Export the reconstruction as OBJ or PLY.");
+                    line.Append((char)c);
+                }
+            }
+        }
+
         static bool TryNumber(string text, out double value) => double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out value);
 
         static SurfaceMesh Make(List<Vector3d> vertices, List<int> triangles, List<Vector3d> normals, string name, string path)
         {
             for (var i = 0; i < vertices.Count; i++)
-                if (!vertices[i].IsFinite) throw Bad(path, "has a vertex that is not finite (number " + i + ").", "Clean the reconstruction.");
+            {
+                var v = vertices[i];
+                if (!v.IsFinite) throw Bad(path, "has a vertex that is not finite (number " + i + ").", "Clean the reconstruction.");
+                // Distances are searched in single precision (PointKdTree): 1e300 would become infinity there.
+                if (Math.Abs(v.X) > MaxCoordinate || Math.Abs(v.Y) > MaxCoordinate || Math.Abs(v.Z) > MaxCoordinate)
+                    throw Bad(path, "has a vertex beyond ±1e30 (number " + i + ": " + v.X.ToString("R", CultureInfo.InvariantCulture) + ", " + v.Y.ToString("R", CultureInfo.InvariantCulture) + ", " +
+                                    v.Z.ToString("R", CultureInfo.InvariantCulture) + "), far outside any scene and beyond what the single-precision distance search holds.", "Clean the reconstruction, or check its units.");
+            }
             return new SurfaceMesh(vertices, (IReadOnlyList<int>)triangles ?? new int[0], normals, name: name);
         }
 

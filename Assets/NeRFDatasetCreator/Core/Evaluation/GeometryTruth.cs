@@ -41,6 +41,9 @@ namespace NerfDatasetCreator
         {
             var train = EvaluationDataset.Read(dataset.Root, "train");
             var entries = dataset.Config?.GeometryEntries ?? Array.Empty<GeometryPackEntry>();
+            var malformed = entries.FirstOrDefault(e => e.Problem != null);
+            if (malformed != null && truthMeshPath == null)
+                throw Refuse(DatasetLayout.ConfigFileName, System.IO.Path.Combine(dataset.Root, DatasetLayout.ConfigFileName), malformed.Problem, "Capture again, or correct the record; or pass the mesh with --gt-mesh.");
             if (!IsDynamic(dataset, train))
             {
                 if (step.HasValue)

@@ -29,6 +29,9 @@ namespace NerfDatasetCreator
             if (xyz == null || xyz.Length % 3 != 0) throw new ArgumentException("Pass three coordinates per point.", nameof(xyz));
             var n = xyz.Length / 3;
             if (n == 0) throw new ArgumentException("The tree needs at least one point.", nameof(xyz));
+            // A NaN or infinite coordinate would send the median selection past the array's ends.
+            for (var i = 0; i < xyz.Length; i++)
+                if (float.IsNaN(xyz[i]) || float.IsInfinity(xyz[i])) throw new ArgumentException("Coordinate " + i + " is not finite; the tree needs finite points.", nameof(xyz));
             Count = n;
             order = new int[n];
             for (var i = 0; i < n; i++) order[i] = i;

@@ -149,6 +149,16 @@ namespace NerfDatasetCreator
             var truthPng = Truth(frame.ImagePath);
             var renderPng = PngReader.Read(view.ColourPath);
             int w = truthPng.Width, h = truthPng.Height;
+            // The dataset's mask, depth and normals must match its own image before any pixel is compared (a mask of
+            // another size used to end in "unexpected ArgumentException").
+            PngImage TruthOfImageSize(string path, string what)
+            {
+                var png = Truth(path);
+                if (png.Width != w || png.Height != h)
+                    throw new InvalidParameterException(new[] { new ValidationProblem(Path.GetFileName(path), path, "is " + png.Width + "×" + png.Height + " but its frame's image " + frame.ImagePath + " is " + w + "×" + h + ".",
+                        "Re-capture the " + what + ", or fix the frame's key so that it names this image's " + what + ".") });
+                return png;
+            }
             var truth = EvaluationImages.Colour(truthPng, background, frame.ImagePath);
             var render = EvaluationImages.Colour(renderPng, background, view.ColourPath);
             var result = new ViewResult
@@ -164,16 +174,16 @@ namespace NerfDatasetCreator
             byte[] mask = null;
             if (frame.MaskPath != null && dataset.HasMasks)
             {
-                mask = EvaluationImages.Mask(Truth(frame.MaskPath), frame.MaskPath);
+                mask = EvaluationImages.Mask(TruthOfImageSize(frame.MaskPath, "mask"), frame.MaskPath);
                 result.MaskedPsnr = Psnr.Masked(render, truth, 3, mask, out var inside);
                 result.MaskPixels = inside;
             }
             if (wantDepth)
             {
-                var truthDepth = EvaluationImages.DepthPng(Truth(frame.DepthPath), dataset.DepthScale, frame.DepthPath);
+                var truthDepth = EvaluationImages.DepthPng(TruthOfImageSize(frame.DepthPath, "depth"), dataset.DepthScale, frame.DepthPath);
                 float[] renderDepth;
                 if (view.DepthFormat == RenderDataFormat.NpyGz)
-                    renderDepth = EvaluationImages.DepthNpy(NpyReader.ReadGz(view.DepthPath), w, h, options.DepthAlongRay, dataset.Focal(w), dataset.Cx ?? w / 2.0, dataset.Cy ?? h / 2.0, view.DepthPath);
+                    renderDepth = EvaluationImages.DepthNpy(NpyReader.ReadGz(view.DepthPath, (long)w * h), w, h, options.DepthAlongRay, dataset.Focal(w), dataset.Cx ?? w / 2.0, dataset.Cy ?? h / 2.0, view.DepthPath);
                 else
                 {
                     var png = PngReader.Read(view.DepthPath);
@@ -184,9 +194,9 @@ namespace NerfDatasetCreator
             }
             if (wantNormals)
             {
-                var truthNormals = EvaluationImages.NormalsPng(Truth(frame.NormalPath), frame.NormalPath);
+                var truthNormals = EvaluationImages.NormalsPng(TruthOfImageSize(frame.NormalPath, "normals"), frame.NormalPath);
                 float[] renderNormals;
-                if (view.NormalFormat == RenderDataFormat.NpyGz) renderNormals = EvaluationImages.NormalsNpy(NpyReader.ReadGz(view.NormalPath), w, h, view.NormalPath);
+                if (view.NormalFormat == RenderDataFormat.NpyGz) renderNormals = EvaluationImages.NormalsNpy(NpyReader.ReadGz(view.NormalPath, 3L * w * h), w, h, view.NormalPath);
                 else
                 {
                     var png = PngReader.Read(view.NormalPath);

@@ -87,7 +87,7 @@ namespace NerfDatasetCreator
             if (colmap != null && target != ExportTarget.Colmap && target != ExportTarget.GaussianGrouping)
                 throw new InvalidParameterException(new[] { new ValidationProblem("--binary, --points, --min-track", ExportTargets.Name(target), "shape the COLMAP model only.", "Drop them, or convert to colmap.") });
             // A lens the target cannot hold is refused before anything is written (LensExports).
-            InvalidParameterException.ThrowIfAny(LensExports.Refusal(scene.Lens, target, depths));
+            InvalidParameterException.ThrowIfAny(LensExports.Refusal(scene.Lens, target, depths), MotionBlurExports.Refusal(scene, target));
             warnings.AddRange(MotionBlurExports.Warnings(scene, target));
             var output = OutputFolder(scene.RootDirectory, target, outDir);
             var references = References(target, images, scene.RootDirectory, output);

@@ -61,6 +61,9 @@ namespace NerfDatasetCreator
         /// <summary>Motion blur: instant-ngp's <c>rolling_shutter</c> [A, B, C, D] of the frame (its file's, or its own), or null.</summary>
         public double[] RollingShutter { get; set; }
 
+        /// <summary>Why the frame's <c>rolling_shutter</c> is malformed (<see cref="MotionBlurKeys.RollingShutterProblem"/>), or null.</summary>
+        public string RollingShutterProblem { get; set; }
+
         /// <summary>The frame's time keys as the dataset holds them (time_step and camera_id for Dynamic 3D Gaussians), or <see cref="FrameTime.None"/>.</summary>
         public FrameTime Timing { get; set; } = FrameTime.None;
 

@@ -62,11 +62,14 @@ namespace NerfDatasetCreator
             using (var file = new FileStream(path, FileMode.Create, FileAccess.Write, FileShare.None, 1 << 16)) write(file);
         });
 
-        /// <summary>Opens a text file to read as a stream (UTF-8, or as its byte-order mark says): for files too large to read as one string.</summary>
+        /// <summary>
+        /// Opens a text file to read as a stream (UTF-8, or as its byte-order mark says): for files too large to read as
+        /// one string. The same <see cref="MaxTextBytes"/> cap as <see cref="ReadText"/>: a 3 GB file is refused by its size.
+        /// </summary>
         public static TextReader OpenText(string path)
         {
             TextReader reader = null;
-            Run("read", path, () => reader = new StreamReader(path, new UTF8Encoding(false), true, 1 << 16));
+            Run("read", path, () => reader = new StreamReader(ReadableFile.OpenRead(path, MaxTextBytes), new UTF8Encoding(false), true, 1 << 16));
             return reader;
         }
 
@@ -93,8 +96,8 @@ namespace NerfDatasetCreator
             string text = null;
             Run("read", path, () =>
             {
-                FileTooLargeException.ThrowIfLarger(path, MaxTextBytes);
-                text = File.ReadAllText(path);
+                // Regular files only, sized before they are opened: see ReadableFile (a FIFO would hang, /dev/zero never end).
+                text = ReadableFile.ReadAllText(path, MaxTextBytes);
             });
             return text;
         }

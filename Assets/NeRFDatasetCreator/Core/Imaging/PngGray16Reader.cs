@@ -9,7 +9,8 @@ namespace NerfDatasetCreator
     public static class PngGray16Reader
     {
         /// <summary>The samples, top row first.</summary>
-        public static ushort[] Read(string path, out int width, out int height)
+        /// <param name="what">What the file is, for the messages: "depth" (the default) or "instance map" — an 8-bit instance map is not a depth problem.</param>
+        public static ushort[] Read(string path, out int width, out int height, string what = "depth")
         {
             PngImage image;
             try
@@ -18,10 +19,10 @@ namespace NerfDatasetCreator
             }
             catch (InvalidDataException e)
             {
-                throw Bad(path, e.Message.StartsWith(path) ? e.Message.Substring(path.Length).TrimStart() : e.Message);
+                throw Bad(path, e.Message.StartsWith(path) ? e.Message.Substring(path.Length).TrimStart() : e.Message, what);
             }
             if (image.BitDepth != 16 || image.ColorType != PngInfo.ColorTypeGray)
-                throw Bad(path, "is not a 16-bit greyscale, non-interlaced PNG (the depth layout).");
+                throw Bad(path, "is not a 16-bit greyscale, non-interlaced PNG (the " + what + " layout).", what);
             width = image.Width;
             height = image.Height;
             var samples = new ushort[width * height];
@@ -30,7 +31,7 @@ namespace NerfDatasetCreator
             return samples;
         }
 
-        static InvalidParameterException Bad(string path, string reason) =>
-            new InvalidParameterException(new[] { new ValidationProblem("depth", path, reason, "Re-capture the depth with this plugin (16-bit PNG).") });
+        static InvalidParameterException Bad(string path, string reason, string what) =>
+            new InvalidParameterException(new[] { new ValidationProblem(what, path, reason, "Re-capture the " + what + " with this plugin (16-bit PNG).") });
     }
 }

@@ -51,6 +51,12 @@ namespace NerfDatasetCreator
             }
         }
 
+        /// <summary>The largest side of an image this reader decodes at full area: the plugin's largest capture (<see cref="DatasetSettings.MaxSize"/>).</summary>
+        public const int MaxSide = DatasetSettings.MaxSize;
+
+        /// <summary>The most pixels decoded: <see cref="MaxSide"/>² (any aspect ratio).</summary>
+        public const long MaxPixels = (long)MaxSide * MaxSide;
+
         /// <summary>The largest factor by which deflate data can expand (zlib FAQ: 1032:1).</summary>
         const long MaxDeflateRatio = 1032;
 
@@ -58,7 +64,7 @@ namespace NerfDatasetCreator
         public static PngImage Read(string path)
         {
             byte[] bytes;
-            try { bytes = File.ReadAllBytes(path); }
+            try { bytes = ReadableFile.ReadAllBytes(path, ReadableFile.MaxImageBytes); }
             catch (IOException e) when (e.Message.IndexOf(path, StringComparison.Ordinal) < 0) { throw new IOException(path + ": " + e.Message, e); }
             return Decode(bytes, path);
         }
@@ -100,6 +106,10 @@ namespace NerfDatasetCreator
             // than the file's image data can inflate to is refused before its buffer is allocated.
             if ((stride + 1) * height > MaxDeflateRatio * (idat.Length + 1))
                 throw Bad(name, "claims " + width + "×" + height + " pixels, more than its " + idat.Length + " bytes of image data can hold (deflate expands at most " + MaxDeflateRatio + ":1); it is truncated or its header is wrong.");
+            // A 1.5 MB PNG of zeros can claim 20000×20000 pixels (1.6 GB decoded, within deflate's 1032:1): nothing this
+            // plugin writes or reads is larger than its largest capture, so a bigger claim is refused before allocating.
+            if ((long)width * height > MaxPixels)
+                throw Bad(name, "claims " + width + "×" + height + " pixels, more than the " + MaxSide + "×" + MaxSide + " this tool decodes (the largest capture it makes).");
             idat.Position = 2; // zlib header (RFC 1950); DeflateStream reads the raw deflate data after it
             var pixels = new byte[stride * height];
             using (var inflater = new DeflateStream(idat, CompressionMode.Decompress))

@@ -19,6 +19,9 @@ namespace NerfDatasetCreator
             if (config.State == DatasetConfigState.Missing || config.State == DatasetConfigState.Unreadable || config.State == DatasetConfigState.NotJson) return;
             var entries = config.Config?.GeometryEntries ?? Array.Empty<GeometryPackEntry>();
             var recorded = new HashSet<string>(StringComparer.Ordinal);
+            foreach (var entry in entries)
+                if (entry.Problem != null)
+                    report.Problems.Add(DatasetProblem.Structure(DatasetLayout.ConfigFileName, -1, null, entry.Problem + " Capture again, or correct the record."));
             if (!skipFiles)
                 foreach (var entry in entries)
                 {

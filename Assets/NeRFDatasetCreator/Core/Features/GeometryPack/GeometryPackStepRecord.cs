@@ -20,6 +20,9 @@ namespace NerfDatasetCreator
 
         public string Sha256 { get; internal set; }
         public long Triangles { get; internal set; }
+
+        /// <summary>What is wrong with the record's numbers (a <c>step</c> of 1e11), naming the key; null when nothing is.</summary>
+        public string Problem { get; internal set; }
     }
 
     /// <summary>
@@ -83,15 +86,22 @@ namespace NerfDatasetCreator
         static GeometryPackEntry Read(JObject item)
         {
             if (item["file"]?.Type != JTokenType.String) return null;
-            return new GeometryPackEntry
+            // Through JsonValues: a step of 1e11 or a 30-digit triangle count is a problem naming the key, not an OverflowException.
+            var entry = new GeometryPackEntry
             {
                 File = (string)item["file"],
                 Sha256 = item["sha256"]?.Type == JTokenType.String ? (string)item["sha256"] : null,
-                Triangles = item["triangles"]?.Type == JTokenType.Integer ? (long)item["triangles"] : 0,
-                Step = item["step"]?.Type == JTokenType.Integer ? (int?)(int)item["step"] : null,
+                Triangles = JsonValues.TryLong(item["triangles"], out var triangles) ? triangles : 0,
                 Time = JsonValues.TryNumber(item[TimeKeys.Time], out var t) ? (double?)t : null,
                 Seconds = JsonValues.TryNumber(item[TimeKeys.Seconds], out var s) ? (double?)s : null,
             };
+            var step = item["step"];
+            if (step != null && step.Type != JTokenType.Null)
+            {
+                if (JsonValues.TryInt(step, out var k) && k >= 0) entry.Step = k;
+                else entry.Problem = "geometry step = " + step.ToString(Newtonsoft.Json.Formatting.None) + " (" + entry.File + ") is not a whole number from 0 to " + int.MaxValue + ".";
+            }
+            return entry;
         }
     }
 }

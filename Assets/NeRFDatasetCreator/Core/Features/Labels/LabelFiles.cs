@@ -29,7 +29,7 @@ namespace NerfDatasetCreator
                 {
                     var path = session.PathOf(DatasetLayout.RelativePath(view.Split, view.Index, DatasetFileKind.InstancePng));
                     if (!File.Exists(path)) continue; // a view this run did not get to (a stopped capture writes no previews of it)
-                    var map = PngGray16Reader.Read(path, out var w, out var h);
+                    var map = PngGray16Reader.Read(path, out var w, out var h, "instance map");
                     if (maps.Count == 0)
                     {
                         width = w;
@@ -60,7 +60,7 @@ namespace NerfDatasetCreator
                 int width = 0, height = 0;
                 foreach (var f in files)
                 {
-                    var map = PngGray16Reader.Read(f.File, out var w, out var h);
+                    var map = PngGray16Reader.Read(f.File, out var w, out var h, "instance map");
                     if (maps.Count == 0)
                     {
                         width = w;

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Linq;
 
 namespace NerfDatasetCreator
 {
@@ -66,12 +67,23 @@ namespace NerfDatasetCreator
         public ushort[] ReadInstanceMap(ExportScene scene, int index)
         {
             var path = Path.Combine(scene.RootDirectory, InstanceMaps[index]);
-            var map = PngGray16Reader.Read(path, out var width, out var height);
+            var map = PngGray16Reader.Read(path, out var width, out var height, "instance map");
             if (width != scene.Intrinsics.Width || height != scene.Intrinsics.Height)
                 throw new InvalidParameterException(new[]
                 {
                     new ValidationProblem(InstanceMaps[index], width + "×" + height, "is not the images' size " + scene.Intrinsics.Width + "×" + scene.Intrinsics.Height + ".",
                         "Restore the instance maps from the capture."),
+                });
+            // An id labels.json does not know would silently become background in every export's masks.
+            var unknown = new SortedSet<int>();
+            foreach (var id in map)
+                if (id != 0 && Table.Instance(id) == null && unknown.Add(id) && unknown.Count > 10) break;
+            if (unknown.Count > 0)
+                throw new InvalidParameterException(new[]
+                {
+                    new ValidationProblem(InstanceMaps[index], "ids " + string.Join(", ", unknown.Take(10)) + (unknown.Count > 10 ? " …" : ""),
+                        "holds instance ids that " + DatasetLayout.LabelsFileName + " does not list, so no export could name their objects.",
+                        "Restore " + DatasetLayout.LabelsFileName + " and the instance maps from the same capture."),
                 });
             return map;
         }

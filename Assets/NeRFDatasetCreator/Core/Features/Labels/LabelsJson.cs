@@ -48,6 +48,9 @@ namespace NerfDatasetCreator
             return root.ToString(Formatting.Indented) + "\n";
         }
 
+        /// <summary>The most ids a list may hold: the largest value of the 16-bit maps (0 is the background).</summary>
+        public const int MaxIds = ushort.MaxValue;
+
         /// <summary>Reads <c>labels.json</c> at <paramref name="path"/>; throws <see cref="InvalidParameterException"/> naming the file, the field and the fix.</summary>
         public static LabelTable ReadFile(string path)
         {
@@ -80,6 +83,11 @@ namespace NerfDatasetCreator
             if (root["instance_rule"] is JValue ir && ir.Type == JTokenType.String && InstanceRules.TryParse((string)ir, out var rule)) settings.Instances = rule;
             if (root["class_from"] is JValue cf && cf.Type == JTokenType.String && ClassSources.TryParse((string)cf, out var from)) settings.ClassFrom = from;
 
+            // Ids run 1, 2, 3… and the instance and semantic maps are 16-bit: a longer list cannot be what a capture wrote
+            // (it ended in an IndexOutOfRange in the Gaussian Grouping export), and is refused before its entries are read.
+            foreach (var key in new[] { "classes", "instances" })
+                if (root[key] is JArray list && list.Count > MaxIds)
+                    throw Problem(source, key, list.Count + " entries", "has more than the " + MaxIds + " ids a 16-bit instance or semantic map can hold.", "Restore labels.json from the capture.");
             var classes = new List<ClassLabel>();
             var classArray = root["classes"] as JArray;
             if (classArray == null) problems.Add(new ValidationProblem(source + ": classes", root["classes"]?.ToString(Formatting.None) ?? "(missing)", "is not a list.", "Restore labels.json from the capture."));

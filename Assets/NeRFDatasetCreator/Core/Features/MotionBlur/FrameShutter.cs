@@ -11,8 +11,11 @@ namespace NerfDatasetCreator
         public Matrix4x4d? Start { get; internal set; }
         public Matrix4x4d? End { get; internal set; }
 
-        /// <summary>instant-ngp's <c>rolling_shutter</c> [A, B, C, D] of the frame, else of its file (at least three numbers, padded with 0), or null.</summary>
+        /// <summary>instant-ngp's <c>rolling_shutter</c> [A, B, C, D] of the frame, else of its file (three or four finite numbers, D = 0 when three), or null.</summary>
         public double[] RollingShutter { get; internal set; }
+
+        /// <summary>Why the <c>rolling_shutter</c> that applies to the frame is malformed (<see cref="MotionBlurKeys.RollingShutterProblem"/>), or null.</summary>
+        public string RollingShutterProblem { get; internal set; }
 
         /// <summary>A frame without motion-blur keys.</summary>
         public static readonly FrameShutter None = new FrameShutter();

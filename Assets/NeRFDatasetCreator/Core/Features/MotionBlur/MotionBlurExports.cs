@@ -19,6 +19,20 @@ namespace NerfDatasetCreator
             if (shutter.Start is Matrix4x4d start && start.IsFinite) frame.ShutterStart = start;
             if (shutter.End is Matrix4x4d end && end.IsFinite) frame.ShutterEnd = end;
             if (shutter.RollingShutter != null) frame.RollingShutter = shutter.RollingShutter;
+            frame.RollingShutterProblem = shutter.RollingShutterProblem;
+        }
+
+        /// <summary>
+        /// The refusal of <c>--to ngp</c>, which carries <c>rolling_shutter</c>, when a frame's is malformed (before
+        /// anything is written: the export used to pad it with zeros or drop it); null otherwise.
+        /// </summary>
+        public static ValidationProblem Refusal(ExportScene scene, ExportTarget target)
+        {
+            if (target != ExportTarget.Ngp) return null;
+            var frame = scene.Frames.FirstOrDefault(f => f.RollingShutterProblem != null);
+            if (frame == null) return null;
+            return new ValidationProblem("--to ngp", frame.ImagePath, frame.RollingShutterProblem,
+                "Write rolling_shutter as [0, 0, ρ, 1 − ρ] (ρ the readout fraction; [0, 0, 0, 1] for a global shutter) or remove it — see Documentation~/motion-blur.md.");
         }
 
         static bool Blurred(ExportScene scene) => scene.Frames.Any(f => f.ShutterStart != null || f.ShutterEnd != null);

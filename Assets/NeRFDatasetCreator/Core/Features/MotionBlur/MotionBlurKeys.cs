@@ -1,3 +1,4 @@
+using System.Linq;
 using Newtonsoft.Json.Linq;
 
 namespace NerfDatasetCreator
@@ -60,18 +61,43 @@ namespace NerfDatasetCreator
             if (frame == null) return FrameShutter.None;
             var start = frame[Start];
             var end = frame[End];
-            var rs = frame[RollingShutter] as JArray ?? top?[RollingShutter] as JArray;
+            var rs = frame[RollingShutter] ?? top?[RollingShutter];
+            if (rs != null && rs.Type == JTokenType.Null) rs = null;
             if (start == null && end == null && rs == null) return FrameShutter.None;
             var shutter = new FrameShutter { HasStart = start != null, HasEnd = end != null };
             if (JsonMatrix.TryRead(start, out var s)) shutter.Start = s;
             if (JsonMatrix.TryRead(end, out var e)) shutter.End = e;
-            if (rs != null && rs.Count >= 3)
+            if (rs != null)
             {
-                var values = new double[4];
-                for (var i = 0; i < System.Math.Min(4, rs.Count); i++) JsonValues.TryNumber(rs[i], out values[i]);
-                shutter.RollingShutter = values;
+                shutter.RollingShutterProblem = RollingShutterProblem(rs);
+                if (shutter.RollingShutterProblem == null) shutter.RollingShutter = RollingShutterValues((JArray)rs);
             }
             return shutter;
+        }
+
+        /// <summary>
+        /// The one rule for a <c>rolling_shutter</c> value (at the top of a transforms file or in a frame): what instant-ngp's
+        /// read_lens (src/nerf_loader.cu) reads — [A, B, C] or [A, B, C, D], finite numbers, t = A + B·u + C·v + D·r.
+        /// Null when it is one; else the reason, naming the key and the value. Check, validate and <c>convert --to ngp</c>
+        /// refuse what it refuses (a malformed value used to pass both and be rewritten or dropped by the export).
+        /// </summary>
+        public static string RollingShutterProblem(JToken value)
+        {
+            if (value == null || value.Type == JTokenType.Null) return null;
+            var ok = value is JArray list && (list.Count == 3 || list.Count == 4) &&
+                     list.All(v => JsonValues.TryNumber(v, out var x) && !double.IsNaN(x) && !double.IsInfinity(x));
+            if (ok) return null;
+            var text = value.ToString(Newtonsoft.Json.Formatting.None);
+            if (text.Length > 80) text = text.Substring(0, 80) + "…";
+            return RollingShutter + " = " + text + " is not [A, B, C] or [A, B, C, D] of finite numbers (instant-ngp's t = A + B·u + C·v + D·r).";
+        }
+
+        /// <summary>A valid <c>rolling_shutter</c>'s four numbers, D = 0 when only three are given (instant-ngp's default).</summary>
+        static double[] RollingShutterValues(JArray list)
+        {
+            var values = new double[4];
+            for (var i = 0; i < list.Count; i++) JsonValues.TryNumber(list[i], out values[i]);
+            return values;
         }
     }
 }

@@ -82,7 +82,7 @@ namespace NerfDatasetCreator
             var seen = new bool[65536];
             for (var i = 0; i < scene.Frames.Count; i++)
                 foreach (var id in labelled.ReadInstanceMap(scene, i)) seen[id] = true;
-            return all.Where(id => seen[id]).ToList();
+            return all.Where(id => id < seen.Length && seen[id]).ToList(); // an id beyond 16 bits is in no map
         }
 
         static string ObjectIds(LabelTable table, IReadOnlyDictionary<int, byte> values)

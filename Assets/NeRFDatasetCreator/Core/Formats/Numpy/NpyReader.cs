@@ -27,38 +27,58 @@ namespace NerfDatasetCreator
             public float[] Values { get; }
         }
 
-        public static NpyArray ReadGz(string path)
+        /// <summary>The longest header read: NumPy pads its dict to 64-byte multiples and writes a few hundred bytes at most.</summary>
+        public const int MaxHeaderBytes = 1 << 16;
+
+        /// <summary>
+        /// Reads a gzipped .npy, decompressing no more than its header and the data its shape claims: a gzip bomb (1.5 MB
+        /// that inflates to 5 GB) is read to the claimed size and no further, and a shape of more than
+        /// <paramref name="maxValues"/> values (the caller's image: height × width × channels) is refused before anything is allocated.
+        /// </summary>
+        public static NpyArray ReadGz(string path, long maxValues = int.MaxValue)
         {
-            using (var file = File.OpenRead(path))
+            using (var file = ReadableFile.OpenRead(path, ReadableFile.MaxGeometryBytes))
             using (var gz = new GZipStream(file, CompressionMode.Decompress))
-            using (var memory = new MemoryStream())
             {
-                try { gz.CopyTo(memory); }
-                catch (InvalidDataException) { throw Bad(path, "is not gzip-compressed."); }
-                return Decode(memory.ToArray(), path);
+                return Read(new Inflated(gz, path), path, maxValues);
             }
         }
 
-        public static NpyArray Decode(byte[] bytes, string name)
+        public static NpyArray Decode(byte[] bytes, string name) => Read(new MemoryStream(bytes, false), name, int.MaxValue);
+
+        static NpyArray Read(Stream stream, string name, long maxValues)
         {
-            if (bytes.Length < 10 || bytes[0] != 0x93 || Encoding.ASCII.GetString(bytes, 1, 5) != "NUMPY") throw Bad(name, "is not a NumPy .npy array.");
-            int major = bytes[6];
-            int headerLength, start;
-            if (major == 1) { headerLength = bytes[8] | (bytes[9] << 8); start = 10; }
+            var prefix = new byte[12];
+            if (Fill(stream, prefix, 0, 10) < 10 || prefix[0] != 0x93 || Encoding.ASCII.GetString(prefix, 1, 5) != "NUMPY") throw Bad(name, "is not a NumPy .npy array.");
+            int major = prefix[6];
+            long headerLength;
+            if (major == 1) headerLength = prefix[8] | (prefix[9] << 8);
             else if (major == 2 || major == 3)
             {
-                if (bytes.Length < 12) throw Bad(name, "is cut short.");
-                headerLength = BitConverter.ToInt32(bytes, 8);
-                start = 12;
+                if (Fill(stream, prefix, 10, 2) < 2) throw Bad(name, "is cut short.");
+                headerLength = BitConverter.ToUInt32(prefix, 8);
             }
             else throw Bad(name, "has NumPy format version " + major + ", which this reader does not know.");
-            if (headerLength < 0 || start + headerLength > bytes.Length) throw Bad(name, "is cut short.");
-            var header = Encoding.ASCII.GetString(bytes, start, headerLength);
+            if (headerLength > MaxHeaderBytes) throw Bad(name, "declares a header of " + headerLength + " bytes, more than the " + MaxHeaderBytes + " any NumPy writes.");
+            var headerBytes = new byte[headerLength];
+            if (Fill(stream, headerBytes, 0, headerBytes.Length) < headerBytes.Length) throw Bad(name, "is cut short.");
+            var header = Encoding.ASCII.GetString(headerBytes);
             var descr = Value(header, "descr", name).Trim('\'', '"', ' ');
             if (Value(header, "fortran_order", name).Trim() != "False") throw Bad(name, "is stored in Fortran order.");
-            var shape = Shape(Value(header, "shape", name), name);
-            long count = 1;
-            foreach (var d in shape) count *= d;
+            var shapeText = Value(header, "shape", name);
+            var shape = Shape(shapeText, name);
+            long count;
+            try
+            {
+                count = 1;
+                foreach (var d in shape) count = checked(count * d); // (2^31)^3 values would wrap a plain product
+            }
+            catch (OverflowException)
+            {
+                throw Bad(name, "has shape " + shapeText.Trim() + ", more values than any array holds.");
+            }
+            if (count > maxValues)
+                throw Bad(name, "has shape " + shapeText.Trim() + ": " + count + " values, more than the " + maxValues + " expected.");
             int size;
             switch (descr)
             {
@@ -67,18 +87,36 @@ namespace NerfDatasetCreator
                 case "<f8": size = 8; break;
                 default: throw Bad(name, "holds '" + descr + "' values; only little-endian floats (<f2, <f4, <f8) are read.");
             }
-            var data = start + headerLength;
-            if (data + count * size > bytes.Length) throw Bad(name, "is cut short: its shape needs " + count * size + " bytes of data.");
-            var values = new float[count];
-            for (long i = 0; i < count; i++)
-            {
-                var at = (int)(data + i * size);
-                values[i] = size == 4 ? BitConverter.ToSingle(bytes, at)
-                    : size == 8 ? (float)BitConverter.ToDouble(bytes, at)
-                    : HalfFloat.ToFloat((ushort)(bytes[at] | (bytes[at + 1] << 8)));
-            }
             if (!BitConverter.IsLittleEndian) throw new PlatformNotSupportedException("NpyReader needs a little-endian machine.");
+            // The data is read in blocks as it is converted: never more than the shape claims, whatever follows.
+            var values = new float[count];
+            var block = new byte[size * 8192];
+            for (long i = 0; i < count;)
+            {
+                var n = (int)Math.Min(8192, count - i);
+                if (Fill(stream, block, 0, n * size) < n * size) throw Bad(name, "is cut short: its shape needs " + count * size + " bytes of data.");
+                for (var k = 0; k < n; k++, i++)
+                {
+                    var at = k * size;
+                    values[i] = size == 4 ? BitConverter.ToSingle(block, at)
+                        : size == 8 ? (float)BitConverter.ToDouble(block, at)
+                        : HalfFloat.ToFloat((ushort)(block[at] | (block[at + 1] << 8)));
+                }
+            }
             return new NpyArray(shape, values);
+        }
+
+        /// <summary>Reads up to <paramref name="count"/> bytes; fewer only at the end of the stream.</summary>
+        static int Fill(Stream stream, byte[] buffer, int offset, int count)
+        {
+            var read = 0;
+            while (read < count)
+            {
+                var n = stream.Read(buffer, offset + read, count - read);
+                if (n <= 0) break;
+                read += n;
+            }
+            return read;
         }
 
         /// <summary>The text of one key's value in the header dict: up to the next top-level comma (tuples kept whole).</summary>
@@ -114,5 +152,34 @@ namespace NerfDatasetCreator
         }
 
         static InvalidDataException Bad(string name, string reason) => new InvalidDataException(name + " " + reason);
+
+        /// <summary>The gzip stream, its InvalidDataException ("not gzip") worded with the file's name.</summary>
+        sealed class Inflated : Stream
+        {
+            readonly Stream gz;
+            readonly string path;
+
+            public Inflated(Stream gz, string path)
+            {
+                this.gz = gz;
+                this.path = path;
+            }
+
+            public override int Read(byte[] buffer, int offset, int count)
+            {
+                try { return gz.Read(buffer, offset, count); }
+                catch (InvalidDataException e) { throw Bad(path, "is not gzip-compressed (" + e.Message + ")."); }
+            }
+
+            public override bool CanRead => true;
+            public override bool CanSeek => false;
+            public override bool CanWrite => false;
+            public override long Length => throw new NotSupportedException();
+            public override long Position { get => throw new NotSupportedException(); set => throw new NotSupportedException(); }
+            public override void Flush() { }
+            public override long Seek(long offset, SeekOrigin origin) => throw new NotSupportedException();
+            public override void SetLength(long value) => throw new NotSupportedException();
+            public override void Write(byte[] buffer, int offset, int count) => throw new NotSupportedException();
+        }
     }
 }

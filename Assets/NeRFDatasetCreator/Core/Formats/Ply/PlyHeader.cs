@@ -72,9 +72,31 @@ namespace NerfDatasetCreator
         public IReadOnlyList<PlyElement> Elements { get; private set; } = Array.Empty<PlyElement>();
 
         /// <summary>
+        /// The fewest bytes of data that can hold what <see cref="Elements"/> declare, compared with what follows the
+        /// header before anything is allocated (a 500 M-vertex claim over a few bytes is a truncated or hostile file,
+        /// not an out-of-memory). Binary: every scalar's size, a list at least its count; ascii: at least one byte per
+        /// value. In doubles, so that no count overflows (the answer only needs to exceed the file's length).
+        /// </summary>
+        /// <param name="size">The bytes of a scalar type (<see cref="PlyValueReader.SizeOf"/>, which refuses an unknown type).</param>
+        public double MinimumDataBytes(Func<string, int> size)
+        {
+            var ascii = Format == "ascii";
+            double total = 0;
+            foreach (var element in Elements)
+            {
+                double perElement = 0;
+                foreach (var property in element.Properties)
+                    perElement += ascii ? 1 : size(property.IsList ? property.CountType : property.Type);
+                total += perElement * element.Count;
+            }
+            return total;
+        }
+
+        /// <summary>
         /// Reads <see cref="Format"/> and <see cref="Elements"/> from the lines after the first; comments, <c>obj_info</c>
-        /// and unknown lines are skipped. Returns the first <c>property</c> line it cannot read, or null. An element
-        /// count that is not a number throws <see cref="FormatException"/> or <see cref="OverflowException"/>.
+        /// and unknown lines are skipped. Returns the first <c>element</c> or <c>property</c> line it cannot read, or null:
+        /// an element count must be a whole number from 0 to <see cref="long.MaxValue"/> (<c>abc</c>, <c>-5</c> or 20
+        /// digits used to escape as "unexpected FormatException").
         /// </summary>
         public string Declare()
         {
@@ -85,7 +107,15 @@ namespace NerfDatasetCreator
                 var parts = l.Split(new[] { ' ', '\t' }, StringSplitOptions.RemoveEmptyEntries);
                 if (parts.Length == 0 || parts[0] == "comment" || parts[0] == "obj_info") continue;
                 if (parts[0] == "format" && parts.Length >= 2) Format = parts[1];
-                else if (parts[0] == "element" && parts.Length == 3) elements.Add(new PlyElement(parts[1], long.Parse(parts[2], CultureInfo.InvariantCulture)));
+                else if (parts[0] == "element")
+                {
+                    if (parts.Length != 3 || !long.TryParse(parts[2], NumberStyles.None, CultureInfo.InvariantCulture, out var count))
+                    {
+                        Elements = elements;
+                        return l;
+                    }
+                    elements.Add(new PlyElement(parts[1], count));
+                }
                 else if (parts[0] == "property" && elements.Count > 0)
                 {
                     if (parts.Length == 5 && parts[1] == "list") elements[elements.Count - 1].Properties.Add(new PlyProperty(parts[4], parts[3], parts[2]));

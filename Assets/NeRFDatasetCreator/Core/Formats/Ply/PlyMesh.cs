@@ -17,6 +17,9 @@ namespace NerfDatasetCreator
         /// <summary>Header lines up to and including end_header: a header longer than 10000 lines has none.</summary>
         const int MaxHeaderLines = 10000 + 1;
 
+        /// <summary>Header bytes read at most: 10000 lines of 100 characters.</summary>
+        const int MaxHeaderBytes = 1 << 20;
+
         PlyMesh(List<Vector3d> vertices, List<int> triangles, List<Vector3d> normals)
         {
             Vertices = vertices;
@@ -35,9 +38,9 @@ namespace NerfDatasetCreator
         /// <param name="fail">Makes the exception for a reason and its fix, e.g. ("has no vertices.", "Export the reconstruction's points or mesh.").</param>
         public static PlyMesh Read(string path, Func<string, string, Exception> fail)
         {
-            using (var stream = new BufferedStream(File.OpenRead(path), 1 << 16))
+            using (var stream = ReadableFile.OpenRead(path, ReadableFile.MaxGeometryBytes))
             {
-                var header = PlyHeader.Read(stream, maxLines: MaxHeaderLines);
+                var header = PlyHeader.Read(stream, MaxHeaderBytes, MaxHeaderLines);
                 if (header.CutShort) throw fail("ends inside its PLY header.", "Re-export the file.");
                 if (!header.Ended) throw fail("has no end_header.", "Re-export the file.");
                 if (header.Lines[0] != "ply") throw fail("is not a PLY file (no 'ply' first line).", "Export as PLY.");
@@ -55,6 +58,12 @@ namespace NerfDatasetCreator
                 var hasNormals = inx >= 0 && iny >= 0 && inz >= 0;
 
                 var reader = new PlyValueReader(stream, format, reason => fail(reason, "Re-export the file."));
+                // What the header claims must fit in what follows it, checked before a list of its size is allocated.
+                var available = stream.Length - stream.Position;
+                var needed = header.MinimumDataBytes(reader.SizeOf);
+                if (needed > available)
+                    throw fail("is truncated: its header declares " + string.Join(", ", header.Elements.Select(e => "element " + e.Name + " " + e.Count)) + ", at least " +
+                               needed.ToString("0", CultureInfo.InvariantCulture) + " bytes of " + format + " data, but only " + available + " bytes follow the header.", "Re-export the file.");
                 var vertices = new List<Vector3d>((int)vertexElement.Count);
                 var normals = hasNormals ? new List<Vector3d>((int)vertexElement.Count) : null;
                 var triangles = new List<int>();

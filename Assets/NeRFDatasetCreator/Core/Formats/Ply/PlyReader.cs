@@ -30,7 +30,7 @@ namespace NerfDatasetCreator
 
         static IReadOnlyList<CloudPoint> ReadPoints(string path)
         {
-            using (var file = File.OpenRead(path))
+            using (var file = ReadableFile.OpenRead(path, ReadableFile.MaxGeometryBytes))
             {
                 // The header is compared as text with the one PlyWriter writes, so it is read no further than a header can be long.
                 var header = PlyHeader.Read(file, maxBytes: MaxHeaderBytes).Text;

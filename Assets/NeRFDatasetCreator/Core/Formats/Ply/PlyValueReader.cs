@@ -26,6 +26,9 @@ namespace NerfDatasetCreator
     /// </summary>
     public sealed class PlyValueReader
     {
+        /// <summary>The longest ascii element line read (a face of 1 M indices would need more; no mesh has one).</summary>
+        public const int MaxAsciiLine = 1 << 20;
+
         readonly Stream stream;
         readonly bool ascii, swap;
         readonly Func<string, Exception> fail;
@@ -71,6 +74,8 @@ namespace NerfDatasetCreator
                 var b = NextByte();
                 if (b < 0) { if (line.Length == 0) throw fail("ends before all its elements."); break; }
                 if (b == '\n') { if (line.ToString().Trim().Length == 0) { line.Clear(); continue; } break; }
+                // An element is a few numbers: a longer line is binary or garbage data, refused before it fills memory.
+                if (line.Length >= MaxAsciiLine) throw fail("has an ascii line longer than " + MaxAsciiLine + " characters: its data is not ascii PLY.");
                 line.Append((char)b);
             }
             tokens = line.ToString().Split(new[] { ' ', '\t', '\r' }, StringSplitOptions.RemoveEmptyEntries);
@@ -83,7 +88,10 @@ namespace NerfDatasetCreator
             if (ascii)
             {
                 if (next >= tokens.Length) throw fail("has a short ascii line.");
-                return double.Parse(tokens[next++], NumberStyles.Float, CultureInfo.InvariantCulture);
+                var token = tokens[next++];
+                if (!double.TryParse(token, NumberStyles.Float, CultureInfo.InvariantCulture, out var number))
+                    throw fail("has the value '" + (token.Length > 40 ? token.Substring(0, 40) + "…" : token) + "', which is not a number, in its ascii data.");
+                return number;
             }
             return Read(Scalar(type));
         }
@@ -111,6 +119,9 @@ namespace NerfDatasetCreator
                 default: return BitConverter.ToDouble(value, 0);
             }
         }
+
+        /// <summary>The bytes of the binary scalar type a header names; an unknown name fails.</summary>
+        public int SizeOf(string type) => Size(Scalar(type));
 
         static int Size(PlyScalar type)
         {

@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
@@ -36,13 +37,23 @@ namespace NerfDatasetCreator
                 return false;
             }
             string why;
-            if (record == null || record.File != FileName)
-                why = HasSignature(path)
-                    ? "carries this plugin's header comment but " + DatasetLayout.ConfigFileName + " holds no record of it, so it cannot be checked"
-                    : "was not written by this plugin (no record in " + DatasetLayout.ConfigFileName + ", no " + PluginInfo.Name + " header comment)";
-            else if (PointCloudRecord.HashOf(path) != record.Sha256)
-                why = "differs from the cloud this plugin wrote (its SHA-256 is not the one in " + DatasetLayout.ConfigFileName + ")";
-            else return true;
+            try
+            {
+                if (record == null || record.File != FileName)
+                    why = HasSignature(path)
+                        ? "carries this plugin's header comment but " + DatasetLayout.ConfigFileName + " holds no record of it, so it cannot be checked"
+                        : "was not written by this plugin (no record in " + DatasetLayout.ConfigFileName + ", no " + PluginInfo.Name + " header comment)";
+                else if (PointCloudRecord.HashOf(path) != record.Sha256)
+                    why = "differs from the cloud this plugin wrote (its SHA-256 is not the one in " + DatasetLayout.ConfigFileName + ")";
+                else return true;
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                // A pipe, a device or an unreadable file under this name (ReadableFile refuses it unopened): not the target's surface.
+                warnings?.Add(new ValidationProblem(FileName, "unreadable", "cannot be read (" + e.Message + "), so it is NOT used as the target's surface.",
+                    "Restore points3d.ply from the capture, or delete it."));
+                return false;
+            }
             warnings?.Add(new ValidationProblem(FileName, "foreign",
                 why + ". It is most likely the random [−1.3, 1.3]³ cloud 3DGS writes into a Blender dataset without one, and is NOT used as the target's surface (no nerfstudio ply_file_path, no COLMAP points3D from it).",
                 "Delete it (3DGS makes a new random one when it needs it), or capture with pointCloudPoints > 0 for the target's real surface."));
@@ -52,7 +63,7 @@ namespace NerfDatasetCreator
         /// <summary>Whether one of the header's first 16 lines is our signature comment (<see cref="PlyWriter.Signature"/>).</summary>
         static bool HasSignature(string path)
         {
-            using (var file = File.OpenRead(path))
+            using (var file = ReadableFile.OpenRead(path, long.MaxValue))
                 return PlyHeader.Read(file, maxLines: 16).Lines.Contains("comment " + PlyWriter.Signature);
         }
     }

@@ -38,7 +38,7 @@ namespace NerfDatasetCreator
         public static string HashOf(string path)
         {
             using (var sha = SHA256.Create())
-            using (var stream = System.IO.File.OpenRead(path))
+            using (var stream = ReadableFile.OpenRead(path, long.MaxValue)) // streamed: any size, but a pipe or device is refused unopened
             {
                 var hash = sha.ComputeHash(stream);
                 var hex = new StringBuilder(hash.Length * 2);
@@ -62,8 +62,9 @@ namespace NerfDatasetCreator
             var file = o["file"];
             var sha = o["sha256"];
             var points = o["points"];
-            if (file?.Type != JTokenType.String || sha?.Type != JTokenType.String || points?.Type != JTokenType.Integer) return null;
-            return new PointCloudRecord((string)file, ((string)sha).ToLowerInvariant(), (int)points);
+            // A count beyond int (3e9, or 30 digits) is a malformed record like any other, not an OverflowException.
+            if (file?.Type != JTokenType.String || sha?.Type != JTokenType.String || !JsonValues.TryInt(points, out var count) || count < 0) return null;
+            return new PointCloudRecord((string)file, ((string)sha).ToLowerInvariant(), count);
         }
     }
 }

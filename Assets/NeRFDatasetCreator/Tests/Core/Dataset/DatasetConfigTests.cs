@@ -125,8 +125,19 @@ namespace NerfDatasetCreator.Tests
             throw new AssertionException("JObject.Parse accepted " + text);
         }
 
+        [Test]
+        public void AnEmptyConfigIsRefusedUnreadAsAPipeOrDeviceWouldBe()
+        {
+            // 0 bytes: an empty file, a FIFO and /dev/zero look alike to .NET, and none is opened (ReadableFile).
+            using (var folder = new TempFolder())
+            {
+                var read = WriteAndRead(folder, "");
+                Assert.That(read.State, Is.EqualTo(DatasetConfigState.Unreadable));
+                Assert.That(read.Error, Is.EqualTo(folder.Combine("dataset_config.json") + " " + ReadableFile.EmptyReason));
+            }
+        }
+
         [TestCase("{\"generator\": ")]
-        [TestCase("")]
         [TestCase("{\"generator\": \"NeRF Dataset Creator\"} trailing")]
         public void TextThatIsNotJsonIsNamedWithTheParsersWords(string text)
         {

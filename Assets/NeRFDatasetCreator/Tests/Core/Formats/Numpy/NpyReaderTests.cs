@@ -76,5 +76,54 @@ namespace NerfDatasetCreator.Tests
             Assert.That(() => NpyReader.Decode(Npy("<f4", new[] { 1 }, new byte[4], fortranOrder: "True"), "c.npy"), Throws.TypeOf<InvalidDataException>().With.Message.EqualTo("c.npy is stored in Fortran order."));
             Assert.That(() => NpyReader.Decode(Npy("<f4", new[] { 3 }, new byte[8]), "d.npy"), Throws.TypeOf<InvalidDataException>().With.Message.EqualTo("d.npy is cut short: its shape needs 12 bytes of data."));
         }
+
+        [Test]
+        public void AShapeWhoseProductOverflowsIsRefusedNamingTheFile()
+        {
+            // 2147483647³ wraps a 64-bit product (it used to end in a negative-size allocation).
+            var huge = Npy("<f4", new[] { int.MaxValue, int.MaxValue, int.MaxValue }, new byte[4]);
+            Assert.That(() => NpyReader.Decode(huge, "e.npy"), Throws.InstanceOf<InvalidDataException>().With.Message.EqualTo("e.npy has shape (2147483647, 2147483647, 2147483647), more values than any array holds."));
+            var tooMany = Npy("<f4", new[] { 100000, 100000, 1 }, new byte[4]);
+            Assert.That(() => NpyReader.Decode(tooMany, "f.npy"), Throws.InstanceOf<InvalidDataException>().With.Message.EqualTo("f.npy has shape (100000, 100000, 1): 10000000000 values, more than the 2147483647 expected."));
+        }
+
+        [Test]
+        public void AGzipBombIsReadNoFurtherThanItsShapeAndAnArrayLargerThanTheImageIsRefusedUnread()
+        {
+            using (var temp = new TempFolder())
+            {
+                // A 2 × 3 array followed by 256 MiB of zeros: about 2.5 MB of gzip at the fastest level.
+                var path = temp.Combine("bomb.npy.gz");
+                var npy = Npy("<f4", new[] { 2, 3, 1 }, Float32s(1, 2, 3, 4, 5, 6));
+                var zeros = new byte[1 << 20];
+                using (var file = File.Create(path))
+                using (var gz = new GZipStream(file, CompressionLevel.Fastest))
+                {
+                    gz.Write(npy, 0, npy.Length);
+                    for (var i = 0; i < 256; i++) gz.Write(zeros, 0, zeros.Length);
+                }
+                Assert.That(new FileInfo(path).Length, Is.LessThan(4 << 20));
+                var before = GC.GetAllocatedBytesForCurrentThread();
+                var array = NpyReader.ReadGz(path, 6);
+                var allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+                Assert.That(array.Values, Is.EqualTo(new[] { 1f, 2f, 3f, 4f, 5f, 6f }));
+                Assert.That(allocated, Is.LessThan(8 << 20), "the 256 MiB of zeros after the data are never inflated into memory");
+                // The header's claim is checked against the image the caller expects before the data is read.
+                Assert.That(() => NpyReader.ReadGz(path, 5), Throws.InstanceOf<InvalidDataException>().With.Message.EqualTo(path + " has shape (2, 3, 1): 6 values, more than the 5 expected."));
+                var header = temp.Combine("header.npy.gz");
+                File.WriteAllBytes(header, Gzip(new byte[] { 0x93, (byte)'N', (byte)'U', (byte)'M', (byte)'P', (byte)'Y', 2, 0, 0, 0, 0, 0x40 }));
+                Assert.That(() => NpyReader.ReadGz(header), Throws.InstanceOf<InvalidDataException>().With.Message.EqualTo(header + " declares a header of 1073741824 bytes, more than the 65536 any NumPy writes."));
+                var plain = temp.Combine("plain.npy.gz");
+                File.WriteAllBytes(plain, npy);
+                Assert.That(() => NpyReader.ReadGz(plain), Throws.InstanceOf<InvalidDataException>().With.Message.StartsWith(plain + " is not gzip-compressed"));
+            }
+        }
+
+        static byte[] Gzip(byte[] bytes)
+        {
+            var memory = new MemoryStream();
+            using (var gz = new GZipStream(memory, CompressionMode.Compress, true)) gz.Write(bytes, 0, bytes.Length);
+            return memory.ToArray();
+        }
     }
 }
