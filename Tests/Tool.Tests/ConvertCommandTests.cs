@@ -95,6 +95,7 @@ namespace NerfDatasetCreator.Tool.Tests
         /// <summary>The config's loader names work for --to: 3dgs is the COLMAP source 3DGS reads, instant-ngp the ngp export.</summary>
         [TestCase("3dgs", "colmap", "sparse/0/cameras.txt")]
         [TestCase("instant-ngp", "ngp", "transforms.json")]
+        [TestCase("gsplat", "colmap", "sparse/0/cameras.txt")]
         public void TheConfigsLoaderNamesConvertToTheirFormat(string loader, string target, string file)
         {
             var run = ToolRun.Of("convert", _dataset, "--to", loader, "--out", _scratch.PathOf("by-loader"));
@@ -217,7 +218,7 @@ namespace NerfDatasetCreator.Tool.Tests
 
         [TestCase(new[] { "convert", "ds", "--to", "blender" }, "--to = blender: is the format the dataset is already in (nerf_synthetic / Blender)")]
         [TestCase(new[] { "convert", "ds", "--to", "gaussian-splatting" }, "--to = gaussian-splatting: is not an export format.")]
-        [TestCase(new[] { "convert", "ds", "--to", "instantngp" }, "--to = instantngp: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping (or the config's loader names 3dgs = colmap, instant-ngp = ngp). Did you mean \"instant-ngp\"?")]
+        [TestCase(new[] { "convert", "ds", "--to", "instantngp" }, "--to = instantngp: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp). Did you mean \"instant-ngp\"?")]
         [TestCase(new[] { "convert", "ds" }, "convert needs --to nerfstudio|colmap|ngp")]
         [TestCase(new[] { "convert", "--to", "ngp" }, "convert needs exactly one dataset folder")]
         public void UsageErrorsExitTwo(string[] args, string error)

@@ -31,6 +31,9 @@ namespace NerfDatasetCreator
         {
             new KeyValuePair<string, ExportTarget>("3dgs", ExportTarget.Colmap),
             new KeyValuePair<string, ExportTarget>("instant-ngp", ExportTarget.Ngp),
+            // Not a config loader but a trainer that reads the COLMAP export as it is (convert prints its command too),
+            // and the name a gsplat user types first.
+            new KeyValuePair<string, ExportTarget>("gsplat", ExportTarget.Colmap),
         };
 
         /// <summary>The names of the format the dataset is already in: the Blender loaders read the folder as it is.</summary>
@@ -57,7 +60,7 @@ namespace NerfDatasetCreator
                 return null;
             }
             problem = new ValidationProblem("--to", value ?? "", "is not an export format.",
-                "Use one of: " + string.Join(", ", Names) + " (or the config's loader names 3dgs = colmap, instant-ngp = ngp)." + SpellingSuggestion.Sentence(written, Accepted));
+                "Use one of: " + string.Join(", ", Names) + " (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp)." + SpellingSuggestion.Sentence(written, Accepted));
             return null;
         }
     }

@@ -13,6 +13,7 @@ namespace NerfDatasetCreator.Tests
         [TestCase("3dgs", ExportTarget.Colmap)]
         [TestCase("3DGS", ExportTarget.Colmap)]
         [TestCase("instant-ngp", ExportTarget.Ngp)]
+        [TestCase("gsplat", ExportTarget.Colmap)]
         public void Parse_KnownNames(string value, ExportTarget expected)
         {
             Assert.That(ExportTargets.Parse(value, out var problem), Is.EqualTo(expected));
@@ -22,9 +23,9 @@ namespace NerfDatasetCreator.Tests
         [Test]
         public void Parse_UnknownName_ListsTheValidOnes()
         {
-            Assert.That(ExportTargets.Parse("splat", out var problem), Is.Null);
+            Assert.That(ExportTargets.Parse("obj", out var problem), Is.Null);
             Assert.That(problem.Field, Is.EqualTo("--to"));
-            Assert.That(problem.Fix, Is.EqualTo("Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping (or the config's loader names 3dgs = colmap, instant-ngp = ngp)."));
+            Assert.That(problem.Fix, Is.EqualTo("Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp)."));
         }
 
         [TestCase("3dsg", "3dgs")]
