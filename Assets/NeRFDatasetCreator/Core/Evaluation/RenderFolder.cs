@@ -26,12 +26,13 @@ namespace NerfDatasetCreator
             var detected = layout ?? Detect(root, split, framePaths);
             if (detected == null)
                 throw Problem(root, "holds no renders of the " + split + " split in a layout this tool knows: looked for " + split + "/ours_<iter>/renders/00000.png (3DGS render.py), " +
-                                    split + "/rgb/<name>.png (nerfstudio ns-render dataset) and " + BaseName(framePaths.FirstOrDefault() ?? "r_0") + ".png (instant-ngp screenshots, plain).",
+                                    split + "/rgb/<name>.png (nerfstudio ns-render dataset), testset_<iter>/000.png (nerf-pytorch) and " + BaseName(framePaths.FirstOrDefault() ?? "r_0") + ".png (instant-ngp screenshots, plain).",
                     "Point --renders at the trainer's output folder, or name the layout with --layout " + string.Join("|", RenderLayouts.Names) + ".");
             switch (detected.Value)
             {
                 case RenderLayout.GaussianSplatting: return GaussianSplatting(root, split, framePaths);
                 case RenderLayout.Nerfstudio: return Nerfstudio(root, split, framePaths);
+                case RenderLayout.NerfPytorch: return NerfPytorchRenders.Read(root, split, framePaths);
                 default: return ByName(root, split, framePaths, detected.Value);
             }
         }
@@ -50,6 +51,7 @@ namespace NerfDatasetCreator
         {
             if (GaussianIterationFolders(Path.Combine(root, split)).Count > 0 || IsGaussianIterationFolder(root)) return RenderLayout.GaussianSplatting;
             if (Directory.Exists(Path.Combine(root, split, "rgb")) || Directory.Exists(Path.Combine(root, "rgb"))) return RenderLayout.Nerfstudio;
+            if (NerfPytorchRenders.Holds(root)) return RenderLayout.NerfPytorch;
             var first = BaseName(framePaths.FirstOrDefault() ?? "");
             if (first.Length > 0 && (File.Exists(Path.Combine(root, first + ".png")) || File.Exists(Path.Combine(root, split, first + ".png")))) return RenderLayout.Plain;
             return null;
@@ -221,10 +223,10 @@ namespace NerfDatasetCreator
             return new RenderSet(layout, folder, views, new List<string>());
         }
 
-        static string Describe(List<string> names) =>
+        internal static string Describe(List<string> names) =>
             names.Count <= 3 ? string.Join(", ", names) : string.Join(", ", names.Take(3)) + " and " + (names.Count - 3) + " more";
 
-        static InvalidParameterException Problem(string path, string reason, string fix) =>
+        internal static InvalidParameterException Problem(string path, string reason, string fix) =>
             new InvalidParameterException(new[] { new ValidationProblem("--renders", path, reason, fix) });
     }
 }

@@ -11,12 +11,12 @@ namespace NerfDatasetCreator
     public static class EvaluateCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("evaluate",
-            "evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
+            "evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
             "score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html", Parse, Run).WithOptions(
             "--renders <dir>               the trainer's renders of the split (3DGS model folder, ns-render --output-path, instant-ngp --screenshot_dir, or r_<i>.png)",
             "--split test|val|train        the split the renders show (default test)",
             "--out <dir>                   where metrics.json, report.html and the error maps go (default <renders>/evaluation-<split>)",
-            "--layout 3dgs|nerfstudio|ngp|plain  how the renders are named (default: detected)",
+            "--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain  how the renders are named (default: detected)",
             "--background white|black|dataset    what the dataset's transparent pixels are composited on (default white)",
             "--render-depth z|ray          the renders' depth: z-depth (splatfacto) or distance along the ray (nerfacto)",
             "--geometry <recon.ply|.obj|folder>  also score a reconstructed surface (Chamfer, F-score)",

@@ -64,6 +64,58 @@ namespace NerfDatasetCreator.Tests
             }
         }
 
+        /// <summary>nerf-pytorch run_nerf.py: &lt;basedir&gt;/&lt;expname&gt;/testset_{:06d}/'{:03d}'.png over poses[i_test] (RenderLayouts.Source).</summary>
+        static void NerfPytorchRenders(string folder, int count)
+        {
+            for (var i = 0; i < count; i++) Png(Path.Combine(folder, i.ToString("000") + ".png"));
+        }
+
+        [Test]
+        public void NerfPytorchRendersAreReadInFrameOrderFromTheLatestIteration()
+        {
+            using (var temp = new TempFolder())
+            {
+                var experiment = temp.Combine("logs", "lego");
+                NerfPytorchRenders(Path.Combine(experiment, "testset_050000"), 3);
+                NerfPytorchRenders(Path.Combine(experiment, "testset_200000"), 3);
+                NerfPytorchRenders(Path.Combine(experiment, "renderonly_test_200000"), 3);
+                File.WriteAllText(Path.Combine(experiment, "renderonly_test_200000", "video.mp4"), "");
+                File.WriteAllText(Path.Combine(experiment, "args.txt"), "");
+                var set = RenderFolder.Read(experiment, null, "test", Frames);
+                Assert.That(set.Layout, Is.EqualTo(RenderLayout.NerfPytorch));
+                // The latest iteration, and at one iteration the render-only pass made from the saved weights.
+                Assert.That(set.Folder, Does.EndWith("renderonly_test_200000"));
+                Assert.That(set.Views.Select(v => Path.GetFileName(v.ColourPath)), Is.EqualTo(new[] { "000.png", "001.png", "002.png" }));
+                Assert.That(set.Views.Select(v => v.FramePath), Is.EqualTo(Frames));
+                Assert.That(set.Notes.Single(), Does.Contain("testset_050000, testset_200000, renderonly_test_200000"));
+                // One of the folders itself is that one.
+                var earlier = RenderFolder.Read(Path.Combine(experiment, "testset_050000"), null, "test", Frames);
+                Assert.That(earlier.Layout, Is.EqualTo(RenderLayout.NerfPytorch));
+                Assert.That(earlier.Folder, Does.EndWith("testset_050000"));
+                Assert.That(RenderLayouts.TryParse("nerf-pytorch", out var named) && named == RenderLayout.NerfPytorch, Is.True);
+            }
+        }
+
+        [Test]
+        public void NerfPytorchRendersOfEveryEighthTestViewAreRefusedNamingTestskip()
+        {
+            using (var temp = new TempFolder())
+            {
+                var experiment = temp.Combine("logs", "lego");
+                // 20 test frames; nerf-pytorch's default --testskip 8 loads frames 0, 8 and 16 (load_blender.py lines 51-56).
+                var frames = Enumerable.Range(0, 20).Select(i => "./test/r_" + i).ToArray();
+                NerfPytorchRenders(Path.Combine(experiment, "testset_010000"), 3);
+                Assert.That(() => RenderFolder.Read(experiment, null, "test", frames),
+                    Throws.TypeOf<InvalidParameterException>().With.Message.Contains("holds 3 renders but transforms_test.json lists 20 frames — every 8th one, as nerf-pytorch's --testskip 8 loads them")
+                        .And.Message.Contains("--testskip 1"));
+                Assert.That(() => RenderFolder.Read(experiment, null, "val", frames),
+                    Throws.TypeOf<InvalidParameterException>().With.Message.Contains("test split only"));
+                File.WriteAllText(Path.Combine(experiment, "testset_010000", "r_0.png"), "");
+                Assert.That(() => RenderFolder.Read(Path.Combine(experiment, "testset_010000"), RenderLayout.NerfPytorch, "test", frames),
+                    Throws.TypeOf<InvalidParameterException>().With.Message.Contains("holds r_0.png, which nerf-pytorch does not write there"));
+            }
+        }
+
         [Test]
         public void NerfstudioDatasetRendersArePairedByImageName()
         {
