@@ -131,7 +131,7 @@ namespace NerfDatasetCreator.Tool.Tests
 
         [TestCase(new[] { "evaluate", "d" }, "evaluate needs --renders <folder>")]
         [TestCase(new[] { "evaluate", "--renders", "r" }, "evaluate needs exactly one dataset folder")]
-        [TestCase(new[] { "evaluate", "d", "--renders", "r", "--layout", "mipnerf" }, "--layout = mipnerf: is not 3dgs, nerfstudio, ngp, plain.")]
+        [TestCase(new[] { "evaluate", "d", "--renders", "r", "--layout", "mipnerf" }, "--layout = mipnerf: is not 3dgs, nerfstudio, ngp, plain, nerf-pytorch.")]
         [TestCase(new[] { "evaluate", "d", "--renders", "r", "--background", "grey" }, "--background = grey: is not white, black or dataset.")]
         [TestCase(new[] { "evaluate", "d", "--renders", "r", "--split", "Test" }, "--split = Test: is not train, val or test.")]
         [TestCase(new[] { "evaluate", "d", "--renders", "r", "--threshold", "0.01" }, "--threshold is the F-score threshold of --geometry")]

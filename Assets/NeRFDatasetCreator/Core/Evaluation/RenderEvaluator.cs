@@ -124,19 +124,30 @@ namespace NerfDatasetCreator
         /// <param name="firstColumn">The renders hold the dataset's columns from here on (<see cref="TrainTestExposureCrop"/>).</param>
         static void CheckSizes(EvaluationDataset dataset, RenderSet renders, int firstColumn)
         {
+            // Every view is looked at (headers only), the first few named in frame order and the rest counted, so a
+            // refusal never hides how many views are wrong (issue 35).
+            const int Named = 5;
             var problems = new List<ValidationProblem>();
-            foreach (var view in renders.Views)
+            var more = 0;
+            void Add(ValidationProblem problem)
+            {
+                if (problems.Count < Named) problems.Add(problem);
+                else more++;
+            }
+            foreach (var view in renders.Views.OrderBy(v => v.FrameIndex))
             {
                 PngInfo truth, render;
                 try { truth = PngInfo.Read(dataset.Frames[view.FrameIndex].ImagePath); }
-                catch (InvalidDataException e) { problems.Add(new ValidationProblem("<dataset>", dataset.Frames[view.FrameIndex].ImagePath, e.Message, "Run nerf-dataset validate on the dataset.")); continue; }
+                catch (InvalidDataException e) { Add(new ValidationProblem("<dataset>", dataset.Frames[view.FrameIndex].ImagePath, e.Message, "Run nerf-dataset validate on the dataset.")); continue; }
                 try { render = PngInfo.Read(view.ColourPath); }
-                catch (InvalidDataException e) { problems.Add(new ValidationProblem("--renders", view.ColourPath, e.Message, "Re-render the view.")); continue; }
+                catch (InvalidDataException e) { Add(new ValidationProblem("--renders", view.ColourPath, e.Message, "Re-render the view.")); continue; }
                 if (render.Width != truth.Width - firstColumn || render.Height != truth.Height)
-                    problems.Add(new ValidationProblem("--renders", view.ColourPath, "is " + render.Width + "×" + render.Height + " but the ground truth " + view.FramePath + " is " + truth.Width + "×" + truth.Height + ".",
-                        "Render at the dataset's resolution (3DGS: -r 1 for images wider than 1600 px; nerfstudio: no --downscale-factor)."));
-                if (problems.Count >= 5) break;
+                    Add(new ValidationProblem("--renders", view.ColourPath, "is " + render.Width + "×" + render.Height + " but the ground truth " + view.FramePath + " is " + truth.Width + "×" + truth.Height + ".",
+                        "Render at the dataset's resolution (3DGS: -r 1 for images wider than 1600 px; nerfstudio: no --downscale-factor; nerf-pytorch: no --half_res)."));
             }
+            if (more > 0)
+                problems.Add(new ValidationProblem("--renders", renders.Folder, "has " + more + " more view(s) like these (" + (Named + more) + " of " + renders.Views.Count + " in all).",
+                    "Render every view of the split at the dataset's resolution."));
             InvalidParameterException.ThrowIfAny(problems.ToArray());
         }
 

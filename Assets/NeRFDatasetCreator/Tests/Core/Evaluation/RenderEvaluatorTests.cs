@@ -347,6 +347,22 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void EveryViewOfAnotherSizeIsCountedTheFirstFiveNamedInFrameOrder()
+        {
+            using (var temp = new TempFolder())
+            {
+                var dataset = temp.Combine("sphere");
+                AnalyticSphereDataset.Write(dataset, W, H, test: 8, mesh: false);
+                var renders = temp.Combine("plain");
+                for (var i = 0; i < 8; i++) TestPng.Write(Path.Combine(renders, "r_" + i + ".png"), W / 2, H / 2, 8, PngInfo.ColorTypeRgb);
+                var message = Assert.Throws<InvalidParameterException>(() => RenderEvaluator.Run(Options(dataset, renders))).Message;
+                for (var i = 0; i < 5; i++) Assert.That(message, Does.Contain("r_" + i + ".png: is 24×20 but the ground truth ./test/r_" + i + " is 48×40"));
+                Assert.That(message, Does.Not.Contain("r_5.png"));
+                Assert.That(message, Does.Contain("has 3 more view(s) like these (8 of 8 in all)"));
+            }
+        }
+
+        [Test]
         public void RendersOfAnotherSizeAreRefused()
         {
             using (var temp = new TempFolder())
