@@ -223,8 +223,12 @@ namespace NerfDatasetCreator
             return new RenderSet(layout, folder, views, new List<string>());
         }
 
-        internal static string Describe(List<string> names) =>
-            names.Count <= 3 ? string.Join(", ", names) : string.Join(", ", names.Take(3)) + " and " + (names.Count - 3) + " more";
+        /// <summary>Up to three of <paramref name="names"/> in reading order (<see cref="FileNameOrder"/>), then how many more.</summary>
+        internal static string Describe(List<string> names)
+        {
+            var sorted = names.OrderBy(n => n, FileNameOrder.Instance).ToList();
+            return sorted.Count <= 3 ? string.Join(", ", sorted) : string.Join(", ", sorted.Take(3)) + " and " + (sorted.Count - 3) + " more";
+        }
 
         internal static InvalidParameterException Problem(string path, string reason, string fix) =>
             new InvalidParameterException(new[] { new ValidationProblem("--renders", path, reason, fix) });

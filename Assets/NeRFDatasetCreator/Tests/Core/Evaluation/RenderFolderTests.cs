@@ -117,6 +117,20 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void ARefusalNamesFilesInReadingOrder()
+        {
+            using (var temp = new TempFolder())
+            {
+                var renders = temp.Combine("plain");
+                foreach (var i in new[] { 0, 1, 2, 10, 9, 8, 7 }) Png(Path.Combine(renders, "r_" + i + ".png"));
+                Assert.That(() => RenderFolder.Read(renders, null, "test", Frames),
+                    Throws.TypeOf<InvalidParameterException>().With.Message.Contains("holds r_7.png, r_8.png, r_9.png and 1 more, which no frame"));
+            }
+            Assert.That(new[] { "r_10.png", "r_9.png", "r_009.png", "a", "r_1.png", "r_1b.png" }.OrderBy(n => n, FileNameOrder.Instance),
+                Is.EqualTo(new[] { "a", "r_1.png", "r_1b.png", "r_009.png", "r_9.png", "r_10.png" }));
+        }
+
+        [Test]
         public void NerfstudioDatasetRendersArePairedByImageName()
         {
             using (var temp = new TempFolder())
