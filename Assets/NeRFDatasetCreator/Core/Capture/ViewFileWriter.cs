@@ -183,9 +183,9 @@ namespace NerfDatasetCreator
 
         /// <summary>
         /// Counts <paramref name="sharp"/>'s matting diagnostics (<see cref="MattingDiagnosis"/>) as the view's, for a view
-        /// whose written colour is not the render its mask belongs to: <see cref="ViewPipeline"/> calls it with the
-        /// mid-pose render of a blurred view, and with the wide render before a lens resamples it (issue 32, R4-3), then
-        /// writes with <c>countMatting: false</c>. Does nothing for a frame without a colour pair (straight alpha).
+        /// whose written colour is not the render its mask belongs to: <see cref="ViewPipeline"/> calls it with the wide
+        /// render before a lens resamples it, and <see cref="WriteSharp"/> with the mid-pose render of a blurred view whose
+        /// split writes no sharp image (issue 32, R4-3); the view is then written with <c>countMatting: false</c>. Does nothing for a frame without a colour pair (straight alpha).
         /// </summary>
         public void CountMatting(PlannedView view, RawFrame sharp)
         {
@@ -197,17 +197,27 @@ namespace NerfDatasetCreator
         /// Motion blur: writes the sharp colour render at the mid pose (<paramref name="sharp"/>, the same passes as a
         /// view without blur) as <c>r_i_sharp_0000.png</c>, resolved like the blurred image. Call it besides
         /// <see cref="Write(PlannedView, RawFrame, RawFrame, bool)"/>, whose colour is the sub-frame average
-        /// (<see cref="SubFrameAccumulator"/>); the matting statistics are counted apart (<see cref="CountMatting"/>).
+        /// (<see cref="SubFrameAccumulator"/>). With <paramref name="countMatting"/> the view's matting diagnostics are
+        /// counted on this sharp render: taken from its own resolve when the split writes it, so the frame is not passed
+        /// over twice, else by <see cref="CountMatting"/>.
         /// </summary>
-        public void WriteSharp(PlannedView view, RawFrame sharp)
+        public void WriteSharp(PlannedView view, RawFrame sharp, bool countMatting = false)
         {
-            if (!view.Writes(DatasetFileKind.SharpPng)) return;
+            if (!view.Writes(DatasetFileKind.SharpPng))
+            {
+                if (countMatting) CountMatting(view, sharp);
+                return;
+            }
             long started = Stopwatch.GetTimestamp();
             long encoding = 0;
             var s = scratch ?? (scratch = new Scratch());
             int width = sharp.OutputWidth, height = sharp.OutputHeight;
             var rgba = Exact(ref s.Rgba, width * height * 4);
-            if (sharp.ColorOverBlack != null) DifferenceMatting.Resolve(sharp, rgba, _background, _backgroundIsClear);
+            if (sharp.ColorOverBlack != null)
+            {
+                var diagnostics = DifferenceMatting.Resolve(sharp, rgba, _background, _backgroundIsClear);
+                if (countMatting) _matting.Add(view.Split, view.Index, diagnostics);
+            }
             else StraightAlpha.Resolve(sharp, rgba, _background, null);
             // With exposure, the sharp image is exposed like the blurred one, so that the two differ by the motion only.
             if (_exposure != null && _exposure.Applies(view.Split)) ExposureWhiteBalance.ApplyRgba(rgba, _exposure.For(view.Split, view.Index));

@@ -54,9 +54,10 @@ namespace NerfDatasetCreator
         {
             // The matting diagnostics need a colour pair and a mask of the same render: the sharp frame, before any
             // resampling. A blurred average or a resampled colour would show every moving or distorted edge as "stray
-            // background" (issue 32, R4-3), so those views are counted here and written without counting.
+            // background" (issue 32, R4-3): a lens view is counted here, on its wide render, a blurred one on its sharp
+            // render as that is written (WriteSharp), and neither is counted again as its image is written.
             var countApart = _lens != null || blurred != null;
-            if (countApart) Files.CountMatting(view, colour);
+            if (_lens != null) Files.CountMatting(view, colour);
             if (_lens != null)
             {
                 // The wide frames resampled into the distorted ones, on this worker thread, into its reused arrays (the frames
@@ -83,7 +84,7 @@ namespace NerfDatasetCreator
             }
             // Motion blur: the file_path image is the sub-frame average; the mid-pose render is the sharp image beside it.
             Files.Write(view, blurred, data, countMatting: false);
-            Files.WriteSharp(view, colour);
+            Files.WriteSharp(view, colour, countMatting: _lens == null);
         }
 
         /// <summary>

@@ -28,24 +28,11 @@ namespace NerfDatasetCreator
             path = Path.GetFullPath(path);
             RemoveLeftovers(path);
             if (File.Exists(path) || Directory.Exists(path)) throw new IOException(path + " already exists; it is never replaced.");
-            var temp = TempPath(path, OperationOwner.Current);
-            // Registered while it is written: a run in this process that asks sees it as live, never as a leftover.
-            OperationOwner.Register(temp);
-            try
+            ThroughTemp(path, temp =>
             {
-                if (File.Exists(temp)) FileOps.DeleteFile(temp); // this process's own, from an attempt that failed
                 FileOps.WriteNew(temp, write);
                 FileOps.MoveFile(temp, path); // fails, replacing nothing, if path appeared meanwhile
-            }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
-            {
-                if (File.Exists(temp)) File.Delete(temp);
-                throw;
-            }
-            finally
-            {
-                OperationOwner.Release(temp);
-            }
+            });
         }
 
         /// <summary><see cref="WriteNew(string, Action{Stream})"/> for UTF-8 text without a byte-order mark.</summary>
@@ -69,13 +56,25 @@ namespace NerfDatasetCreator
                 return;
             }
             RemoveLeftovers(path);
+            ThroughTemp(path, temp =>
+            {
+                FileOps.WriteText(temp, text);
+                File.Replace(temp, path, null);
+            });
+        }
+
+        /// <summary>
+        /// Runs <paramref name="writeAndCommit"/> with this run's temporary file of <paramref name="path"/>, registered as
+        /// live meanwhile (a run in this process never takes it for a leftover); the temporary file is removed if it fails.
+        /// </summary>
+        static void ThroughTemp(string path, Action<string> writeAndCommit)
+        {
             var temp = TempPath(path, OperationOwner.Current);
             OperationOwner.Register(temp);
             try
             {
-                if (File.Exists(temp)) FileOps.DeleteFile(temp);
-                FileOps.WriteText(temp, text);
-                File.Replace(temp, path, null);
+                if (File.Exists(temp)) FileOps.DeleteFile(temp); // this process's own, from an attempt that failed
+                writeAndCommit(temp);
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {

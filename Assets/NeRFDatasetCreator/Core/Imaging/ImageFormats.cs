@@ -35,7 +35,8 @@ namespace NerfDatasetCreator
         {
             try
             {
-                using (var stream = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.ReadWrite))
+                // Through the one gate for every file read: a pipe or device named like a JPEG is never opened.
+                using (var stream = ReadableFile.OpenRead(path, long.MaxValue))
                 {
                     var head = new byte[3];
                     return stream.Read(head, 0, 3) == 3 && head[0] == 0xFF && head[1] == 0xD8 && head[2] == 0xFF;
