@@ -25,6 +25,9 @@ namespace NerfDatasetCreator
         /// <summary>False for a plan written without images (<c>nerf-dataset plan</c>): validation then skips the image checks.</summary>
         public bool ImagesRendered { get; }
 
+        /// <summary>The Editor's facts about the target and project for <c>unity_frame</c>, or null outside Unity (set by the capture).</summary>
+        public UnityFrameFacts UnityFrame { get; set; }
+
         /// <summary>Measured figures (e.g. "viewsPerSecond"), written in name order.</summary>
         public SortedDictionary<string, double> Statistics { get; } = new SortedDictionary<string, double>(StringComparer.Ordinal);
     }

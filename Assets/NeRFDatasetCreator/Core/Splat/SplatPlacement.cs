@@ -1,0 +1,46 @@
+namespace NerfDatasetCreator
+{
+    /// <summary>
+    /// Where a trained Gaussian splat goes in the Unity scene it was captured from (<c>nerf-dataset place-splat</c>,
+    /// issue 34): the 4×4 that maps every Gaussian centre of <see cref="PlyPath"/> to Unity world, and the same placement
+    /// as a Unity Transform shows it (one negative scale component carries the reflection).
+    /// </summary>
+    public sealed class SplatPlacement
+    {
+        public SplatPlacement(string trainer, string plyPath, double[] objectToWorld, double[] position, double[] rotation, double[] scale, string camerasJsonPath, System.Collections.Generic.IReadOnlyList<string> notes)
+        {
+            Trainer = trainer;
+            PlyPath = plyPath;
+            ObjectToWorld = objectToWorld;
+            Position = position;
+            Rotation = rotation;
+            Scale = scale;
+            CamerasJsonPath = camerasJsonPath;
+            Notes = notes ?? new string[0];
+        }
+
+        /// <summary>"3dgs", "nerfstudio" or "gsplat".</summary>
+        public string Trainer { get; }
+
+        /// <summary>The absolute path of the PLY placed.</summary>
+        public string PlyPath { get; }
+
+        /// <summary>x_unity = M·[x_ply, 1]: 16 numbers, row-major, in Unity's world.</summary>
+        public double[] ObjectToWorld { get; }
+
+        /// <summary>Transform.position (x, y, z), Unity world.</summary>
+        public double[] Position { get; }
+
+        /// <summary>Transform.rotation as a quaternion (x, y, z, w), Unity's convention.</summary>
+        public double[] Rotation { get; }
+
+        /// <summary>Transform.localScale (x, y, z); exactly one component is negative when the map reflects.</summary>
+        public double[] Scale { get; }
+
+        /// <summary>The 3DGS-format cameras.json written for the viewer's camera slider, or null when none was written.</summary>
+        public string CamerasJsonPath { get; }
+
+        /// <summary>What the user should know (a choice made, a file not written and why).</summary>
+        public System.Collections.Generic.IReadOnlyList<string> Notes { get; }
+    }
+}
