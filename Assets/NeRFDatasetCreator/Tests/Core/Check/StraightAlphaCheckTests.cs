@@ -164,6 +164,38 @@ namespace NerfDatasetCreator.Tests
             Assert.That(problems.Count, Is.EqualTo(premultiplied ? 1 : 0), result.SummaryLine);
         }
 
+        /// <summary>
+        /// A point-sampled picture (no anti-aliasing): a bright opaque disc ringed by dark blue glass of alpha 128, then
+        /// the background — the check benchmark's glass sphere beside an opaque one. The glass pixels lie between an
+        /// interior and the background, but on an alpha plateau, not a ramp: their colour is the glass's own, so judging
+        /// them against the disc read β ≈ 1.8 (premultiplied) although nothing was. They are not judged now.
+        /// </summary>
+        [TestCase(2)]
+        [TestCase(3)]
+        public void GlassPlateauBesideAnOpaqueSurfaceIsNotAnEdge(int ringWidth)
+        {
+            const int w = 96, h = 72;
+            const double radius = 20;
+            var rgba = new byte[w * h * 4];
+            for (var y = 0; y < h; y++)
+                for (var x = 0; x < w; x++)
+                {
+                    double dx = x + 0.5 - w / 2.0, dy = y + 0.5 - h / 2.0, r = Math.Sqrt(dx * dx + dy * dy);
+                    var p = (y * w + x) * 4;
+                    if (r < radius) { rgba[p] = rgba[p + 1] = rgba[p + 2] = 230; rgba[p + 3] = 255; }
+                    else if (r < radius + ringWidth) { rgba[p] = 20; rgba[p + 1] = 40; rgba[p + 2] = 120; rgba[p + 3] = 128; }
+                }
+            var images = new CheckImages { Width = w, Height = h, ColourImage = new PngImage(w, h, 8, PngInfo.ColorTypeRgba, rgba), Alpha = new byte[w * h] };
+            for (var i = 0; i < w * h; i++) images.Alpha[i] = rgba[i * 4 + 3];
+            var check = new StraightAlphaCheck();
+            var problems = new System.Collections.Generic.List<DatasetProblem>();
+            check.View(new CheckView { Split = "train", Frame = 0, ColourFile = "train/r_0.png" }, images, problems);
+            var result = check.Finish();
+            TestContext.WriteLine(result.SummaryLine);
+            Assert.That(problems, Is.Empty, result.SummaryLine);
+            Assert.That(result.Status, Is.Not.EqualTo(DatasetCheckStatus.Failed), result.SummaryLine);
+        }
+
         [Test]
         public void DarkTargetCannotBeToldEitherWay()
         {
