@@ -10,7 +10,7 @@ namespace NerfDatasetCreator.Benchmarks
     /// Prints figures; asserts nothing. The same sources build for .NET (this project) and for Mono, the runtime
     /// Unity's editor runs (Tests/Benchmarks/run-all builds both, runs both and prints them side by side with
     /// Pillow's PNG encoder as an anchor).
-    /// Options: --only post|matting|png|view|plan|tracks|eval|check|labels|exposure|lens|blur (one section; check, exposure, lens and blur only when named; check renders a 300-view dataset once), --dump-eval DIR (evaluation's image pair and clouds for evaluate_anchor.py), --tsv FILE (figures as "key TAB value" lines for run-all),
+    /// Options: --only post|matting|png|view|plan|tracks|eval|check|labels|exposure|lens|blur|flow (one section; check, exposure, lens, blur and flow only when named; check renders a 300-view dataset once), --dump-eval DIR (evaluation's image pair and clouds for evaluate_anchor.py), --dump-flow DIR (the flow mesh and rays for flow_anchor.c), --tsv FILE (figures as "key TAB value" lines for run-all),
     /// --dump DIR (the raw images the PNG figures use, for the Pillow anchor), --batches N.
     /// </summary>
     static class Program
@@ -48,6 +48,7 @@ namespace NerfDatasetCreator.Benchmarks
             if (only == "lens") LensBenchmark.Run(Record, steps => Interleaved(true, steps));
             if (only == null || only == "labels") LabelsBenchmark.Run(Record, steps => Interleaved(steps));
             if (only == "blur") MotionBlurBenchmark.Run(Record, steps => Interleaved(steps));
+            if (only == "flow" || Option(args, "--dump-flow") != null) FlowBenchmark.Run(Record, only == "flow" ? batches : 0, Option(args, "--dump-flow"));
 
             if (tsv != null)
                 using (var file = new StreamWriter(tsv))

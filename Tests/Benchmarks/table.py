@@ -113,3 +113,12 @@ if "eval.chamfer.value" in net:
     print(f"| our Chamfer value | {net['eval.chamfer.value']:.7f} | {cell(mono, 'eval.chamfer.value', '{:.7f}')} |")
 row("evaluate: 200 views of 800×800, all cores (s wall)", "eval.views.wall.s", "{:.1f}")
 row("evaluate: 200 views of 800×800 (ms CPU per view)", "eval.views.cpu.ms", "{:.0f}")
+row("flow: BVH build of a 100k-triangle mesh at both steps (ms CPU)", "flow.build.ms", "{:.0f}")
+row("flow: one 800×800 view, forward flow with occlusion (ms CPU)", "flow.view.ms", "{:.0f}")
+row("flow: per cast, primary and occlusion (ns CPU)", "flow.cast.ns", "{:.0f}")
+row("flow: 300 views (s CPU, one thread)", "flow.300.s", "{:.0f}")
+row("flow: the view's 640 000 primary rays alone (ms CPU)", "flow.primary.ms", "{:.0f}")
+row("flow: per primary ray (ns CPU)", "flow.primary.ns", "{:.0f}")
+if "flow.embree.primary.ms" in anchor:
+    print(f"| Embree 3 (rtcIntersect1), one thread: BVH build (ms CPU) | {anchor['flow.embree.build.ms']:.0f} (C++) | |")
+    print(f"| Embree: the view's 640 000 primary rays (ms CPU; {anchor['flow.embree.cast.ns']:.0f} ns a ray, {anchor['flow.embree.hits']:.0f} hits) | {anchor['flow.embree.primary.ms']:.0f} (C++) | |")
