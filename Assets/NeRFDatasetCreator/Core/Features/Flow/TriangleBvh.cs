@@ -9,8 +9,8 @@ namespace NerfDatasetCreator
     /// median splits along the longest axis of the triangles' centroids (leaves of at most <see cref="LeafSize"/>; the
     /// depth is ⌈log₂(n / 4)⌉ + 1 and the cast's stack is sized from it). A surface-area-heuristic build (16 binned cuts)
     /// was tried: on the benchmark's 100k-triangle sphere it cast no faster (523 against 544 ns a ray) and built 1.7×
-    /// slower, so the median stays;
-    /// cast with an explicit stack, the nearer child first, Möller–Trumbore per triangle in double precision.
+    /// slower, so the median stays. Cast with an explicit stack, the nearer child first, Möller–Trumbore per triangle
+    /// in double precision.
     /// <para>
     /// Written for Mono, where Unity runs Core: flat arrays of doubles, no operator structs, no allocation per ray (Mono
     /// does not inline small methods, so the hot loop does its arithmetic in place).
