@@ -5,6 +5,7 @@ using GaussianSplatting.Runtime;
 using Newtonsoft.Json.Linq;
 using NUnit.Framework;
 using UnityEditor;
+using UnityEditor.SceneManagement;
 using UnityEngine;
 using UnityEngine.SceneManagement;
 using NerfDatasetCreator.Editor.Tests;
@@ -23,20 +24,29 @@ namespace NerfDatasetCreator.Editor.GaussianSplatting.Tests
     {
         string _root;
         string _assets;
-        Scene _scene;
+        SceneSetup[] _setup;
 
+        // A scene of its own replaces the open ones (restored after), so that Camera.main is the test's camera and
+        // ActivateCamera never moves a camera of the user's scenes.
         [SetUp]
         public void SetUp()
         {
+            for (var i = 0; i < SceneManager.sceneCount; i++)
+                if (SceneManager.GetSceneAt(i).isDirty)
+                    Assert.Ignore("A scene with unsaved changes is open; this test replaces the open scenes. Save or close it, then run again.");
+            _setup = EditorSceneManager.GetSceneManagerSetup();
+            EditorSceneManager.NewScene(NewSceneSetup.EmptyScene, NewSceneMode.Single);
             _root = Path.Combine(Path.GetTempPath(), "nerf-aras-p-" + Guid.NewGuid().ToString("N"));
             Directory.CreateDirectory(_root);
-            _scene = TestScene.Open();
         }
 
         [TearDown]
         public void TearDown()
         {
-            TestScene.Close(_scene);
+            if (_setup != null && _setup.Length > 0 && _setup.All(s => !string.IsNullOrEmpty(s.path)))
+                EditorSceneManager.RestoreSceneManagerSetup(_setup);
+            else
+                EditorSceneManager.NewScene(NewSceneSetup.EmptyScene, NewSceneMode.Single);
             if (_assets != null) AssetDatabase.DeleteAsset(_assets);
             if (Directory.Exists(_root)) Directory.Delete(_root, true);
         }

@@ -108,6 +108,20 @@ namespace NerfDatasetCreator.Editor.Tests
             var dataset = TrainedSplatFixture.Dataset(_root);
             var camera = TransformsPoseReader.ReadFile(DatasetFolder.SplitPath(dataset, "train")).Cameras[2];
             var section = new PlaceSplatSection();
+            // The user's view is put back afterwards.
+            Vector3 pivot = view.pivot; Quaternion rotation = view.rotation; float size = view.size, fov = view.cameraSettings.fieldOfView;
+            bool ortho = view.orthographic, in2D = view.in2DMode;
+            try { ViewFromCameraChecks(view, section, dataset, camera); }
+            finally
+            {
+                view.in2DMode = in2D;
+                view.cameraSettings.fieldOfView = fov;
+                view.LookAt(pivot, rotation, size, ortho, true);
+            }
+        }
+
+        static void ViewFromCameraChecks(SceneView view, PlaceSplatSection section, string dataset, ImportedCamera camera)
+        {
             section.ViewFromCamera(dataset, 2);
             Assert.That(section.Failed, Is.False, string.Join("\n", section.Lines));
             // SceneView's camera is placed at pivot + rotation·(0, 0, −cameraDistance) when it draws (SceneView.cs:3123 / :3514).
