@@ -27,6 +27,7 @@ namespace NerfDatasetCreator.Editor
         [SerializeField] bool failed;
 
         static bool s_running;
+        string _datasetFolder;
         ImportedPoses _cameras;
         string _camerasFrom;
 
@@ -82,6 +83,7 @@ namespace NerfDatasetCreator.Editor
         {
             if (s_running) return;
             s_running = true;
+            _datasetFolder = datasetFolder;
             BackgroundJob.Start("NeRF dataset: place trained splat", model, reportsSteps: false, cancellable: false,
                 (report, cancel) => SplatPlacer.Place(datasetFolder, model, trainerName, ply, writeCameras: true),
                 task =>
@@ -96,6 +98,7 @@ namespace NerfDatasetCreator.Editor
         /// <summary>The same as Place, on the calling thread (tests, and callers that already run on a worker's result).</summary>
         public void PlaceNow(string datasetFolder, string model, string trainerName, string ply)
         {
+            _datasetFolder = datasetFolder;
             var outcome = new TaskCompletionSource<SplatPlacement>();
             try { outcome.SetResult(SplatPlacer.Place(datasetFolder, model, trainerName, ply, writeCameras: true)); }
             catch (Exception e) { outcome.SetException(e); }
@@ -111,6 +114,11 @@ namespace NerfDatasetCreator.Editor
                 return Progress.Status.Failed;
             }
             var result = new List<string>(SplatTrainerChoice.Describe(task.Result));
+            if (source == null && SplatSourceTarget.HierarchyPathIn(_datasetFolder) is string path && SceneObjectPath.Find(path) is GameObject found)
+            {
+                source = found; // the dataset's own target, by its hierarchy path in the loaded scenes
+                result.Add("Source object: " + path + " (the dataset's target).");
+            }
             result.AddRange(PlaceInScene(task.Result));
             Show(false, result);
             Debug.Log("NeRF Dataset Creator: place trained splat —\n" + string.Join("\n", lines));

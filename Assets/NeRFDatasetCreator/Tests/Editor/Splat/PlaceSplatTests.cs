@@ -55,6 +55,25 @@ namespace NerfDatasetCreator.Editor.Tests
         }
 
         [Test]
+        public void WithoutASourcePickedTheDatasetsTargetIsFoundByItsPath()
+        {
+            SplatViewers.Register(null);
+            var dataset = TrainedSplatFixture.Dataset(_root);
+            var config = Newtonsoft.Json.Linq.JObject.Parse(File.ReadAllText(Path.Combine(dataset, "dataset_config.json")));
+            var name = "Lego " + Guid.NewGuid().ToString("N"); // unique, whatever else the loaded scenes hold
+            config["settings"]["target"] = "Props/" + name;
+            File.WriteAllText(Path.Combine(dataset, "dataset_config.json"), config.ToString());
+            var props = new GameObject("Props");
+            var lego = new GameObject(name).transform;
+            lego.SetParent(props.transform, false);
+            var model = TrainedSplatFixture.ThreeDgsModel(_root, new[] { new Vector3d(0, 0, 0) });
+            var section = new PlaceSplatSection();
+            section.PlaceNow(dataset, model, null, null);
+            Assert.That(section.Source, Is.SameAs(lego.gameObject));
+            Assert.That(section.Lines, Has.Some.StartsWith("Source object: Props/Lego "));
+        }
+
+        [Test]
         public void ThePlacementTakesTheDatasetsCamerasToWhereTheyWereInUnity()
         {
             // The 3DGS splat is in the dataset's frame, so object_to_world must take each train camera's centre (as
