@@ -38,8 +38,11 @@ namespace NerfDatasetCreator.UnityCompileCheck
                 .Select(f => (MetadataReference)MetadataReference.CreateFromFile(f)).ToList();
 
         /// <summary>Compiles every definition in dependency order; a definition whose references failed is still compiled against what exists.</summary>
-        public static Dictionary<string, AssemblyResult> CompileAll(IReadOnlyList<AssemblyDefinition> definitions, UnityApi api)
+        public static Dictionary<string, AssemblyResult> CompileAll(IReadOnlyList<AssemblyDefinition> definitions, UnityApi api,
+            IReadOnlyList<PackageStub> stubs = null)
         {
+            stubs = stubs ?? Array.Empty<PackageStub>();
+            var stubAssemblies = new Dictionary<string, MetadataReference>(StringComparer.Ordinal);
             var results = new Dictionary<string, AssemblyResult>(StringComparer.Ordinal);
             var byName = definitions.ToDictionary(d => d.Name, StringComparer.Ordinal);
             var byGuid = definitions.Where(d => d.Guid != null).ToDictionary(d => "GUID:" + d.Guid, d => d.Name, StringComparer.OrdinalIgnoreCase);
@@ -52,6 +55,12 @@ namespace NerfDatasetCreator.UnityCompileCheck
                 var problems = new List<string>();
                 var references = new List<MetadataReference>(BaseReferences);
                 var defines = UnityDefines.ForEditor(api.Major, api.Minor);
+                // versionDefines: as Unity sets them for an installed package; here the packages are the stubs present.
+                foreach (var (package, expression, define) in def.VersionDefines)
+                {
+                    var stub = stubs.FirstOrDefault(p => p.Name == package);
+                    if (stub != null && VersionRange.Admits(expression, stub.Version) && !defines.Contains(define)) defines.Add(define);
+                }
                 if (def.IncludePlatforms.Count > 0 && !def.IsEditorOnly)
                     problems.Add("includePlatforms " + string.Join(",", def.IncludePlatforms) + ": only Editor-only assemblies are checked here");
                 if (!def.NoEngineReferences)
@@ -65,6 +74,14 @@ namespace NerfDatasetCreator.UnityCompileCheck
                     if (byName.TryGetValue(name, out var dependency))
                     {
                         references.Add(Compile(dependency).Compilation.ToMetadataReference());
+                        continue;
+                    }
+                    var stubbed = stubs.SelectMany(p => p.Assemblies).FirstOrDefault(a => a.Name == name);
+                    if (stubbed != null)
+                    {
+                        if (!stubAssemblies.TryGetValue(name, out var compiled))
+                            stubAssemblies[name] = compiled = CompileStub(stubbed, api).ToMetadataReference();
+                        references.Add(compiled);
                         continue;
                     }
                     var file = api.Find(name);
@@ -110,6 +127,18 @@ namespace NerfDatasetCreator.UnityCompileCheck
 
             foreach (var def in definitions) Compile(def);
             return results;
+        }
+
+        /// <summary>A package stub's assembly: its sources against the engine API (runtime assemblies, as the stubbed ones are).</summary>
+        public static CSharpCompilation CompileStub(PackageStub.Assembly stub, UnityApi api)
+        {
+            var parse = new CSharpParseOptions(LanguageVersion.CSharp9, preprocessorSymbols: UnityDefines.ForEditor(api.Major, api.Minor));
+            var references = new List<MetadataReference>(BaseReferences);
+            references.AddRange(api.Engine.Select(f => MetadataReference.CreateFromFile(f)));
+            var options = new CSharpCompilationOptions(OutputKind.DynamicallyLinkedLibrary, nullableContextOptions: NullableContextOptions.Disable,
+                assemblyIdentityComparer: DesktopAssemblyIdentityComparer.Default)
+                .WithSpecificDiagnosticOptions(new Dictionary<string, ReportDiagnostic> { ["CS1701"] = ReportDiagnostic.Suppress, ["CS1702"] = ReportDiagnostic.Suppress });
+            return CSharpCompilation.Create(stub.Name, stub.Sources.Select(p => CSharpSyntaxTree.ParseText(File.ReadAllText(p), parse, p)), references, options);
         }
 
         public static string Describe(Diagnostic d, string root) =>

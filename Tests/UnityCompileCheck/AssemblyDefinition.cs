@@ -16,6 +16,8 @@ namespace NerfDatasetCreator.UnityCompileCheck
         public IReadOnlyList<string> PrecompiledReferences { get; private set; }
         public IReadOnlyList<string> IncludePlatforms { get; private set; }
         public IReadOnlyList<string> DefineConstraints { get; private set; }
+        /// <summary>versionDefines: a symbol set when a package (name) is installed at a version the expression admits.</summary>
+        public IReadOnlyList<(string Package, string Expression, string Define)> VersionDefines { get; private set; }
         public bool OverrideReferences { get; private set; }
         public bool NoEngineReferences { get; private set; }
         public bool AllowUnsafeCode { get; private set; }
@@ -37,6 +39,9 @@ namespace NerfDatasetCreator.UnityCompileCheck
                 PrecompiledReferences = Strings(root, "precompiledReferences"),
                 IncludePlatforms = Strings(root, "includePlatforms"),
                 DefineConstraints = Strings(root, "defineConstraints"),
+                VersionDefines = root.TryGetProperty("versionDefines", out var v) && v.ValueKind == JsonValueKind.Array
+                    ? v.EnumerateArray().Select(e => (Text(e, "name"), Text(e, "expression"), Text(e, "define"))).ToList()
+                    : new List<(string, string, string)>(),
                 OverrideReferences = Bool(root, "overrideReferences"),
                 NoEngineReferences = Bool(root, "noEngineReferences"),
                 AllowUnsafeCode = Bool(root, "allowUnsafeCode"),
@@ -78,6 +83,9 @@ namespace NerfDatasetCreator.UnityCompileCheck
             root.TryGetProperty(key, out var a) && a.ValueKind == JsonValueKind.Array
                 ? a.EnumerateArray().Select(e => e.GetString()).ToList()
                 : new List<string>();
+
+        static string Text(JsonElement e, string key) =>
+            e.TryGetProperty(key, out var t) && t.ValueKind == JsonValueKind.String ? t.GetString() : "";
 
         static bool Bool(JsonElement root, string key) =>
             root.TryGetProperty(key, out var b) && b.ValueKind == JsonValueKind.True;

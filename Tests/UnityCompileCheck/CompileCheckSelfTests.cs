@@ -31,14 +31,65 @@ namespace NerfDatasetCreator.UnityCompileCheck
             return UnityApi.FromReferenceFolder(dir);
         }
 
-        AssemblyResult Compile(UnityApi api, string asmdefJson, string code)
+        AssemblyResult Compile(UnityApi api, string asmdefJson, string code, System.Collections.Generic.IReadOnlyList<PackageStub> stubs = null)
         {
             var sub = Path.Combine(_folder, "A");
             Directory.CreateDirectory(sub);
             File.WriteAllText(Path.Combine(sub, "A.asmdef"), asmdefJson);
             File.WriteAllText(Path.Combine(sub, "A.cs"), code);
             var defs = AssemblyDefinition.FindAll(_folder);
-            return AsmdefCompiler.CompileAll(defs, api)["A"];
+            return AsmdefCompiler.CompileAll(defs, api, stubs)["A"];
+        }
+
+        /// <summary>A stub of package com.example.thing at <paramref name="version"/> with assembly Example.Thing.</summary>
+        System.Collections.Generic.List<PackageStub> ThingStub(string version)
+        {
+            var package = Path.Combine(_folder, "stubs", "com.example.thing");
+            Directory.CreateDirectory(Path.Combine(package, "Example.Thing"));
+            File.WriteAllText(Path.Combine(package, "package.json"), "{ \"name\": \"com.example.thing\", \"version\": \"" + version + "\" }");
+            File.WriteAllText(Path.Combine(package, "Example.Thing", "Thing.cs"), "namespace Example { public class Thing : UnityEngine.MonoBehaviour { public int m_Value; } }");
+            return PackageStub.FindAll(Path.Combine(_folder, "stubs"));
+        }
+
+        const string OptionalAsmdef = "{ \"name\": \"A\", \"references\": [\"Example.Thing\"], \"includePlatforms\": [\"Editor\"], " +
+                                      "\"defineConstraints\": [\"HAS_THING\"], \"versionDefines\": [{ \"name\": \"com.example.thing\", " +
+                                      "\"expression\": \"[1.0.0,2.0.0)\", \"define\": \"HAS_THING\" }] }";
+
+        [TestCase("2022.3"), TestCase("6000.0")]
+        public void AnOptionalAssemblyCompilesAgainstAStubOfItsPackage(string line)
+        {
+            const string code = "class C { int M(Example.Thing t) => t.m_Value; }";
+            Assert.That(Errors(Compile(Line(line), OptionalAsmdef, code, ThingStub("1.1.1"))), Is.Empty);
+        }
+
+        [TestCase("2022.3"), TestCase("6000.0")]
+        public void AMemberTheStubDoesNotHaveIsAnError(string line)
+        {
+            const string code = "class C { int M(Example.Thing t) => t.m_Missing; }";
+            Assert.That(Errors(Compile(Line(line), OptionalAsmdef, code, ThingStub("1.1.1"))), Does.Contain("CS1061"));
+        }
+
+        [TestCase("2022.3"), TestCase("6000.0")]
+        public void WithoutThePackageOrOutsideTheRangeTheDefineIsNotSet(string line)
+        {
+            const string code = "class C { }";
+            Assert.That(Compile(Line(line), OptionalAsmdef, code).Problems, Has.Some.Contains("defineConstraints HAS_THING are not met"));
+            Assert.That(Compile(Line(line), OptionalAsmdef, code, ThingStub("2.0.0")).Problems, Has.Some.Contains("defineConstraints HAS_THING are not met"));
+        }
+
+        [TestCase("", "0.1.0", true)]
+        [TestCase("1.0.0", "1.0.0", true)]
+        [TestCase("1.0.0", "0.9.1", false)]
+        [TestCase("[1.0.0,2.0.0)", "1.1.1", true)]
+        [TestCase("[1.0.0,2.0.0)", "2.0.0", false)]
+        [TestCase("(1.0.0,2.0.0]", "1.0.0", false)]
+        [TestCase("(1.0.0,2.0.0]", "2.0.0", true)]
+        [TestCase("[1.2.0]", "1.2.0", true)]
+        [TestCase("[1.0.0,)", "9.0.0", true)]
+        [TestCase("[1.0.0,2.0.0)", "1.5.0-preview.3", true)]
+        public void VersionDefineExpressionsAreUnitysRanges(string expression, string version, bool admitted)
+        {
+            Assert.That(VersionRange.Admits(expression, version), Is.EqualTo(admitted));
         }
 
         const string EditorAsmdef = "{ \"name\": \"A\", \"includePlatforms\": [\"Editor\"] }";

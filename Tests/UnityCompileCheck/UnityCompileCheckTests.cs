@@ -18,6 +18,9 @@ namespace NerfDatasetCreator.UnityCompileCheck
 
         static string Root => RepositoryRoot.Path;
 
+        /// <summary>The third-party packages optional assemblies are checked against (<see cref="PackageStub"/>).</summary>
+        static List<PackageStub> Stubs => PackageStub.FindAll(PackageStub.Folder(Root));
+
         static IEnumerable<TestCaseData> Cases()
         {
             var apis = UnityApi.Available(Root);
@@ -55,7 +58,7 @@ namespace NerfDatasetCreator.UnityCompileCheck
         public void Compiles(UnityApi api, string assembly)
         {
             if (!Cache.TryGetValue(api.Label, out var results))
-                Cache[api.Label] = results = AsmdefCompiler.CompileAll(AssemblyDefinition.FindAll(Path.Combine(Root, "Assets")), api);
+                Cache[api.Label] = results = AsmdefCompiler.CompileAll(AssemblyDefinition.FindAll(Path.Combine(Root, "Assets")), api, Stubs);
             var result = results[assembly];
             Assert.That(result.Definition.Sources, Is.Not.Empty, assembly + " has no C# files");
             var errors = result.Errors.Select(d => AsmdefCompiler.Describe(d, Root)).ToList();
@@ -67,6 +70,23 @@ namespace NerfDatasetCreator.UnityCompileCheck
             Assert.That(warnings, Is.Empty, assembly + " compiles against " + api.Label + " with warnings Unity would print:\n" + string.Join("\n", warnings));
         }
     
+        /// <summary>Every package stub compiles on its own against each editor line (a stub that does not could hide nothing).</summary>
+        [Test]
+        public void EveryPackageStubCompiles()
+        {
+            var stubs = Stubs;
+            Assert.That(stubs.Select(s => s.Name), Does.Contain("org.nesnausk.gaussian-splatting"));
+            var apis = UnityApi.Available(Root);
+            if (apis.Count == 0) Assert.Ignore("No Unity API on this machine.");
+            foreach (var api in apis)
+                foreach (var assembly in stubs.SelectMany(s => s.Assemblies))
+                {
+                    var errors = AsmdefCompiler.CompileStub(assembly, api).GetDiagnostics()
+                        .Where(d => d.Severity >= Microsoft.CodeAnalysis.DiagnosticSeverity.Warning).Select(d => AsmdefCompiler.Describe(d, Root)).ToList();
+                    Assert.That(errors, Is.Empty, assembly.Name + " against " + api.Label);
+                }
+        }
+
         /// <summary>
         /// Unity drops the types of a disabled built-in module, so package.json declares every module the Unity layer
         /// and its tests use, and the development project enables them.
@@ -77,7 +97,7 @@ namespace NerfDatasetCreator.UnityCompileCheck
             var api = UnityApi.Available(Root).FirstOrDefault();
             if (api == null) Assert.Ignore("No Unity API on this machine to bind the Unity layer's types.");
             if (!Cache.TryGetValue(api.Label, out var results))
-                Cache[api.Label] = results = AsmdefCompiler.CompileAll(AssemblyDefinition.FindAll(Path.Combine(Root, "Assets")), api);
+                Cache[api.Label] = results = AsmdefCompiler.CompileAll(AssemblyDefinition.FindAll(Path.Combine(Root, "Assets")), api, Stubs);
             var used = new SortedDictionary<string, string>(StringComparer.Ordinal);
             foreach (var result in results.Values.Where(r => !r.Definition.NoEngineReferences))
                 foreach (var pair in BuiltInModules.UsedBy(result.Compilation, Root))

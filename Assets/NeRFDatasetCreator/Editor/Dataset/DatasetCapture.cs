@@ -170,6 +170,7 @@ namespace NerfDatasetCreator.Editor
             try
             {
                 HoldGeometrySteps(prepared);
+                prepared.UnityFrame = UnityFrameCapture.Of(prepared.Target);
             }
             catch (Exception e)
             {
@@ -257,6 +258,7 @@ namespace NerfDatasetCreator.Editor
                 session = prepared.Run.Begin();
                 LogEarlierRuns(session);
                 HoldGeometrySteps(prepared);
+                prepared.UnityFrame = UnityFrameCapture.Of(prepared.Target);
                 consumer = Writers(prepared, session, out var pipeline);
                 var written = consumer;
                 return CaptureRunner.RunInBackground(prepared.Target, Poses(prepared), prepared.Options, consumer, (summary, error) =>
@@ -314,6 +316,8 @@ namespace NerfDatasetCreator.Editor
         {
             var files = pipeline.Files;
             var provenance = new Provenance(DateTime.UtcNow, Application.unityVersion, tool);
+            // unity_frame (issue 34): the target as it was when the run started, read before any view posed the scene.
+            provenance.UnityFrame = prepared.UnityFrame ?? UnityFrameCapture.Of(prepared.Target);
             provenance.Statistics["views"] = summary.Views;
             provenance.Statistics["seconds"] = summary.Seconds;
             provenance.Statistics["viewsPerSecond"] = summary.ViewsPerSecond;

@@ -36,6 +36,10 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         internal TargetSurfaceOverTime GeometrySteps { get; set; }
 
+        /// <summary>The target's scene path, GlobalObjectId, local-to-world and the colour space when the run starts, for
+        /// <c>unity_frame</c> (<see cref="UnityFrameCapture"/>); null before.</summary>
+        internal UnityFrameFacts UnityFrame { get; set; }
+
         /// <summary>The capture's label table (labels.json), made when the run starts (<see cref="SceneLabels"/>); null without labels.</summary>
         internal LabelTable Labels { get; set; }
 

@@ -24,6 +24,10 @@ namespace NerfDatasetCreator.Editor
         [SerializeField] DemoPreset demoPreset = DemoPreset.Static;
         [SerializeField] Vector2 scroll;
         [SerializeField] Vector2 outputScroll;
+        [SerializeField] PlaceSplatSection placeSplat = new PlaceSplatSection();
+
+        /// <summary>Place trained splat (issue 34).</summary>
+        internal PlaceSplatSection PlaceSplat => placeSplat;
 
         /// <summary>The exports a button offers, in the order of Documentation~/exports.md.</summary>
         internal static readonly (string Label, ExportTarget Target, bool Depths, string Tooltip)[] Exports =
@@ -95,6 +99,9 @@ namespace NerfDatasetCreator.Editor
                         if (GUILayout.Button(new GUIContent("Evaluate renders", "nerf-dataset evaluate: PSNR, SSIM, masked PSNR, depth and normal errors; writes metrics.json, error maps and report.html beside the renders.")))
                             Run("evaluate", EvaluateCommand.Arguments(datasetFolder, rendersFolder));
                 }
+
+                EditorGUILayout.Space();
+                placeSplat.Draw(this, datasetFolder, FolderField);
 
                 EditorGUILayout.Space();
                 EditorGUILayout.LabelField("Merge the shards of a batch capture", EditorStyles.boldLabel);

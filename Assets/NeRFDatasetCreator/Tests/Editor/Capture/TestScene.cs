@@ -12,7 +12,7 @@ namespace NerfDatasetCreator.Editor.Tests
     /// scene unsaved"), which is what a batch-mode test run starts with: a lone untitled scene that is unmodified or
     /// empty is replaced instead (nothing is lost); otherwise the test is ignored rather than discard unsaved work.
     /// </summary>
-    static class TestScene
+    public static class TestScene
     {
         /// <summary>Ignores the test where nothing can be rendered: no graphics device (-nographics), or HDRP.</summary>
         public static void RequireRendering()
