@@ -256,6 +256,42 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void AnOddSideHasNoHalfSizeLevelAndTheWarningNames4DGaussians()
+        {
+            using (var temp = new TempFolder())
+            {
+                var folder = temp.Combine("odd");
+                var settings = Planned(TimeMode.MultiView);
+                settings.Width = 15;
+                TestDatasets.FromPlan(folder, CapturePlan.Build(settings, new PlanTarget(Vector3d.Zero, 0.5)));
+                var result = DatasetConverter.Convert(folder, ExportTarget.Nerfies);
+                Assert.That(Directory.GetDirectories(Path.Combine(folder, "nerfies", "rgb")).Select(Path.GetFileName), Is.EqualTo(new[] { "1x" }));
+                var warning = result.Warnings.Single(w => w.Field == "rgb/2x");
+                Assert.That(warning.Value, Is.EqualTo("15 × 12"));
+                Assert.That(warning.Reason, Does.Contain("4DGaussians loads only rgb/2x"));
+            }
+        }
+
+        [Test]
+        public void ALensIsRefusedByBothTargets()
+        {
+            using (var temp = new TempFolder())
+            {
+                var options = new AnalyticDataset.Options { Width = 8, Height = 8, Supersampling = 1, Train = 2, Val = 1, Test = 1, TimeSteps = 2, PointCloud = 0 };
+                options.Lens = new LensSettings { Model = "opencv", K1 = -0.1 };
+                var folder = AnalyticDataset.Write(temp.Path, "lens", options);
+                foreach (var target in new[] { ExportTarget.Nerfies, ExportTarget.Dycheck })
+                {
+                    var e = Assert.Throws<InvalidParameterException>(() => DatasetConverter.Convert(folder, target));
+                    Assert.That(e.Problems.Count, Is.EqualTo(1));
+                    Assert.That(e.Problems[0].Field, Is.EqualTo("--to"));
+                    Assert.That(e.Problems[0].Reason, Does.StartWith("cannot hold this dataset's lens"));
+                    Assert.That(Directory.Exists(DatasetConverter.OutputFolder(folder, target)), Is.False);
+                }
+            }
+        }
+
+        [Test]
         public void AStaticDatasetIsRefusedInOneLineAndNothingIsWritten()
         {
             using (var temp = new TempFolder())
