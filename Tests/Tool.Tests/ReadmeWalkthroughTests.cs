@@ -134,6 +134,14 @@ namespace NerfDatasetCreator.Tool.Tests
                         case "dynamic3dgs":
                             yield return Promise(Dynamic3DGaussians.TrainMetaFileName, File.Exists(Path.Combine(output, Dynamic3DGaussians.TrainMetaFileName)));
                             break;
+                        case "nerfies":
+                            yield return Promise(Nerfies.DatasetFileName, File.Exists(Path.Combine(output, Nerfies.DatasetFileName)));
+                            yield return Promise("rgb/2x", Directory.Exists(Path.Combine(output, Nerfies.RgbFolder, "2x")));
+                            break;
+                        case "dycheck":
+                            yield return Promise("splits/train.json", File.Exists(Path.Combine(output, DyCheck.SplitsFolder, "train.json")));
+                            yield return Promise("depth/1x", Directory.Exists(Path.Combine(output, DyCheck.DepthFolder, "1x")));
+                            break;
                         default:
                             yield return Promise("a known export target (teach this test what it writes)", false);
                             break;

@@ -16,11 +16,20 @@ namespace NerfDatasetCreator
 
         /// <summary>Gaussian Grouping's COLMAP layout with per-image object masks (<see cref="GaussianGroupingExport"/>).</summary>
         GaussianGrouping,
+
+        /// <summary>Nerfies / HyperNeRF's layout from a dynamic capture; 4DGaussians reads it too (<see cref="NerfiesExport"/>).</summary>
+        Nerfies,
+
+        /// <summary>DyCheck's iPhone layout from a dynamic capture, with exact depth (<see cref="DyCheckExport"/>).</summary>
+        Dycheck,
     }
 
     public static class ExportTargets
     {
-        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping" };
+        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping",
+            "nerfies",
+            "dycheck",
+        };
 
         /// <summary>
         /// The config's <c>loaders</c> names (<see cref="TargetLoaderNames"/>) that name an export too, so one

@@ -129,10 +129,10 @@ namespace NerfDatasetCreator
             return "RGBA, depth, normals, masks" + extra + ", points3d.ply, the geometry pack";
         }
 
-        /// <summary>The exports that fit the preset's dataset: the static ones, Gaussian Grouping with labels, Dynamic 3D Gaussians for the dynamic one.</summary>
+        /// <summary>The exports that fit the preset's dataset: the static ones, Gaussian Grouping with labels, the dynamic layouts for the dynamic one.</summary>
         public static IReadOnlyList<ExportTarget> Targets(DemoPreset preset)
         {
-            if (preset == DemoPreset.Dynamic) return new[] { ExportTarget.Dynamic3dgs };
+            if (preset == DemoPreset.Dynamic) return new[] { ExportTarget.Dynamic3dgs, ExportTarget.Nerfies, ExportTarget.Dycheck };
             var targets = new List<ExportTarget> { ExportTarget.Nerfstudio, ExportTarget.Colmap, ExportTarget.Ngp };
             if (preset == DemoPreset.Labels) targets.Add(ExportTarget.GaussianGrouping);
             return targets;
@@ -174,6 +174,8 @@ namespace NerfDatasetCreator
                 case ExportTarget.Colmap: return "python train.py -s " + Quote(output) + " --eval   (3D Gaussian Splatting)";
                 case ExportTarget.Ngp: return "./instant-ngp " + Quote(output + "/" + NgpWriter.FileName) + "   (instant-ngp, from its folder)";
                 case ExportTarget.GaussianGrouping: return "python train.py -s " + Quote(output) + " -r 1 --config_file " + Quote(output + "/" + GaussianGrouping.ConfigFileName) + "   (Gaussian Grouping)";
+                case ExportTarget.Nerfies: return "python train.py -s " + Quote(output) + " --configs arguments/hypernerf/default.py   (4DGaussians)";
+                case ExportTarget.Dycheck: return "python tools/launch.py --gin_configs configs/iphone/tnerf/randbkgd_depth_dist.gin …   (DyCheck: copy " + Quote(output) + " to its datasets/iphone/ first, as convert says)";
                 default: return "python train.py   (Dynamic 3D Gaussians: copy " + Quote(output) + " to its data/ folder first, as convert says)";
             }
         }

@@ -27,8 +27,26 @@ namespace NerfDatasetCreator
             if (values == null) throw new ArgumentNullException(nameof(values));
             if (rows < 0 || columns < 0 || (long)rows * columns != values.Length)
                 throw new ArgumentException("values holds " + values.Length + " numbers, not " + rows + " × " + columns + ".", nameof(values));
-            var dict = "{'descr': '<f4', 'fortran_order': False, 'shape': (" +
-                       rows.ToString(CultureInfo.InvariantCulture) + ", " + columns.ToString(CultureInfo.InvariantCulture) + "), }";
+            return Float32Array(values, rows, columns);
+        }
+
+        /// <summary>
+        /// A little-endian float32 array (<c>'&lt;f4'</c>) of any <paramref name="shape"/>, C order: e.g. DyCheck's depth
+        /// maps are (H, W, 1). The header is <see cref="Float32Matrix"/>'s with the shape's tuple (one dimension: "(n,)").
+        /// </summary>
+        public static byte[] Float32Array(float[] values, params int[] shape)
+        {
+            if (values == null) throw new ArgumentNullException(nameof(values));
+            if (shape == null || shape.Length == 0) throw new ArgumentException("an array needs at least one dimension.", nameof(shape));
+            long count = 1;
+            foreach (var n in shape)
+            {
+                if (n < 0) throw new ArgumentException("a dimension is never negative.", nameof(shape));
+                count *= n;
+            }
+            if (count != values.Length) throw new ArgumentException("values holds " + values.Length + " numbers, not " + count + ".", nameof(values));
+            var tuple = string.Join(", ", Array.ConvertAll(shape, n => n.ToString(CultureInfo.InvariantCulture))) + (shape.Length == 1 ? "," : "");
+            var dict = "{'descr': '<f4', 'fortran_order': False, 'shape': (" + tuple + "), }";
             var unpadded = Magic.Length + 2 + dict.Length + 1;
             var padding = (Alignment - unpadded % Alignment) % Alignment;
             var header = Encoding.ASCII.GetBytes(dict + new string(' ', padding) + "\n");
