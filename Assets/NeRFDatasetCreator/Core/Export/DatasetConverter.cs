@@ -107,6 +107,7 @@ namespace NerfDatasetCreator
                     case ExportTarget.GaussianGrouping: result = GaussianGroupingExport.Write(scene, labelled, output, points, warnings, colmap, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
+                EvalProtocolCarry.Copy(scene.RootDirectory, output, staged, warnings);
                 staged.Commit();
                 return result;
             }
