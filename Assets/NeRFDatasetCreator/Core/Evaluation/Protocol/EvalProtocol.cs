@@ -68,8 +68,11 @@ namespace NerfDatasetCreator
             return protocol;
         }
 
-        /// <summary>White for a transparent dataset (nerf_synthetic's evaluation); the dataset's own for a solid colour or the sky (opaque images).</summary>
-        public static string DefaultFor(BackgroundSettings dataset) => dataset == null || dataset.Transparent ? White : Dataset;
+        /// <summary>
+        /// White for a transparent dataset (nerf_synthetic's evaluation) and for the sky (its images are opaque; white is
+        /// what an RGBA render, e.g. instant-ngp's screenshot, is composited over); the dataset's own for a solid colour.
+        /// </summary>
+        public static string DefaultFor(BackgroundSettings dataset) => dataset == null || dataset.Transparent || dataset.Sky ? White : Dataset;
 
         /// <summary>Why <paramref name="chosen"/> cannot be this dataset's protocol background, or null.</summary>
         public static ValidationProblem Problem(BackgroundSettings dataset, string chosen)

@@ -22,6 +22,7 @@ namespace NerfDatasetCreator.Tests
             var random = EvalProtocol.For(new BackgroundSettings(), "random");
             Assert.That((random.EvaluationBackgroundName, random.R), Is.EqualTo(("white", (byte)255)), "random backgrounds in training are scored over white");
             Assert.That(EvalProtocol.For(null).Background, Is.EqualTo("white"), "no dataset_config.json: nerf_synthetic's white");
+            Assert.That(EvalProtocol.For(BackgroundSettings.Parse("sky")).Background, Is.EqualTo("white"), "opaque sky images: white for RGBA renders");
         }
 
         [Test]
