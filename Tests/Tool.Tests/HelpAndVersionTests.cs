@@ -23,7 +23,7 @@ namespace NerfDatasetCreator.Tool.Tests
             var run = ToolRun.Of("check", "--help");
             Assert.That(run.ExitCode, Is.EqualTo(0), run.ToString());
             var lines = run.Out.TrimEnd('\n').Split('\n');
-            Assert.That(lines[0], Is.EqualTo("usage: nerf-dataset check <dir> [--split S] [--json FILE] [--max-views N]"));
+            Assert.That(lines[0], Is.EqualTo("usage: nerf-dataset check <dir> [--split S] [--json FILE] [--max-views N] [--model <dir>]"));
             Assert.That(lines, Has.Some.StartWith("  --split S "));
             Assert.That(lines, Has.Some.StartWith("  --json FILE "));
             Assert.That(lines, Has.Some.StartWith("  --max-views N "));

@@ -69,7 +69,7 @@ namespace NerfDatasetCreator.Tool.Tests
                     if (next == "plan") Assert.That(Train(output), Is.EqualTo(newTrain), where);
                     else Assert.That(Train(output), Is.EqualTo(oldTrain).Or.EqualTo(newTrain), where);
                     Assert.That(File.Exists(Path.Combine(output, OperationJournal.FileName)), Is.False, where);
-                    Assert.That(Interruptions.Entries(output), Is.EqualTo(new[] { "dataset_config.json", "rig_preview.ply", "rig_preview.png", "transforms_test.json", "transforms_train.json", "transforms_val.json" }), where);
+                    Assert.That(Interruptions.Entries(output), Is.EqualTo(new[] { "dataset_config.json", "eval_protocol.json", "rig_preview.ply", "rig_preview.png", "transforms_test.json", "transforms_train.json", "transforms_val.json" }), where);
 
                     // A partial folder of the killed run is reported, never silently deleted; clean removes it.
                     if (next == "plan" && Interruptions.Entries(scratch.Root).Any(n => n.Contains(".partial-")))

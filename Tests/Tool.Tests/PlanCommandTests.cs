@@ -30,7 +30,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(run.Out, Does.Contain("planned 12 train, 4 val, 6 test views at distance 4"));
             Assert.That(Directory.GetFiles(output).Select(Path.GetFileName).OrderBy(n => n, System.StringComparer.Ordinal), Is.EqualTo(new[]
             {
-                "dataset_config.json", "rig_preview.ply", "rig_preview.png", "transforms_test.json", "transforms_train.json", "transforms_val.json",
+                "dataset_config.json", "eval_protocol.json", "rig_preview.ply", "rig_preview.png", "transforms_test.json", "transforms_train.json", "transforms_val.json",
             }));
             Assert.That(Directory.GetDirectories(output), Is.Empty, "no image folders");
             Assert.That(Directory.GetDirectories(_scratch.PathOf("out")), Is.EqualTo(new[] { output }), "no partial folder left beside it");

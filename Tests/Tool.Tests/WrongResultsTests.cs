@@ -304,7 +304,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(again.ExitCode, Is.EqualTo(0), again.ToString());
             Assert.That(again.Out, Does.Contain("(the interrupted earlier convert, now finished)"));
             Assert.That(again.Err, Does.Not.Contain("already exists"));
-            Assert.That(Interruptions.Entries(output), Is.EqualTo(new[] { "images", "sparse" }));
+            Assert.That(Interruptions.Entries(output), Is.EqualTo(new[] { "eval_protocol.json", "images", "sparse" }));
             Assert.That(Directory.GetFiles(Path.Combine(output, "images")).Length, Is.EqualTo(Images().Length));
         }
 

@@ -31,6 +31,12 @@ namespace NerfDatasetCreator
             var config = DatasetConfig.Read(folder);
             if (config.State == DatasetConfigState.Unreadable)
                 report.Problems.Add(DatasetProblem.Structure(DatasetLayout.ConfigFileName, -1, null, "cannot be read: " + config.Error + " (check the file's permissions)."));
+            // eval_protocol.json: evaluate and every export read it, so a damaged one is a problem here (issue 35).
+            try { EvalProtocolFile.Read(folder); }
+            catch (InvalidParameterException e)
+            {
+                foreach (var p in e.Problems) report.Problems.Add(DatasetProblem.Structure(EvalProtocolFile.FileName, -1, null, p.Field + " " + p.Reason + " " + p.Fix));
+            }
             var state = new ImageState { SkipFiles = config.IsPlanOnly };
             if (state.SkipFiles)
                 report.Warnings.Add(DatasetProblem.Structure(DatasetLayout.ConfigFileName, -1, null,

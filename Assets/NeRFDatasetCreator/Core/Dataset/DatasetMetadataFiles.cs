@@ -1,8 +1,10 @@
 namespace NerfDatasetCreator
 {
     /// <summary>
-    /// The JSON files of a dataset — the three transforms files (always all three, even for an empty split) and
-    /// dataset_config.json. A capture writes them after its images, so a dataset never names an image that is not there.
+    /// The JSON files of a dataset — the three transforms files (always all three, even for an empty split),
+    /// dataset_config.json and eval_protocol.json (<see cref="EvalProtocolFile"/>, from the settings' background and
+    /// <see cref="DatasetSettings.EvaluationBackground"/>). A capture writes them after its images, so a dataset never
+    /// names an image that is not there.
     /// </summary>
     public static class DatasetMetadataFiles
     {
@@ -16,6 +18,7 @@ namespace NerfDatasetCreator
                 session.WriteText(DatasetLayout.TransformsFileName(split), text => BlenderTransformsWriter.Write(plan, s, text));
             }
             session.WriteText(DatasetLayout.ConfigFileName, DatasetConfig.Write(plan, provenance, pointCloud, geometry));
+            session.WriteText(EvalProtocolFile.FileName, EvalProtocolFile.Text(EvalProtocol.For(plan.Settings.Background, plan.Settings.EvaluationBackground)));
         }
     }
 }

@@ -7,7 +7,8 @@ namespace NerfDatasetCreator
     {
         public string DatasetFolder;
         public string RendersFolder;
-        public string Split = "test";
+        /// <summary>Null: the protocol's evaluation split (eval_protocol.json), else test.</summary>
+        public string Split;
 
         /// <summary>Null: <c>&lt;renders&gt;/evaluation-&lt;split&gt;</c>.</summary>
         public string OutFolder;
@@ -15,7 +16,17 @@ namespace NerfDatasetCreator
         /// <summary>Null: detected.</summary>
         public RenderLayout? Layout;
 
-        public string Background = "white";
+        /// <summary>white, black or dataset; null: the protocol's (eval_protocol.json), else white.</summary>
+        public string Background;
+
+        /// <summary>
+        /// <c>--override-protocol</c>: accept a <see cref="Background"/> that contradicts the dataset's protocol, and renders
+        /// whose background is another colour (<see cref="RenderBackgroundCheck"/>), with a warning in place of the refusal.
+        /// </summary>
+        public bool OverrideProtocol;
+
+        /// <summary><c>--trainer-metrics</c>: a 3DGS results.json or an ns-eval JSON to put beside the figures; null: found by layout (<see cref="TrainerResults"/>).</summary>
+        public string TrainerMetricsPath;
 
         /// <summary>nerfstudio depth is the distance along each ray (nerfacto) rather than z-depth (splatfacto).</summary>
         public bool DepthAlongRay;
@@ -33,6 +44,7 @@ namespace NerfDatasetCreator
 
         public int Threads = Math.Max(1, Environment.ProcessorCount);
 
-        public string ResolvedOutFolder(string rendersRoot) => OutFolder ?? System.IO.Path.Combine(rendersRoot, "evaluation-" + Split);
+        /// <param name="split">The split evaluated (<see cref="Split"/> or the protocol's).</param>
+        public string ResolvedOutFolder(string rendersRoot, string split) => OutFolder ?? System.IO.Path.Combine(rendersRoot, "evaluation-" + split);
     }
 }

@@ -44,6 +44,21 @@ namespace NerfDatasetCreator
         /// <summary><c>--geometry &lt;folder&gt;</c>: one result per time step (<see cref="GeometryStepsEvaluation"/>); empty otherwise.</summary>
         public List<GeometryResult> GeometrySteps { get; } = new List<GeometryResult>();
         public List<string> Notes { get; } = new List<string>();
+
+        /// <summary>What was accepted against the protocol or the renders' own background (<c>--override-protocol</c>), or a trainer figure that disagrees: said loudly.</summary>
+        public List<string> Warnings { get; } = new List<string>();
+
+        /// <summary>The dataset's eval_protocol.json, or null when it has none (<see cref="EvalProtocolFile"/>).</summary>
+        public EvalProtocol Protocol { get; internal set; }
+
+        /// <summary>The renders' mean colour where the ground truth is transparent (<see cref="RenderBackgroundCheck"/>); null when not measured.</summary>
+        public RenderBackgroundCheck.Measurement RenderBackground { get; internal set; }
+
+        /// <summary>The trainer's own figures for these renders (<see cref="TrainerResults"/>), or null.</summary>
+        public TrainerFigures Trainer { get; internal set; }
+        public List<TrainerMetricComparison> TrainerMeans { get; } = new List<TrainerMetricComparison>();
+        public List<int> TrainerFlaggedViews { get; } = new List<int>();
+
         public string OutFolder { get; internal set; }
         public string CreatedUtc { get; internal set; }
     }

@@ -19,11 +19,11 @@ namespace NerfDatasetCreator
         public static readonly IReadOnlyDictionary<string, string> Definitions = new Dictionary<string, string>
         {
             ["psnr"] = "dB, 20·log10(1/√MSE) with MSE over every pixel and channel of the RGB images in [0, 1] (3DGS utils/image_utils.py psnr); the mean is over views, as 3DGS metrics.py averages per-image PSNR, leaving out views identical to the ground truth (PSNR +∞, null per view, counted in mean.identical_views)",
-            ["ssim"] = "3DGS utils/loss_utils.py ssim: 11×11 Gaussian window σ 1.5 (normalised), 'same' conv2d with zero padding 5, C1 = 0.01², C2 = 0.03², per channel, mean over all pixels and channels. Not scikit-image's default (7×7 uniform window, sample covariance, 3-pixel border cropped): see Documentation~/evaluate.md",
+            ["ssim"] = "3DGS utils/loss_utils.py ssim: 11×11 Gaussian window σ 1.5 (normalised), 'same' conv2d with zero padding 5, C1 = 0.01², C2 = 0.03², per channel, mean over all pixels and channels, in double precision (3DGS metrics.py runs it in float32 and prints values up to ~2e-4 different: the 4th decimal may differ). Not scikit-image's default (7×7 uniform window, sample covariance, 3-pixel border cropped): see Documentation~/evaluate.md",
             ["psnr_masked"] = "PSNR over the pixels whose mask PNG value is ≥ 128 (the target's geometry), all three channels",
             ["depth"] = "against the dataset's z-depth (output units) on pixels with ground-truth surface and mask ≥ 128 where the render has a finite depth > 0: abs_rel = mean |d − d*|/d*, rmse = √mean (d − d*)², delta_1_25 = fraction with max(d/d*, d*/d) < 1.25; 'missing' counts the other surface pixels",
             ["normals"] = "angle in degrees between the render's and the dataset's normals (output world frame) on mask pixels where both are non-zero; mean and median",
-            ["lpips"] = "not computed: LPIPS needs network weights this tool does not ship. 3DGS: python metrics.py -m <model> (LPIPS-VGG on renders/ and gt/); nerfstudio: ns-eval (LPIPS-AlexNet)",
+            ["lpips"] = "not computed: LPIPS needs network weights this tool does not ship. 3DGS: python metrics.py -m <model> (LPIPS-VGG on renders/ and gt/, inputs [0, 1] unscaled); nerfstudio: ns-eval (LPIPS-AlexNet, inputs scaled to [-1, 1]); their figures are in trainer_metrics when found",
             ["error_map"] = "per pixel the mean absolute RGB difference, colour ramp saturating at 0.2",
             ["chamfer"] = "output units: accuracy = mean distance from reconstruction points to the nearest ground-truth point; completeness = mean distance from observed ground-truth points to the nearest reconstruction point; chamfer = (accuracy + completeness)/2 (DTU's mean)",
             ["fscore"] = "precision = share of reconstruction points within the threshold of the ground truth, recall = share of observed ground-truth points within the threshold of the reconstruction, F = 2PR/(P + R)",
@@ -87,11 +87,14 @@ namespace NerfDatasetCreator
                     ["depth_along_ray_converted"] = r.DepthAlongRay,
                 },
                 ["background"] = r.Background.Describe(),
+                ["protocol"] = Protocol(r),
+                ["warnings"] = new JArray(r.Warnings),
                 ["notes"] = new JArray(r.Notes.Concat(r.Renders.Notes)),
                 ["definitions"] = JObject.FromObject(Definitions),
                 ["mean"] = mean,
                 ["views"] = views,
             };
+            if (r.Trainer != null) json["trainer_metrics"] = Trainer(r);
             if (r.Geometry != null) json["geometry"] = Geometry(r.Geometry);
             if (r.GeometrySteps.Count > 0)
             {
@@ -99,6 +102,75 @@ namespace NerfDatasetCreator
                 json["geometry_steps"] = new JArray(r.GeometrySteps.Select(Geometry));
                 json["geometry_mean_over_steps"] = GeometryMean(r.GeometrySteps);
             }
+            return json;
+        }
+
+        /// <summary>The protocol evaluate followed: the dataset's eval_protocol.json (or none), and the renders' measured background.</summary>
+        static JObject Protocol(EvaluationResult r)
+        {
+            var p = r.Protocol;
+            var json = p == null
+                ? new JObject { ["file"] = null, ["summary"] = "none: the dataset has no " + EvalProtocolFile.FileName + "; background white and split test by default" }
+                : new JObject
+                {
+                    ["file"] = EvalProtocolFile.FileName,
+                    ["summary"] = p.Describe(),
+                    ["background"] = p.Background,
+                    ["background_rgb"] = new JArray(p.R, p.G, p.B),
+                    ["evaluation_split"] = p.EvaluationSplit,
+                    ["resolution_factor"] = p.ResolutionFactor,
+                    ["compositing"] = EvalProtocolTrainers.Compositing,
+                    ["ssim"] = EvalProtocolTrainers.Ssim,
+                    ["lpips"] = new JObject { ["network"] = EvalProtocolTrainers.LpipsNetwork, ["input_range"] = EvalProtocolTrainers.LpipsRange },
+                };
+            json["overridden"] = r.Warnings.Any(w => w.StartsWith("--override-protocol", StringComparison.Ordinal));
+            var m = r.RenderBackground;
+            json["renders_background"] = m == null || m.Pixels == 0 ? null : new JObject
+            {
+                ["mean_rgb"] = new JArray(Num(m.R), Num(m.G), Num(m.B)),
+                ["pixels"] = m.Pixels,
+                ["views"] = m.ViewsMeasured,
+                ["rule"] = "the renders' mean colour where the ground truth's alpha is 0, on up to " + RenderBackgroundCheck.Views + " views; refused when a channel is more than " + RenderBackgroundCheck.Tolerance.ToString(System.Globalization.CultureInfo.InvariantCulture) + " from the background scored over (unless --override-protocol)",
+            };
+            return json;
+        }
+
+        /// <summary>The trainer's own figures beside ours, with the comparison rule and the views that disagree.</summary>
+        static JObject Trainer(EvaluationResult r)
+        {
+            var t = r.Trainer;
+            var json = new JObject
+            {
+                ["source"] = t.Source,
+                ["file"] = t.File,
+                ["method"] = t.Method,
+                ["psnr"] = t.Psnr.HasValue ? Num(t.Psnr.Value) : null,
+                ["ssim"] = t.Ssim.HasValue ? Num(t.Ssim.Value) : null,
+                ["lpips"] = t.Lpips.HasValue ? Num(t.Lpips.Value) : null,
+                ["ssim_variant"] = t.SsimVariant,
+                ["lpips_variant"] = t.LpipsVariant,
+                ["comparison"] = new JArray(r.TrainerMeans.Select(c => new JObject
+                {
+                    ["metric"] = c.Metric,
+                    ["evaluate"] = Num(c.Ours),
+                    ["trainer"] = Num(c.Theirs),
+                    ["difference"] = Num(c.Theirs - c.Ours),
+                    ["tolerance"] = c.Tolerance,
+                    ["compared"] = c.Compared,
+                    ["flagged"] = c.Flagged,
+                })),
+                ["flagged_views"] = new JArray(r.TrainerFlaggedViews),
+                ["notes"] = new JArray(t.Notes),
+            };
+            if (t.Views != null)
+                json["views"] = new JArray(t.Views.Select((v, i) => new JObject
+                {
+                    ["frame"] = i,
+                    ["name"] = v.Name,
+                    ["psnr"] = v.Psnr.HasValue ? Num(v.Psnr.Value) : null,
+                    ["ssim"] = v.Ssim.HasValue ? Num(v.Ssim.Value) : null,
+                    ["lpips"] = v.Lpips.HasValue ? Num(v.Lpips.Value) : null,
+                }));
             return json;
         }
 

@@ -17,9 +17,13 @@ namespace NerfDatasetCreator
     {
         public static EvaluationResult Run(EvaluationOptions options, Action<string> progress = null)
         {
-            var dataset = EvaluationDataset.Read(options.DatasetFolder, options.Split);
-            var renders = RenderFolder.Read(options.RendersFolder, options.Layout, options.Split, dataset.Frames.Select(f => f.FilePath).ToList());
-            var background = EvaluationBackground.Parse(options.Background, dataset.Config);
+            // The protocol first: it names the split and the background when the options do not (eval_protocol.json).
+            var protocol = !string.IsNullOrEmpty(options.DatasetFolder) && Directory.Exists(options.DatasetFolder) ? EvalProtocolFile.Read(Path.GetFullPath(options.DatasetFolder)) : null;
+            var split = options.Split ?? protocol?.EvaluationSplit ?? "test";
+            var dataset = EvaluationDataset.Read(options.DatasetFolder, split);
+            var renders = RenderFolder.Read(options.RendersFolder, options.Layout, split, dataset.Frames.Select(f => f.FilePath).ToList());
+            var warnings = new List<string>();
+            var background = EvaluationBackground.Parse(ProtocolChoice(options, protocol, warnings), dataset.Config);
             var stepsFolder = options.GeometryPath != null && Directory.Exists(options.GeometryPath);
             if (options.GeometryPath != null && !stepsFolder && !File.Exists(options.GeometryPath))
                 throw new InvalidParameterException(new[] { new ValidationProblem("--geometry", options.GeometryPath, "does not exist.", "Pass the reconstruction as .ply (points or mesh) or .obj, or a folder of per-step reconstructions.") });
@@ -38,12 +42,26 @@ namespace NerfDatasetCreator
             if (stepsFolder) perStep = GeometryStepsEvaluation.Match(dataset, options.GeometryPath);
             else if (options.GeometryPath != null) truth = GeometryTruth.Resolve(dataset, options.GeometryPath, options.TruthMeshPath, options.Step);
             var firstColumn = TrainTestExposureCrop.FirstColumn(dataset, renders);
-            CheckSizes(dataset, renders, firstColumn);
+            CheckSizes(dataset, renders, firstColumn, protocol);
+            // The renders' own background, where the ground truth is transparent: another colour than the one scored over is refused (issue 35).
+            var measured = RenderBackgroundCheck.Measure(dataset, renders, background, firstColumn);
+            var wrongBackground = RenderBackgroundCheck.Problem(measured, background, dataset.Config);
+            if (wrongBackground != null)
+            {
+                if (!options.OverrideProtocol)
+                    throw new InvalidParameterException(new[] { new ValidationProblem("--background", background.Name, wrongBackground,
+                        "Score them over the colour they were rendered on (--background <colour> --override-protocol when that contradicts eval_protocol.json), or train and render again with the protocol's trainer flags (eval_protocol.json trainer_flags).") });
+                warnings.Add("--override-protocol: " + wrongBackground);
+            }
+            var trainer = TrainerResults.Find(options.TrainerMetricsPath, renders, Path.GetFullPath(options.RendersFolder), split, dataset.Frames.Count);
 
             var result = new EvaluationResult
             {
                 DatasetFolder = dataset.Root,
-                Split = options.Split,
+                Split = split,
+                Protocol = protocol,
+                RenderBackground = measured,
+                Trainer = trainer,
                 Renders = renders,
                 Background = background,
                 DepthAlongRay = options.DepthAlongRay,
@@ -57,13 +75,14 @@ namespace NerfDatasetCreator
             if (firstColumn > 0)
                 result.Notes.Add("The 3DGS renders are the right half of each view (render.py with --train_test_exp keeps columns W//2 … W − 1 of the render and of gt): scored against that half of the dataset's images, from column " + firstColumn + ".");
             if (truth?.Note != null) result.Notes.Add(truth.Note);
-            if (!dataset.HasMasks) result.Notes.Add("The dataset's " + options.Split + " split has no masks: PSNR in the mask not computed.");
+            result.Warnings.AddRange(warnings);
+            if (!dataset.HasMasks) result.Notes.Add("The dataset's " + split + " split has no masks: PSNR in the mask not computed.");
             if (renders.Layout == RenderLayout.Nerfstudio && wantDepth)
                 result.Notes.Add(options.DepthAlongRay
                     ? "nerfstudio depth read as distance along each ray (nerfacto's) and converted to z-depth."
                     : "nerfstudio depth read as z-depth (splatfacto's); nerfacto's depth is the distance along the ray: pass --render-depth ray for it.");
 
-            var outFolder = Path.GetFullPath(options.ResolvedOutFolder(Path.GetFullPath(options.RendersFolder)));
+            var outFolder = Path.GetFullPath(options.ResolvedOutFolder(Path.GetFullPath(options.RendersFolder), split));
             var created = !Directory.Exists(outFolder);
             EvaluationOutput.Prepare(outFolder, dataset.Root);
             result.OutFolder = outFolder;
@@ -113,6 +132,8 @@ namespace NerfDatasetCreator
             else if (options.GeometryPath != null)
                 result.Geometry = GeometryEvaluation.Run(truth ?? GeometryTruth.Resolve(dataset, options.GeometryPath, options.TruthMeshPath, options.Step), options.GeometryPath, options.Threshold, options.TruthPoints, progress);
 
+            CompareTrainer(result);
+
             // The report first, metrics.json last: a metrics.json marks a complete evaluation.
             // Each written whole or not at all (AtomicFile); the journal goes last: a kill before leaves a folder the next run recognises.
             AtomicFile.WriteNewText(Path.Combine(outFolder, ReportHtml.FileName), ReportHtml.Build(result));
@@ -120,9 +141,43 @@ namespace NerfDatasetCreator
             EvaluationOutput.Finish(outFolder);
         }
 
+        /// <summary>
+        /// The background to score over: <c>--background</c>, else the protocol's, else white. A <c>--background</c> that
+        /// contradicts the protocol is refused with the reason, or accepted with a warning under <c>--override-protocol</c>.
+        /// </summary>
+        static string ProtocolChoice(EvaluationOptions options, EvalProtocol protocol, List<string> warnings)
+        {
+            if (protocol != null && protocol.ResolutionFactor != 1)
+                throw new InvalidParameterException(new[] { new ValidationProblem(EvalProtocolFile.FileName + ": resolution_factor", protocol.ResolutionFactor.ToString(CultureInfo.InvariantCulture),
+                    "asks for renders at 1/" + protocol.ResolutionFactor.ToString(CultureInfo.InvariantCulture) + " of the dataset's resolution, but evaluate scores at the dataset's own resolution only.",
+                    "Render at full resolution (and write resolution_factor 1), or compare the trainer's own figures with --trainer-metrics.") });
+            var wanted = protocol?.EvaluationBackgroundName;
+            if (options.Background == null) return wanted ?? "white";
+            if (wanted == null || string.Equals(options.Background, wanted, StringComparison.OrdinalIgnoreCase)) return options.Background;
+            var why = "the dataset's " + EvalProtocolFile.FileName + " says " + protocol.Describe() + ".";
+            if (!options.OverrideProtocol)
+                throw new InvalidParameterException(new[] { new ValidationProblem("--background", options.Background,
+                    "contradicts the protocol: " + why + " Scored over another colour, a render made as the protocol says loses every background pixel (about 0.6–0.9 dB on nerf_synthetic-like data).",
+                    "Leave --background out to score over " + wanted + ", or add --override-protocol to score over " + options.Background + " anyway (metrics.json and the report then say so).") });
+            warnings.Add("--override-protocol: scored over " + options.Background + " although " + why);
+            return options.Background;
+        }
+
+        /// <summary>The trainer's own figures beside evaluate's; a disagreement beyond the tolerance is a warning.</summary>
+        static void CompareTrainer(EvaluationResult result)
+        {
+            var t = result.Trainer;
+            if (t == null) return;
+            // 3DGS metrics.py scores test/ only; ns-eval its own eval split.
+            var comparable = !(t.Source == "3dgs metrics.py" && result.Split != "test");
+            result.TrainerMeans.AddRange(TrainerComparison.Means(t, result.Views, comparable));
+            foreach (var c in result.TrainerMeans.Where(c => c.Flagged)) result.Warnings.Add(TrainerComparison.Warning(t, c, result.Background));
+            if (comparable) result.TrainerFlaggedViews.AddRange(TrainerComparison.FlaggedViews(t, result.Views));
+        }
+
         /// <summary>Every render must have the ground truth's size (read from the PNG headers before any pixel is decoded).</summary>
         /// <param name="firstColumn">The renders hold the dataset's columns from here on (<see cref="TrainTestExposureCrop"/>).</param>
-        static void CheckSizes(EvaluationDataset dataset, RenderSet renders, int firstColumn)
+        static void CheckSizes(EvaluationDataset dataset, RenderSet renders, int firstColumn, EvalProtocol protocol = null)
         {
             // Every view is looked at (headers only), the first few named in frame order and the rest counted, so a
             // refusal never hides how many views are wrong (issue 35).
@@ -143,7 +198,7 @@ namespace NerfDatasetCreator
                 catch (InvalidDataException e) { Add(new ValidationProblem("--renders", view.ColourPath, e.Message, "Re-render the view.")); continue; }
                 if (render.Width != truth.Width - firstColumn || render.Height != truth.Height)
                     Add(new ValidationProblem("--renders", view.ColourPath, "is " + render.Width + "×" + render.Height + " but the ground truth " + view.FramePath + " is " + truth.Width + "×" + truth.Height + ".",
-                        "Render at the dataset's resolution (3DGS: -r 1 for images wider than 1600 px; nerfstudio: no --downscale-factor; nerf-pytorch: no --half_res)."));
+                        "Render at the dataset's resolution" + (protocol != null ? " (eval_protocol.json: resolution factor 1)" : "") + " (3DGS: -r 1 for images wider than 1600 px; nerfstudio: no --downscale-factor; nerf-pytorch: no --half_res)."));
             }
             if (more > 0)
                 problems.Add(new ValidationProblem("--renders", renders.Folder, "has " + more + " more view(s) like these (" + (Named + more) + " of " + renders.Views.Count + " in all).",

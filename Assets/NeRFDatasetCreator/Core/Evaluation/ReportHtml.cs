@@ -28,6 +28,8 @@ namespace NerfDatasetCreator
             h.Append("<h1>").Append(E(System.IO.Path.GetFileName(r.DatasetFolder))).Append(" — ").Append(E(r.Split)).Append(" split, ").Append(r.Views.Count).Append(" views</h1>\n");
             h.Append("<div class=\"meta\">Dataset ").Append(E(r.DatasetFolder)).Append("<br>Renders ").Append(E(r.Renders.Folder)).Append(" (").Append(E(RenderLayouts.Name(r.Renders.Layout))).Append(" layout)<br>Background ")
              .Append(E(r.Background.Describe())).Append("<br>").Append(E(r.CreatedUtc)).Append(" · ").Append(E(MetricsJson.Generator)).Append(' ').Append(E(PluginInfo.Version)).Append("</div>\n");
+            h.Append("<p class=\"meta\">Protocol: ").Append(E(r.Protocol != null ? r.Protocol.Describe() + " (" + EvalProtocolFile.FileName + ")" : "none (no " + EvalProtocolFile.FileName + "): defaults used")).Append("</p>\n");
+            foreach (var warning in r.Warnings) h.Append("<p style=\"color:#b00020;font-weight:bold\">Warning: ").Append(E(warning)).Append("</p>\n");
             foreach (var note in r.Notes.Concat(r.Renders.Notes)) h.Append("<p class=\"meta\">").Append(E(note)).Append("</p>\n");
 
             // Summary.
@@ -44,7 +46,8 @@ namespace NerfDatasetCreator
             }
             if (r.Views.Count > 0 && r.Views.All(v => v.Normals != null))
                 Row(h, "normal error (°)", F(MetricsJson.Mean(r.Views.Select(v => v.Normals.MeanDegrees).Where(x => !double.IsNaN(x))), "0.00"), MetricsJson.Definitions["normals"]);
-            Row(h, "LPIPS", "—", MetricsJson.Definitions["lpips"]);
+            Row(h, "LPIPS", r.Trainer?.Lpips is double lp ? F(lp, "0.0000") + " (" + r.Trainer.Source + ")" : "—",
+                r.Trainer?.Lpips != null ? r.Trainer.LpipsVariant : MetricsJson.Definitions["lpips"]);
             if (r.Geometry != null)
             {
                 var d = r.Geometry.Distances;
@@ -65,6 +68,7 @@ namespace NerfDatasetCreator
                         "Chamfer " + F(g.Distances.Chamfer, "0.00000") + ", F " + F(g.Distances.FScore, "0.0000"), Path.GetFileName(g.ReconstructionPath));
             }
             h.Append("</table>\n");
+            if (r.Trainer != null) TrainerTable(h, r);
 
             h.Append("<h2>PSNR per view</h2>\n").Append(Chart(r)).Append('\n');
 
@@ -72,6 +76,8 @@ namespace NerfDatasetCreator
             foreach (var v in r.Views)
             {
                 h.Append("<div class=\"view\"><div class=\"f\"><b>").Append(E(v.FilePath)).Append("</b> (frame ").Append(v.FrameIndex).Append(")<br>PSNR ").Append(F(v.Psnr, "0.00")).Append(" dB<br>SSIM ").Append(F(v.Ssim, "0.0000"));
+                if (r.Trainer?.Views != null && v.FrameIndex < r.Trainer.Views.Length && r.Trainer.Views[v.FrameIndex].Psnr is double theirs)
+                    h.Append("<br>").Append(E(r.Trainer.Source)).Append(": PSNR ").Append(F(theirs, "0.00")).Append(" dB").Append(r.TrainerFlaggedViews.Contains(v.FrameIndex) ? " <b>(disagrees)</b>" : "");
                 if (r.HasMasks) h.Append("<br>PSNR in mask ").Append(F(v.MaskedPsnr, "0.00")).Append(" dB");
                 if (v.Depth != null) h.Append("<br>depth abs-rel ").Append(F(v.Depth.AbsRel, "0.0000")).Append(", RMSE ").Append(F(v.Depth.Rmse, "0.0000"));
                 if (v.Normals != null) h.Append("<br>normals ").Append(F(v.Normals.MeanDegrees, "0.00")).Append('°');
@@ -83,6 +89,26 @@ namespace NerfDatasetCreator
             }
             h.Append("</body></html>\n");
             return h.ToString();
+        }
+
+        /// <summary>The trainer's own figures beside evaluate's, each comparison's tolerance and verdict (<see cref="TrainerComparison"/>).</summary>
+        static void TrainerTable(StringBuilder h, EvaluationResult r)
+        {
+            var t = r.Trainer;
+            h.Append("<h2>The trainer's own figures: ").Append(E(t.Source)).Append(" (").Append(E(t.Method)).Append(")</h2>\n<p class=\"meta\">").Append(E(t.File)).Append("</p>\n");
+            h.Append("<table><tr><th class=\"l\">metric</th><th>evaluate</th><th>trainer</th><th>tolerance</th><th class=\"l\">verdict</th></tr>\n");
+            foreach (var c in r.TrainerMeans)
+            {
+                var f = c.Metric == "psnr" ? "0.00" : "0.0000";
+                h.Append("<tr><td class=\"l\">").Append(E(c.Metric.ToUpperInvariant())).Append("</td><td>").Append(F(c.Ours, f)).Append("</td><td>").Append(F(c.Theirs, f)).Append("</td><td>")
+                 .Append(F(c.Tolerance, c.Metric == "psnr" ? "0.00" : "0.000")).Append("</td><td class=\"l\">")
+                 .Append(E(!c.Compared ? "shown, not compared (" + (c.Metric == "ssim" ? t.SsimVariant : "another split") + ")" : c.Flagged ? "DISAGREES: another background or resolution?" : "agrees")).Append("</td></tr>\n");
+            }
+            if (t.Lpips is double lpips) h.Append("<tr><td class=\"l\">LPIPS</td><td>—</td><td>").Append(F(lpips, "0.0000")).Append("</td><td></td><td class=\"l\">").Append(E(t.LpipsVariant)).Append("</td></tr>\n");
+            h.Append("</table>\n");
+            if (r.TrainerFlaggedViews.Count > 0)
+                h.Append("<p class=\"meta\">Views whose trainer PSNR differs beyond the tolerance: frames ").Append(E(string.Join(", ", r.TrainerFlaggedViews))).Append("</p>\n");
+            foreach (var note in t.Notes) h.Append("<p class=\"meta\">").Append(E(note)).Append("</p>\n");
         }
 
         static void Row(StringBuilder h, string name, string value, string definition) =>

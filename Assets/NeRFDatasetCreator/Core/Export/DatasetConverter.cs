@@ -109,6 +109,7 @@ namespace NerfDatasetCreator
                     case ExportTarget.Dycheck: result = DyCheckExport.Write(scene, output, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
+                EvalProtocolCarry.Copy(scene.RootDirectory, output, staged, warnings);
                 staged.Commit();
                 return result;
             }

@@ -19,7 +19,7 @@ namespace NerfDatasetCreator
         {
             DatasetLayout.ConfigFileName, DatasetLayout.RigPreviewFileName, RigPreviewPicture.FileName, TargetPointCloud.FileName, ShardManifest.FileName,
             NerfstudioWriter.FileName, OperationJournal.FileName, OperationJournal.FileName + ".tmp", DatasetCheck.ReportFileName,
-            DatasetLayout.LabelsFileName,
+            DatasetLayout.LabelsFileName, EvalProtocolFile.FileName,
         }.Concat(DatasetSplits.Names.Select(DatasetLayout.LabelsPreviewFileName)).ToArray();
         static readonly string[] ColmapSparseFiles = { "cameras.txt", "images.txt", "points3D.txt", "points3D.ply", "test.txt", GaussianSplattingDepths.ParamsFileName };
 
@@ -28,12 +28,12 @@ namespace NerfDatasetCreator
         static readonly Tree Png = new Tree(f => f.EndsWith(".png", StringComparison.OrdinalIgnoreCase));
         static readonly Tree GeometryPack = new Tree(GeometryPackSteps.IsPackFile);
         static readonly Tree CameraPaths = new Tree(f => DatasetSplits.Names.Any(s => s + ".json" == f));
-        static readonly Tree Ngp = new Tree(f => f == NgpWriter.FileName).With(CameraPathFiles.FolderName, CameraPaths);
-        static readonly Tree Colmap = new Tree(f => false)
+        static readonly Tree Ngp = new Tree(f => f == NgpWriter.FileName || f == EvalProtocolFile.FileName).With(CameraPathFiles.FolderName, CameraPaths);
+        static readonly Tree Colmap = new Tree(f => f == EvalProtocolFile.FileName)
             .With(ColmapTextWriter.ImagesFolder, Png)
             .With("sparse", new Tree(f => false).With("0", new Tree(f => ColmapSparseFiles.Contains(f))))
             .With(GaussianSplattingDepths.FolderName, Png);
-        static readonly Tree Dynamic3dgs = new Tree(f => f == Dynamic3DGaussians.TrainMetaFileName || f == Dynamic3DGaussians.TestMetaFileName || f == Dynamic3DGaussians.PointCloudFileName)
+        static readonly Tree Dynamic3dgs = new Tree(f => f == EvalProtocolFile.FileName || f == Dynamic3DGaussians.TrainMetaFileName || f == Dynamic3DGaussians.TestMetaFileName || f == Dynamic3DGaussians.PointCloudFileName)
             .With(Dynamic3DGaussians.ImagesFolder, new Tree(f => false, Png))
             .With(Dynamic3DGaussians.SegmentationFolder, new Tree(f => false, Png));
 

@@ -69,6 +69,12 @@ namespace NerfDatasetCreator
 
         public BackgroundSettings Background = new BackgroundSettings();
 
+        /// <summary>
+        /// The background eval_protocol.json names (<see cref="EvalProtocol.SettingsKey"/>: white, black, random or
+        /// dataset); null for the default — white for a transparent background, the dataset's own for a solid one.
+        /// </summary>
+        public string EvaluationBackground;
+
         /// <summary>Seeds every random choice (random formations); the same seed gives the same dataset.</summary>
         public long Seed;
 

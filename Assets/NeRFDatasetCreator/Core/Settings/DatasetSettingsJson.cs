@@ -52,6 +52,12 @@ namespace NerfDatasetCreator
             w.WritePropertyName("height"); w.WriteValue(s.Height);
             w.WritePropertyName("supersampling"); w.WriteValue(s.Supersampling);
             w.WritePropertyName("background"); w.WriteValue(s.Background.ToConfigString());
+            // Only when chosen, so configs without it keep their keys (eval_protocol.json's background).
+            if (s.EvaluationBackground != null)
+            {
+                w.WritePropertyName(EvalProtocol.SettingsKey);
+                w.WriteValue(s.EvaluationBackground);
+            }
             w.WritePropertyName("seed"); w.WriteValue(s.Seed);
             w.WritePropertyName("overwrite"); w.WriteValue(OverwriteName(s.Overwrite));
             w.WritePropertyName("loaders");
@@ -229,6 +235,14 @@ namespace NerfDatasetCreator
                     var background = BackgroundSettings.Parse(reader.String(t, p));
                     if (background == null) throw reader.Error(t, p, "must be \"transparent\", \"sky\" or a colour \"#rrggbb\", not " + Describe(t) + ".");
                     s.Background = background;
+                },
+                [EvalProtocol.SettingsKey] = (t, p) =>
+                {
+                    var name = reader.String(t, p);
+                    if (System.Array.IndexOf(EvalProtocol.BackgroundNames, name) < 0)
+                        throw reader.Error(t, p, "must be one of " + string.Join(", ", EvalProtocol.BackgroundNames) + " (the background eval_protocol.json names), not " + Describe(t) + "." +
+                            SpellingSuggestion.Sentence(name ?? "", EvalProtocol.BackgroundNames));
+                    s.EvaluationBackground = name;
                 },
                 ["seed"] = (t, p) => s.Seed = reader.Long(t, p),
                 ["overwrite"] = (t, p) =>

@@ -88,6 +88,8 @@ namespace NerfDatasetCreator
 
             foreach (var split in DatasetSplits.All)
                 ValidateSplit(settings, split, problems);
+            var protocol = EvalProtocol.Problem(settings.Background, settings.EvaluationBackground);
+            if (protocol != null) problems.Add(protocol);
             problems.AddRange(TimeSettingsValidator.Validate(settings));
             problems.AddRange(LabelSettingsValidator.Validate(settings));
             problems.AddRange(LensSettingsValidator.Validate(settings));

@@ -19,7 +19,9 @@ namespace NerfDatasetCreator
         /// back (files moved back into the shards) or finished by the next merge into the same output (<see cref="Recovery"/>).
         /// </summary>
         /// <param name="labels">The shards' common labels.json (<see cref="MergeLabels"/>), copied (never moved) with new previews; null for none.</param>
-        public static ValidationProblem Write(List<ShardFolder> shards, List<MergeFrame> frames, List<MergeTransfer> transfers, string output, bool move, string labels = null)
+        /// <param name="protocol">The shards' common eval_protocol.json (<see cref="MergeProtocol"/>), copied (never moved); null for none.</param>
+        public static ValidationProblem Write(List<ShardFolder> shards, List<MergeFrame> frames, List<MergeTransfer> transfers, string output, bool move, string labels = null,
+            string protocol = null)
         {
             var staging = WorkingFolders.NewMerging(output);
             var journal = new OperationJournal { Operation = "merge", Output = output };
@@ -61,6 +63,7 @@ namespace NerfDatasetCreator
                     WriteJson(Path.Combine(staging, ShardMerger.TransformsFileName(split)), merged);
                 }
                 MergeLabels.Write(labels, staging);
+                MergeProtocol.Write(protocol, staging);
                 var config = shards.FirstOrDefault(s => s.Config != null);
                 if (config != null) FileOps.WriteText(Path.Combine(staging, ShardMerger.ConfigFileName), new DatasetConfig(MergedConfig(config.Config, shards)).ToText());
                 journal.State = OperationJournal.Committing;

@@ -124,7 +124,7 @@ namespace NerfDatasetCreator
             foreach (var leftover in byView.Values.SelectMany(v => v))
                 warnings.Add(leftover + " belongs to no frame of its shard's transforms and was left in place.");
 
-            var known = new HashSet<string>(ViewCounts.SplitNames.Concat(ViewCounts.SplitNames.Select(ShardMerger.TransformsFileName)).Concat(new[] { ShardManifest.FileName, ShardMerger.ConfigFileName, DatasetLayout.LabelsFileName })
+            var known = new HashSet<string>(ViewCounts.SplitNames.Concat(ViewCounts.SplitNames.Select(ShardMerger.TransformsFileName)).Concat(new[] { ShardManifest.FileName, ShardMerger.ConfigFileName, DatasetLayout.LabelsFileName, EvalProtocolFile.FileName })
                 .Concat(ViewCounts.SplitNames.Select(DatasetLayout.LabelsPreviewFileName)), StringComparer.Ordinal);
             foreach (var shard in shards)
                 foreach (var entry in Directory.EnumerateFileSystemEntries(shard.Folder).OrderBy(p => p, StringComparer.Ordinal))
@@ -138,7 +138,7 @@ namespace NerfDatasetCreator
         {
             var name = Path.GetFileName(relative);
             return DatasetSplits.Names.Any(s => string.Equals(name, DatasetLayout.TransformsFileName(s), StringComparison.OrdinalIgnoreCase))
-                   || new[] { ShardManifest.FileName, DatasetLayout.ConfigFileName, OperationJournal.FileName, NerfstudioWriter.FileName }
+                   || new[] { ShardManifest.FileName, DatasetLayout.ConfigFileName, OperationJournal.FileName, NerfstudioWriter.FileName, EvalProtocolFile.FileName }
                        .Any(m => string.Equals(name, m, StringComparison.OrdinalIgnoreCase));
         }
 

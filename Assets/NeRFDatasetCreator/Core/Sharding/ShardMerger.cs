@@ -63,11 +63,12 @@ namespace NerfDatasetCreator
             var frames = MergeChecks.CollectFrames(shards, counts, problems, warnings);
             MergeChecks.CheckConsistency(shards, problems, warnings);
             var labels = MergeLabels.Check(shards, problems);
+            var protocol = MergeProtocol.Check(shards, problems);
             var transfers = MergeTransfer.Plan(shards, frames, problems, warnings);
             if (problems.Count > 0) return new MergeResult(output, problems, warnings, empty, 0, notes);
 
             var perSplit = ViewCounts.SplitNames.ToDictionary(s => s, s => frames.Count(f => f.Split == s));
-            var failure = MergeStaging.Write(shards, frames, transfers, output, moveFiles, labels);
+            var failure = MergeStaging.Write(shards, frames, transfers, output, moveFiles, labels, protocol);
             if (failure != null) return Fail(failure, warnings, notes);
             return new MergeResult(output, problems, warnings, perSplit, transfers.Count, notes);
         }

@@ -11,11 +11,12 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class CheckCommand
     {
-        public static readonly ToolCommand Command = ToolCommand.Of("check", "check <dir> [--split S] [--json FILE] [--max-views N]",
+        public static readonly ToolCommand Command = ToolCommand.Of("check", "check <dir> [--split S] [--json FILE] [--max-views N] [--model <dir>]",
             "decode the images and check that alpha, masks, depth, normals, poses and point cloud agree", Parse, Run).WithOptions(
             "--split S        only that split: train, val or test (default: all)",
             "--json FILE      also write the whole report to FILE, a new file (never replaced)",
-            "--max-views N    check at most N views per split, spread evenly (default: all)");
+            "--max-views N    check at most N views per split, spread evenly (default: all)",
+            "--model <dir>    also compare eval_protocol.json with a trained output's cfg_args (3DGS) or config.yml (nerfstudio)");
 
         public sealed class Options
         {
@@ -29,17 +30,21 @@ namespace NerfDatasetCreator
 
             /// <summary><c>--max-views N</c>: at most N views per split, spread evenly; 0 for all.</summary>
             public int MaxViews { get; set; }
+
+            /// <summary><c>--model &lt;dir&gt;</c>: a trained output whose written config is compared with the protocol (<see cref="TrainerConfigCheck"/>); null for none.</summary>
+            public string Model { get; set; }
         }
 
         static Options Parse(ToolArguments arguments)
         {
-            arguments.RefuseUnknownOptions("split", "json", "max-views");
+            arguments.RefuseUnknownOptions("split", "json", "max-views", "model");
             return new Options
             {
                 DatasetFolder = arguments.OnePositional("check needs exactly one dataset folder."),
                 Split = arguments.Split(),
                 JsonReport = arguments.OptionalPath("json", "--json is empty; name the report file to write, e.g. --json report.json."),
                 MaxViews = arguments.WholeNumber("max-views", 1, max => "--max-views " + max + ": is not a whole number of at least 1.") ?? 0,
+                Model = arguments.OptionalPath("model", "--model is empty; name the trained output folder (3DGS -m <model>, nerfstudio outputs/…/<timestamp>)."),
             };
         }
 
@@ -83,11 +88,28 @@ namespace NerfDatasetCreator
                 return ToolExitCodes.Failure;
             }
 
+            // The trainer's written config against the protocol, before the images are decoded: a wrong --model stops at once.
+            TrainerConfigCheck.Result trainer = null;
+            if (options.Model != null)
+            {
+                try { trainer = TrainerConfigCheck.Run(Path.GetFullPath(folder), options.Model); }
+                catch (InvalidParameterException e)
+                {
+                    foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
+                    return ToolExitCodes.Failure;
+                }
+            }
             var report = DatasetCheck.Run(folder, new DatasetCheckOptions { Split = options.Split, MaxViews = options.MaxViews });
             stdout.WriteLine("check " + Path.GetFullPath(folder) + ": " + report.ViewsChecked + " views in " +
                              report.TotalSeconds.ToString("0.0", System.Globalization.CultureInfo.InvariantCulture) + " s (decoding " +
                              report.DecodeSeconds.ToString("0.0", System.Globalization.CultureInfo.InvariantCulture) + " s)");
             foreach (var line in report.SummaryLines) stdout.WriteLine("  " + line);
+            if (trainer != null)
+            {
+                foreach (var line in trainer.Read) stdout.WriteLine("  trainer config: " + line);
+                foreach (var warning in trainer.Warnings) stdout.WriteLine("warning: " + warning);
+                if (trainer.Warnings.Count == 0) stdout.WriteLine("  trainer config agrees with the protocol");
+            }
             foreach (var line in ProblemList.Lines(report.Problems, "problem: ", json != null ? "the report " + json + " lists every one" : "check --json FILE lists every one")) stdout.WriteLine(line);
 
             if (json != null)

@@ -11,13 +11,15 @@ namespace NerfDatasetCreator
     public static class EvaluateCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("evaluate",
-            "evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
-            "score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html", Parse, Run).WithOptions(
+            "evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset [--override-protocol]] [--trainer-metrics <json>] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
+            "score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html", Parse, Run, "override-protocol").WithOptions(
             "--renders <dir>               the trainer's renders of the split (3DGS model folder, ns-render --output-path, instant-ngp --screenshot_dir, or r_<i>.png)",
-            "--split test|val|train        the split the renders show (default test)",
+            "--split test|val|train        the split the renders show (default: eval_protocol.json's, else test)",
             "--out <dir>                   where metrics.json, report.html and the error maps go (default <renders>/evaluation-<split>)",
             "--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain  how the renders are named (default: detected)",
-            "--background white|black|dataset    what the dataset's transparent pixels are composited on (default white)",
+            "--background white|black|dataset    what the dataset's transparent pixels are composited on (default: eval_protocol.json's, else white)",
+            "--override-protocol           score over a --background that contradicts eval_protocol.json, or renders of another background, with a warning",
+            "--trainer-metrics <json>      3DGS metrics.py's results.json or ns-eval's JSON, shown beside (default: <model>/results.json for 3DGS renders)",
             "--render-depth z|ray          the renders' depth: z-depth (splatfacto) or distance along the ray (nerfacto)",
             "--geometry <recon.ply|.obj|folder>  also score a reconstructed surface (Chamfer, F-score)",
             "--gt-mesh <mesh>              the ground-truth mesh for --geometry, in the output frame (.ply or .obj)",
@@ -27,13 +29,13 @@ namespace NerfDatasetCreator
         /// <summary><c>evaluate &lt;dataset&gt; --renders &lt;dir&gt; [options]</c> → <see cref="EvaluationOptions"/>.</summary>
         static EvaluationOptions Parse(ToolArguments arguments)
         {
-            arguments.RefuseUnknownOptions("renders", "split", "out", "layout", "background", "render-depth", "geometry", "gt-mesh", "threshold", "step");
+            arguments.RefuseUnknownOptions("renders", "split", "out", "layout", "background", "override-protocol", "trainer-metrics", "render-depth", "geometry", "gt-mesh", "threshold", "step");
             var e = new EvaluationOptions();
             e.DatasetFolder = arguments.OnePositional("evaluate needs exactly one dataset folder, e.g. evaluate NeRFDatasets/lego --renders output/lego.");
             if (!arguments.TryGet("renders", out var renders) || string.IsNullOrWhiteSpace(renders))
                 arguments.Error("evaluate needs --renders <folder>: the trainer's renders of the split (3DGS model folder, ns-render dataset's --output-path, instant-ngp --screenshot_dir, or r_<i>.png files).");
             e.RendersFolder = renders;
-            e.Split = arguments.Split() ?? e.Split;
+            e.Split = arguments.Split();
             e.OutFolder = arguments.OptionalPath("out", "--out is empty; leave it out to write into <renders>/evaluation-<split>.");
             if (arguments.TryGet("layout", out var layout))
             {
@@ -45,6 +47,8 @@ namespace NerfDatasetCreator
                 if (Array.IndexOf(EvaluationBackground.Names, background) < 0) arguments.Error("--background = " + background + ": is not white, black or dataset.");
                 else e.Background = background;
             }
+            e.OverrideProtocol = arguments.Flag("override-protocol");
+            e.TrainerMetricsPath = arguments.OptionalPath("trainer-metrics", "--trainer-metrics is empty; name 3DGS's results.json or ns-eval's JSON, or leave it out.");
             if (arguments.TryGet("render-depth", out var depth))
             {
                 if (depth == "ray") e.DepthAlongRay = true;
@@ -70,7 +74,7 @@ namespace NerfDatasetCreator
             return e;
         }
 
-        /// <summary>The command line of the Dataset Tools' Evaluate button: <c>evaluate &lt;dataset&gt; --renders &lt;folder&gt;</c> with the tool's defaults (test split, layout detected, white background).</summary>
+        /// <summary>The command line of the Dataset Tools' Evaluate button: <c>evaluate &lt;dataset&gt; --renders &lt;folder&gt;</c> with the tool's defaults (the protocol's split and background, layout detected).</summary>
         public static string[] Arguments(string datasetFolder, string rendersFolder) =>
             new[] { Command.Name, ToolArguments.Required(datasetFolder), "--renders", ToolArguments.Required(rendersFolder) };
 
@@ -93,13 +97,22 @@ namespace NerfDatasetCreator
                 stderr.WriteLine("evaluate stopped on a file it cannot read.");
                 return ToolExitCodes.Failure;
             }
-            foreach (var note in result.Notes.Concat(result.Renders.Notes)) stdout.WriteLine("note: " + note);
+            foreach (var note in result.Notes.Concat(result.Renders.Notes).Concat(result.Trainer?.Notes ?? Enumerable.Empty<string>())) stdout.WriteLine("note: " + note);
+            foreach (var warning in result.Warnings) stderr.WriteLine("warning: " + warning);
             var json = MetricsJson.Build(result);
             var mean = json["mean"];
+            stdout.WriteLine("protocol: " + (result.Protocol != null ? result.Protocol.Describe() + " (" + EvalProtocolFile.FileName + ")" : "none (the dataset has no " + EvalProtocolFile.FileName + "): defaults used"));
             stdout.WriteLine("evaluated " + result.Views.Count + " " + result.Split + " views (" + RenderLayouts.Name(result.Renders.Layout) + " layout, background " + result.Background.Name + "):");
             var identical = (int)mean["identical_views"];
             stdout.WriteLine("  PSNR " + Show(mean["psnr"], "0.00") + " dB" + (identical > 0 ? " (" + identical + " identical views, PSNR ∞, left out)" : "") + ", SSIM " + Show(mean["ssim"], "0.0000") +
                              (mean["psnr_masked"] != null ? ", PSNR in mask " + Show(mean["psnr_masked"], "0.00") + " dB" : ""));
+            stdout.WriteLine("  (SSIM in double precision; 3DGS metrics.py runs it in float32 and prints values up to ~2e-4 different)");
+            if (result.Trainer != null && (result.Trainer.Psnr.HasValue || result.Trainer.Lpips.HasValue))
+            {
+                var t = json["trainer_metrics"];
+                stdout.WriteLine("  " + result.Trainer.Source + " (" + result.Trainer.Method + "): PSNR " + Show(t["psnr"], "0.00") + " dB, SSIM " + Show(t["ssim"], "0.0000") + ", LPIPS " + Show(t["lpips"], "0.0000") +
+                                 " (" + result.Trainer.LpipsVariant + ")" + (result.TrainerFlaggedViews.Count > 0 ? "; " + result.TrainerFlaggedViews.Count + " views' PSNR differ beyond the tolerance" : ""));
+            }
             if (mean["depth"] != null) stdout.WriteLine("  depth abs-rel " + Show(mean["depth"]["abs_rel"], "0.0000") + ", RMSE " + Show(mean["depth"]["rmse"], "0.0000") + ", δ<1.25 " + Show(mean["depth"]["delta_1_25"], "0.0000"));
             if (mean["normals"] != null) stdout.WriteLine("  normals " + Show(mean["normals"]["mean_degrees"], "0.00") + "° mean angular error");
             if (result.Geometry != null)
@@ -117,7 +130,7 @@ namespace NerfDatasetCreator
                     stdout.WriteLine("    step " + step["step"] + ": Chamfer " + Show(step["chamfer"], "0.00000") + ", F-score " + Show(step["fscore"], "0.0000"));
             }
             else if (result.Geometry?.Step != null) stdout.WriteLine("  geometry at time step " + result.Geometry.Step.Value);
-            stdout.WriteLine("  LPIPS is not computed (it needs network weights): 3DGS python metrics.py -m <model>, nerfstudio ns-eval.");
+            if (result.Trainer?.Lpips == null) stdout.WriteLine("  LPIPS is not computed (it needs network weights): 3DGS python metrics.py -m <model>, nerfstudio ns-eval; evaluate shows their figures (--trainer-metrics).");
             stdout.WriteLine("wrote " + Path.Combine(result.OutFolder, MetricsJson.FileName) + ", " + Path.Combine(result.OutFolder, ReportHtml.FileName) + " and " + result.Views.Count + " error maps in " +
                              Path.Combine(result.OutFolder, EvaluationOutput.ErrorFolder));
             return ToolExitCodes.Success;

@@ -110,7 +110,7 @@ namespace NerfDatasetCreator
             stdout.WriteLine("planned " + plan.ViewsOf(DatasetSplit.Train).Count + " train, " + plan.ViewsOf(DatasetSplit.Val).Count + " val, " +
                              plan.ViewsOf(DatasetSplit.Test).Count + " test views at distance " + ValidationProblem.Format(plan.Distance) + " into " + session.FinalFolder);
             if (plan.Time != null) stdout.WriteLine(TimeSummary.Describe(plan.Time));
-            stdout.WriteLine("wrote transforms_train.json, transforms_val.json, transforms_test.json, " + DatasetLayout.ConfigFileName + ", " +
+            stdout.WriteLine("wrote transforms_train.json, transforms_val.json, transforms_test.json, " + DatasetLayout.ConfigFileName + ", " + EvalProtocolFile.FileName + ", " +
                              DatasetLayout.RigPreviewFileName + ", " + RigPreviewPicture.FileName + " (no images: render them with the Unity plugin)");
             return ToolExitCodes.Success;
         }

@@ -99,6 +99,7 @@ namespace NerfDatasetCreator.Tests
         internal static readonly Dictionary<string, string> Expected = new Dictionary<string, string>
         {
             ["blur/dataset_config.json"] = "22825d1e22a3839d45f35c76b29fead9f0442f0878926eb9e057e9b3097d7101",
+            ["blur/eval_protocol.json"] = "b80d1317a8b50523752957320142cc11e8bab471cbabe2b8abfaa9d51b9382e8",
             ["blur/labels.json"] = "c9805994b087748ec1b1d089a35c0893b9ec4daabde211f8caf0f5d0b48e8cbc",
             ["blur/labels_preview_test.png"] = "3077b1f7ffb8f4132c34981ef59f9ec28eb71572efacabe995844c1c90f5d6a8",
             ["blur/labels_preview_train.png"] = "51399d7cd5efcf67626214c68d273556f62f295ac86805494196de97324da18b",
@@ -138,6 +139,7 @@ namespace NerfDatasetCreator.Tests
             ["blur/val/r_0_semantic_0000.png"] = "391e76f47862981c49313539d056bdcdfe949bdc36821d78a4deec803747b6e7",
             ["blur/val/r_0_sharp_0000.png"] = "34db49c7ae5b17ba3b3451c8774b0798b7682944f92714545b2712f0bd9feba3",
             ["lens-blur-apart/dataset_config.json"] = "e3010b071f55a70d82593916ffadde1cb06e99586a80484440f4c8d8321d7207",
+            ["lens-blur-apart/eval_protocol.json"] = "b80d1317a8b50523752957320142cc11e8bab471cbabe2b8abfaa9d51b9382e8",
             ["lens-blur-apart/labels.json"] = "c9805994b087748ec1b1d089a35c0893b9ec4daabde211f8caf0f5d0b48e8cbc",
             ["lens-blur-apart/labels_preview_test.png"] = "3d368c14b4b8314a3f9631ea656ad0882f4e6cd0108f6513786580e598463a21",
             ["lens-blur-apart/labels_preview_train.png"] = "e7e7068f7b5a5ce5e2eac9a8b94307906d14f628b51683b6e1bd4224ce5edf29",
@@ -177,6 +179,7 @@ namespace NerfDatasetCreator.Tests
             ["lens-blur-apart/val/r_0_semantic_0000.png"] = "53c19a423f06ff14ec2757e9ae8be83f64b9e93fc9b57810e9cefa48662e5770",
             ["lens-blur-apart/val/r_0_sharp_0000.png"] = "fbb3041e2032b58966a89e4777abc04bcf163cac0e0f30706f134b80f8a4d8d8",
             ["lens-blur-shared/dataset_config.json"] = "74fb739494f11e358d35c0014b00b050f792ed6bf33fe58dd0b7d58e54e52869",
+            ["lens-blur-shared/eval_protocol.json"] = "b80d1317a8b50523752957320142cc11e8bab471cbabe2b8abfaa9d51b9382e8",
             ["lens-blur-shared/labels.json"] = "c9805994b087748ec1b1d089a35c0893b9ec4daabde211f8caf0f5d0b48e8cbc",
             ["lens-blur-shared/labels_preview_test.png"] = "3d368c14b4b8314a3f9631ea656ad0882f4e6cd0108f6513786580e598463a21",
             ["lens-blur-shared/labels_preview_train.png"] = "e7e7068f7b5a5ce5e2eac9a8b94307906d14f628b51683b6e1bd4224ce5edf29",
@@ -216,6 +219,7 @@ namespace NerfDatasetCreator.Tests
             ["lens-blur-shared/val/r_0_semantic_0000.png"] = "53c19a423f06ff14ec2757e9ae8be83f64b9e93fc9b57810e9cefa48662e5770",
             ["lens-blur-shared/val/r_0_sharp_0000.png"] = "fbb3041e2032b58966a89e4777abc04bcf163cac0e0f30706f134b80f8a4d8d8",
             ["lens-sharp/dataset_config.json"] = "34abf93f3623f92e073bcf3af2c24b7877111f9b2035123bef90448aec9c0c4c",
+            ["lens-sharp/eval_protocol.json"] = "b80d1317a8b50523752957320142cc11e8bab471cbabe2b8abfaa9d51b9382e8",
             ["lens-sharp/labels.json"] = "c9805994b087748ec1b1d089a35c0893b9ec4daabde211f8caf0f5d0b48e8cbc",
             ["lens-sharp/labels_preview_test.png"] = "3d368c14b4b8314a3f9631ea656ad0882f4e6cd0108f6513786580e598463a21",
             ["lens-sharp/labels_preview_train.png"] = "e7e7068f7b5a5ce5e2eac9a8b94307906d14f628b51683b6e1bd4224ce5edf29",
