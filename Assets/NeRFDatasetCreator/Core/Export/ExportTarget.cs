@@ -16,11 +16,24 @@ namespace NerfDatasetCreator
 
         /// <summary>Gaussian Grouping's COLMAP layout with per-image object masks (<see cref="GaussianGroupingExport"/>).</summary>
         GaussianGrouping,
+
+        /// <summary>LLFF's poses_bounds.npy and images/ (<see cref="LlffExport"/>).</summary>
+        Llff,
+
+        /// <summary>N3DV as 4DGaussians reads it (<see cref="DynerfExport"/>).</summary>
+        Dynerf,
+
+        /// <summary>NeuS / IDR: cameras_sphere.npz, image/, mask/ (<see cref="NeusExport"/>).</summary>
+        Neus,
     }
 
     public static class ExportTargets
     {
-        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping" };
+        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping",
+            "llff",
+            "dynerf",
+            "neus",
+        };
 
         /// <summary>
         /// The config's <c>loaders</c> names (<see cref="TargetLoaderNames"/>) that name an export too, so one
