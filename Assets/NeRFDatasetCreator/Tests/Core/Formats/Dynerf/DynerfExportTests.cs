@@ -101,6 +101,8 @@ namespace NerfDatasetCreator.Tests
                 Assume.That(outDir.IndexOf('.') < 0, "the reader cuts the path at its first '.'");
                 Assert.That(result.MainFile, Is.EqualTo(Path.Combine(outDir, "poses_bounds.npy")));
                 Assert.That(result.Warnings.Select(p => p.Field), Is.SupersetOf(new[] { "splits.test", "val", "time", "width × height" }));
+                // The time is carried (as 4DGaussians reads it), not dropped as the static formats' warning says.
+                Assert.That(result.Warnings.Where(p => p.Field == "time").Select(p => p.Reason), Has.All.Contains("k / 300").And.None.Contains("are dropped"));
 
                 var train = Load(outDir, "train", out var focal, out var nearFars);
                 var test = Load(outDir, "test", out _, out _);
@@ -198,6 +200,16 @@ namespace NerfDatasetCreator.Tests
             var problem = Refusal(MultiView(2, 1, 2, 16, 10));
             Assert.That(problem.Field, Is.EqualTo("width × height"));
             Assert.That(problem.Reason, Does.Contain("1352 × 1014"));
+        }
+
+        [Test]
+        public void WithoutATestCameraItIsRefusedNamingTheSplit()
+        {
+            var settings = MultiView(2, 0, 2);
+            settings.Loaders = TargetLoaders.InstantNgp; // a loader that needs no test split
+            var problem = Refusal(settings);
+            Assert.That(problem.Field, Is.EqualTo("splits.test"));
+            Assert.That(problem.Reason, Does.Contain("camera 0"));
         }
 
         [Test]

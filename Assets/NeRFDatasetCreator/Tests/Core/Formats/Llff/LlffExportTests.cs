@@ -77,6 +77,16 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void OnlyACentredSquarePixelCameraFitsHwf()
+        {
+            Assert.That(Llff.CameraRefusal(CameraIntrinsics.FromVerticalFov(60, 40, 30), "llff"), Is.Null);
+            // A lens shift of 0.1 moves cx to W/2 − 4: get_rays' (i − W/2)/focal would miss every pixel by 4.
+            var shifted = Llff.CameraRefusal(CameraIntrinsics.FromVerticalFov(60, 40, 30, 0.1, 0), "llff");
+            Assert.That(shifted.Field, Is.EqualTo("--to"));
+            Assert.That(shifted.Reason, Does.Contain("principal point (16, 15)"));
+        }
+
+        [Test]
         public void ImageNamesSortInPoseOrder()
         {
             Assert.That(Llff.ImageName(7, 9), Is.EqualTo("0007.png"));
