@@ -134,6 +134,18 @@ namespace NerfDatasetCreator.Tool.Tests
                         case "dynamic3dgs":
                             yield return Promise(Dynamic3DGaussians.TrainMetaFileName, File.Exists(Path.Combine(output, Dynamic3DGaussians.TrainMetaFileName)));
                             break;
+                        case "llff":
+                            yield return Promise(Llff.PosesBoundsFileName, File.Exists(Path.Combine(output, Llff.PosesBoundsFileName)));
+                            yield return Promise("images/0000.png", File.Exists(Path.Combine(output, Llff.ImagesFolder, "0000.png")));
+                            break;
+                        case "neus":
+                            yield return Promise(Neus.CamerasFileName, File.Exists(Path.Combine(output, Neus.CamerasFileName)));
+                            yield return Promise("mask/000.png", File.Exists(Path.Combine(output, Neus.MaskFolder, "000.png")));
+                            break;
+                        case "dynerf":
+                            yield return Promise(Llff.PosesBoundsFileName, File.Exists(Path.Combine(output, Llff.PosesBoundsFileName)));
+                            yield return Promise("cam00/images/0000.png", File.Exists(Path.Combine(output, "cam00", "images", "0000.png")));
+                            break;
                         default:
                             yield return Promise("a known export target (teach this test what it writes)", false);
                             break;
