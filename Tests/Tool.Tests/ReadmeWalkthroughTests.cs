@@ -141,6 +141,15 @@ namespace NerfDatasetCreator.Tool.Tests
                         case "dycheck":
                             yield return Promise("splits/train.json", File.Exists(Path.Combine(output, DyCheck.SplitsFolder, "train.json")));
                             yield return Promise("depth/1x", Directory.Exists(Path.Combine(output, DyCheck.DepthFolder, "1x")));
+                        case "llff":
+                            yield return Promise(Llff.PosesBoundsFileName, File.Exists(Path.Combine(output, Llff.PosesBoundsFileName)));
+                            yield return Promise("images/0000.png", File.Exists(Path.Combine(output, Llff.ImagesFolder, "0000.png")));
+                        case "neus":
+                            yield return Promise(Neus.CamerasFileName, File.Exists(Path.Combine(output, Neus.CamerasFileName)));
+                            yield return Promise("mask/000.png", File.Exists(Path.Combine(output, Neus.MaskFolder, "000.png")));
+                        case "dynerf":
+                            yield return Promise(Llff.PosesBoundsFileName, File.Exists(Path.Combine(output, Llff.PosesBoundsFileName)));
+                            yield return Promise("cam00/images/0000.png", File.Exists(Path.Combine(output, "cam00", "images", "0000.png")));
                             break;
                         default:
                             yield return Promise("a known export target (teach this test what it writes)", false);

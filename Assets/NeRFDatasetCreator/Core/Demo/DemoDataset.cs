@@ -49,15 +49,27 @@ namespace NerfDatasetCreator
         /// <summary>The lens preset's field of view: wider than the default 39.6°, so that the distortion shows at the edges.</summary>
         const double LensVerticalFov = 55;
 
-        /// <summary>The analytic dataset's options for a preset: <paramref name="views"/> train views, <paramref name="size"/> pixels square.</summary>
+        /// <summary>
+        /// The images' width and height for <c>--size</c>: square, but 4:3 for the dynamic preset (the width rounded down
+        /// to a multiple of 4), the aspect 4DGaussians' N3DV reader resizes to (1352 × 1014), so that <c>--to dynerf</c> works.
+        /// </summary>
+        public static (int Width, int Height) Size(DemoPreset preset, int size)
+        {
+            if (preset != DemoPreset.Dynamic) return (size, size);
+            var width = size - size % 4;
+            return (width, width * 3 / 4);
+        }
+
+        /// <summary>The analytic dataset's options for a preset: <paramref name="views"/> train views, images of <see cref="Size"/>.</summary>
         public static AnalyticDataset.Options OptionsFor(DemoPreset preset, int views, int size)
         {
             // A dynamic capture films every time step from each camera: the views are spread over the steps.
             var perStep = preset == DemoPreset.Dynamic ? Math.Max(1, (views + TimeSteps - 1) / TimeSteps) : views;
+            var (width, height) = Size(preset, size);
             var options = new AnalyticDataset.Options
             {
                 Look = AnalyticLook.Demo,
-                Width = size, Height = size, Supersampling = 2,
+                Width = width, Height = height, Supersampling = 2,
                 Train = perStep, Val = Math.Max(1, perStep / 10), Test = Math.Max(1, perStep / 5),
                 PointCloud = 5000,
                 MeshesAt = t => AnalyticSceneMeshes.At(t, AnalyticLook.Demo),
@@ -158,7 +170,7 @@ namespace NerfDatasetCreator
             var run = AnalyticDataset.Prepare(null, SettingsName, options);
             if (!run.IsValid) throw new InvalidParameterException(run.Problems);
             var started = DateTime.UtcNow;
-            progress?.Invoke("rendering " + run.Plan.Views.Count + " views of " + size + " × " + size + " px (" + DemoPresets.Name(preset) + ")");
+            progress?.Invoke("rendering " + run.Plan.Views.Count + " views of " + options.Width + " × " + options.Height + " px (" + DemoPresets.Name(preset) + ")");
             AnalyticDataset.Render(run, options);
             var rendered = (DateTime.UtcNow - started).TotalSeconds;
             progress?.Invoke("checking them (nerf-dataset check)");

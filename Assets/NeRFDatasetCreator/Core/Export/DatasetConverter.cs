@@ -29,7 +29,7 @@ namespace NerfDatasetCreator
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
-            var time = target == ExportTarget.Dynamic3dgs || target == ExportTarget.Nerfies || target == ExportTarget.Dycheck ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
+            var time = target == ExportTarget.Dynamic3dgs || target == ExportTarget.Nerfies || target == ExportTarget.Dycheck || target == ExportTarget.Dynerf ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
             if (time != null) warnings.Add(time);
             if (objectNameOrId != null) return ExportObject(scene, target, objectNameOrId, outDir, warnings, images);
             return Export(scene, target, outDir, null, null, warnings, depths, colmap, images);
@@ -107,6 +107,9 @@ namespace NerfDatasetCreator
                     case ExportTarget.GaussianGrouping: result = GaussianGroupingExport.Write(scene, labelled, output, points, warnings, colmap, staged); break;
                     case ExportTarget.Nerfies: result = NerfiesExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.Dycheck: result = DyCheckExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.Llff: result = LlffExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.Dynerf: result = DynerfExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.Neus: result = NeusExport.Write(scene, output, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 EvalProtocolCarry.Copy(scene.RootDirectory, output, staged, warnings);
@@ -132,6 +135,9 @@ namespace NerfDatasetCreator
                 case ExportTarget.GaussianGrouping: return Path.GetFullPath(Path.Combine(root, GaussianGrouping.FolderName));
                 case ExportTarget.Nerfies: return Path.GetFullPath(Path.Combine(root, Nerfies.FolderName));
                 case ExportTarget.Dycheck: return Path.GetFullPath(Path.Combine(root, DyCheck.FolderName));
+                case ExportTarget.Llff: return Path.GetFullPath(Path.Combine(root, Llff.FolderName));
+                case ExportTarget.Dynerf: return Path.GetFullPath(Path.Combine(root, Dynerf.FolderName));
+                case ExportTarget.Neus: return Path.GetFullPath(Path.Combine(root, Neus.FolderName));
                 default: return Path.GetFullPath(root);
             }
         }

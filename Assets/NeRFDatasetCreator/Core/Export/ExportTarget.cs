@@ -22,6 +22,14 @@ namespace NerfDatasetCreator
 
         /// <summary>DyCheck's iPhone layout from a dynamic capture, with exact depth (<see cref="DyCheckExport"/>).</summary>
         Dycheck,
+        /// <summary>LLFF's poses_bounds.npy and images/ (<see cref="LlffExport"/>).</summary>
+        Llff,
+
+        /// <summary>N3DV as 4DGaussians reads it (<see cref="DynerfExport"/>).</summary>
+        Dynerf,
+
+        /// <summary>NeuS / IDR: cameras_sphere.npz, image/, mask/ (<see cref="NeusExport"/>).</summary>
+        Neus,
     }
 
     public static class ExportTargets
@@ -29,6 +37,9 @@ namespace NerfDatasetCreator
         public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping",
             "nerfies",
             "dycheck",
+            "llff",
+            "dynerf",
+            "neus",
         };
 
         /// <summary>

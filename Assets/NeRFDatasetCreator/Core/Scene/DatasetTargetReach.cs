@@ -40,6 +40,16 @@ namespace NerfDatasetCreator
         /// <summary>The reach recorded in a parsed <c>dataset_config.json</c>, or null.</summary>
         public static double? FromConfig(JObject config, ICollection<ValidationProblem> warnings = null)
         {
+            var sphere = Sphere(config, warnings);
+            return sphere.HasValue ? sphere.Value.Centre.Length + sphere.Value.Radius : (double?)null;
+        }
+
+        /// <summary>
+        /// The target's bounding sphere in the output frame as the parsed <c>dataset_config.json</c> records it: centre
+        /// s·(P·c_Unity − centre) (<see cref="SceneNormalisation.ApplyToUnityPoint"/>), radius s·b; null when not recorded.
+        /// </summary>
+        public static (Vector3d Centre, double Radius)? Sphere(JObject config, ICollection<ValidationProblem> warnings = null)
+        {
             var target = config["target"] as JObject;
             var radius = target?["boundingRadius"];
             if (target == null || radius == null || radius.Type == JTokenType.Null) return null;
@@ -64,7 +74,7 @@ namespace NerfDatasetCreator
                 return null;
             }
             var unityCentre = new Vector3d((double)centre[0], (double)centre[1], (double)centre[2]);
-            return normalisation.ApplyToUnityPoint(unityCentre).Length + (double)radius * normalisation.Scale;
+            return (normalisation.ApplyToUnityPoint(unityCentre), (double)radius * normalisation.Scale);
         }
 
         static bool IsNumber(JToken t) => t.Type == JTokenType.Float || t.Type == JTokenType.Integer;

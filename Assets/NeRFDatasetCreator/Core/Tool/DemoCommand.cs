@@ -129,12 +129,17 @@ namespace NerfDatasetCreator
             return "RGBA, depth, normals, masks" + extra + ", points3d.ply, the geometry pack";
         }
 
-        /// <summary>The exports that fit the preset's dataset: the static ones, Gaussian Grouping with labels, the dynamic layouts for the dynamic one.</summary>
+        /// <summary>
+        /// The exports that fit the preset's dataset: the static ones (LLFF and NeuS for the plain static preset: they
+        /// hold no lens), Gaussian Grouping with labels, the dynamic layouts (Dynamic 3D Gaussians, Nerfies, DyCheck,
+        /// N3DV) for the dynamic one.
+        /// </summary>
         public static IReadOnlyList<ExportTarget> Targets(DemoPreset preset)
         {
-            if (preset == DemoPreset.Dynamic) return new[] { ExportTarget.Dynamic3dgs, ExportTarget.Nerfies, ExportTarget.Dycheck };
+            if (preset == DemoPreset.Dynamic) return new[] { ExportTarget.Dynamic3dgs, ExportTarget.Nerfies, ExportTarget.Dycheck, ExportTarget.Dynerf };
             var targets = new List<ExportTarget> { ExportTarget.Nerfstudio, ExportTarget.Colmap, ExportTarget.Ngp };
             if (preset == DemoPreset.Labels) targets.Add(ExportTarget.GaussianGrouping);
+            if (preset == DemoPreset.Static) targets.AddRange(new[] { ExportTarget.Llff, ExportTarget.Neus });
             return targets;
         }
 
@@ -176,6 +181,9 @@ namespace NerfDatasetCreator
                 case ExportTarget.GaussianGrouping: return "python train.py -s " + Quote(output) + " -r 1 --config_file " + Quote(output + "/" + GaussianGrouping.ConfigFileName) + "   (Gaussian Grouping)";
                 case ExportTarget.Nerfies: return "python train.py -s " + Quote(output) + " --configs arguments/hypernerf/default.py   (4DGaussians)";
                 case ExportTarget.Dycheck: return "python tools/launch.py --gin_configs configs/iphone/tnerf/randbkgd_depth_dist.gin …   (DyCheck: copy " + Quote(output) + " to its datasets/iphone/ first, as convert says)";
+                case ExportTarget.Llff: return "python run_nerf.py --dataset_type llff --datadir " + Quote(output) + " --factor 1 --no_ndc --spherify   (nerf-pytorch)";
+                case ExportTarget.Neus: return "python exp_runner.py --mode train --conf ./confs/wmask.conf --case <case>   (NeuS: copy " + Quote(output) + " to public_data/<case>/ first)";
+                case ExportTarget.Dynerf: return "python train.py -s " + Quote(output) + " --configs arguments/dynerf/default.py   (4DGaussians)";
                 default: return "python train.py   (Dynamic 3D Gaussians: copy " + Quote(output) + " to its data/ folder first, as convert says)";
             }
         }

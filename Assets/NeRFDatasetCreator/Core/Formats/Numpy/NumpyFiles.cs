@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using System.IO.Compression;
@@ -79,6 +80,47 @@ namespace NerfDatasetCreator
                 var entry = zip.CreateEntry(key + ".npy", CompressionLevel.NoCompression);
                 using (var stream = entry.Open()) stream.Write(npy, 0, npy.Length);
             }
+            return buffer.ToArray();
+        }
+
+        /// <summary>
+        /// A 2-D little-endian float64 array (<c>'&lt;f8'</c>) of <paramref name="rows"/> × <paramref name="columns"/>, row-major:
+        /// what <c>np.save</c> writes for Python floats (LLFF's <c>poses_bounds.npy</c>, IDR's camera matrices).
+        /// </summary>
+        public static byte[] Float64Matrix(double[] values, int rows, int columns)
+        {
+            if (values == null) throw new ArgumentNullException(nameof(values));
+            if (rows < 0 || columns < 0 || (long)rows * columns != values.Length)
+                throw new ArgumentException("values holds " + values.Length + " numbers, not " + rows + " × " + columns + ".", nameof(values));
+            var dict = "{'descr': '<f8', 'fortran_order': False, 'shape': (" +
+                       rows.ToString(CultureInfo.InvariantCulture) + ", " + columns.ToString(CultureInfo.InvariantCulture) + "), }";
+            var unpadded = Magic.Length + 2 + dict.Length + 1;
+            var padding = (Alignment - unpadded % Alignment) % Alignment;
+            var header = Encoding.ASCII.GetBytes(dict + new string(' ', padding) + "\n");
+            var bytes = new byte[Magic.Length + 2 + header.Length + 8L * values.Length];
+            Buffer.BlockCopy(Magic, 0, bytes, 0, Magic.Length);
+            bytes[8] = (byte)(header.Length & 0xFF);
+            bytes[9] = (byte)(header.Length >> 8);
+            Buffer.BlockCopy(header, 0, bytes, 10, header.Length);
+            var data = 10 + header.Length;
+            for (var i = 0; i < values.Length; i++)
+            {
+                var bits = BitConverter.DoubleToInt64Bits(values[i]);
+                for (var b = 0; b < 8; b++) bytes[data + 8 * i + b] = (byte)(bits >> (8 * b));
+            }
+            return bytes;
+        }
+
+        /// <summary>The bytes of an <c>.npz</c> holding several arrays, each under its key (<c>np.load(path)[key]</c>), in the order given.</summary>
+        public static byte[] Npz(IReadOnlyList<KeyValuePair<string, byte[]>> arrays)
+        {
+            var buffer = new MemoryStream();
+            using (var zip = new ZipArchive(buffer, ZipArchiveMode.Create, leaveOpen: true))
+                foreach (var pair in arrays)
+                {
+                    var entry = zip.CreateEntry(pair.Key + ".npy", CompressionLevel.NoCompression);
+                    using (var stream = entry.Open()) stream.Write(pair.Value, 0, pair.Value.Length);
+                }
             return buffer.ToArray();
         }
     }
