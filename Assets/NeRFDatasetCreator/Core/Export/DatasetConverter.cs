@@ -29,7 +29,7 @@ namespace NerfDatasetCreator
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
-            var time = target == ExportTarget.Dynamic3dgs ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
+            var time = target == ExportTarget.Dynamic3dgs || target == ExportTarget.Replica || target == ExportTarget.Tum ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
             if (time != null) warnings.Add(time);
             if (objectNameOrId != null) return ExportObject(scene, target, objectNameOrId, outDir, warnings, images);
             return Export(scene, target, outDir, null, null, warnings, depths, colmap, images);
@@ -105,6 +105,8 @@ namespace NerfDatasetCreator
                     case ExportTarget.Colmap: result = ToColmap(scene, output, points, warnings, depths, colmap ?? ColmapOptions.Default, staged); break;
                     case ExportTarget.Dynamic3dgs: result = Dynamic3DGaussiansExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.GaussianGrouping: result = GaussianGroupingExport.Write(scene, labelled, output, points, warnings, colmap, staged); break;
+                    case ExportTarget.Replica: result = ReplicaExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.Tum: result = TumRgbdExport.Write(scene, output, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 staged.Commit();
@@ -127,6 +129,8 @@ namespace NerfDatasetCreator
                 case ExportTarget.Colmap: return Path.GetFullPath(Path.Combine(root, ColmapFolderName));
                 case ExportTarget.Dynamic3dgs: return Path.GetFullPath(Path.Combine(root, Dynamic3DGaussians.FolderName));
                 case ExportTarget.GaussianGrouping: return Path.GetFullPath(Path.Combine(root, GaussianGrouping.FolderName));
+                case ExportTarget.Replica: return Path.GetFullPath(Path.Combine(root, Replica.FolderName));
+                case ExportTarget.Tum: return Path.GetFullPath(Path.Combine(root, TumRgbd.FolderName));
                 default: return Path.GetFullPath(root);
             }
         }

@@ -16,11 +16,19 @@ namespace NerfDatasetCreator
 
         /// <summary>Gaussian Grouping's COLMAP layout with per-image object masks (<see cref="GaussianGroupingExport"/>).</summary>
         GaussianGrouping,
+
+        /// <summary>A Replica RGB-D sequence for SplaTAM, MonoGS and Gaussian-SLAM (<see cref="ReplicaExport"/>).</summary>
+        Replica,
+
+        /// <summary>A TUM RGB-D sequence for SplaTAM, MonoGS and Gaussian-SLAM (<see cref="TumRgbdExport"/>).</summary>
+        Tum,
     }
 
     public static class ExportTargets
     {
-        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping" };
+        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping",
+            "replica",
+            "tum" };
 
         /// <summary>
         /// The config's <c>loaders</c> names (<see cref="TargetLoaderNames"/>) that name an export too, so one

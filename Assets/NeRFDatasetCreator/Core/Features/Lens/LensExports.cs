@@ -28,6 +28,11 @@ namespace NerfDatasetCreator
                     return new ValidationProblem("--to", "gaussian-grouping",
                         "cannot hold lens distortion: Gaussian Grouping's COLMAP reader accepts only PINHOLE and SIMPLE_PINHOLE cameras (scene/dataset_readers.py:83-93), and this dataset's images were taken through " + lens.Describe() + ".",
                         "Undistort the images to a pinhole first, or convert to nerfstudio or colmap, which carry the lens.");
+                case ExportTarget.Replica:
+                case ExportTarget.Tum:
+                    return new ValidationProblem("--to", ExportTargets.Name(target),
+                        "cannot hold lens distortion: the written SLAM configs describe a pinhole camera (MonoGS's and Gaussian-SLAM's distortion terms undistort a real lens's images, not a synthetic one's), and this dataset's images were taken through " + lens.Describe() + ".",
+                        "Capture without a lens (the Camera step's lens \"none\") for a SLAM sequence.");
                 case ExportTarget.Colmap when depths:
                     return new ValidationProblem("--depths", lens.ColmapModelName,
                         "writes depth maps for 3DGS, whose COLMAP reader accepts only PINHOLE and SIMPLE_PINHOLE cameras, and this dataset's lens is " + lens.Describe() + ".",
