@@ -21,8 +21,6 @@ namespace NerfDatasetCreator
                 if (stamps[i] == stamps[i - 1])
                     throw SlamSequence.Refuse("time_seconds", SlamSequence.Number(frames[i - 1].Seconds) + " and " + SlamSequence.Number(frames[i].Seconds) + " s",
                         "are the same TUM timestamp (" + stamps[i] + ": microseconds, also the files' names).", "Capture fewer time steps over the range.");
-            if (frames.Min(f => f.Seconds) < 0)
-                throw SlamSequence.Refuse("time_seconds", SlamSequence.Number(frames.Min(f => f.Seconds)) + " s", "is negative; TUM timestamps are seconds from a start.", "Capture from time 0 or later.");
 
             outDir = Path.GetFullPath(outDir);
             var lists = new[] { TumRgbd.RgbList, TumRgbd.DepthList, TumRgbd.GroundTruth }.Select(n => Path.Combine(outDir, n)).ToList();
