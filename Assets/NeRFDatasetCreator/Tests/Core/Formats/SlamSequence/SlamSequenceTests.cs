@@ -33,6 +33,20 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void ALensIsRefusedForBothSlamTargetsAndAPinholeIsNot()
+        {
+            var lens = new LensSettings { Model = "opencv", K1 = -0.12, K2 = 0.02 }.ToDistortion();
+            foreach (var target in new[] { ExportTarget.Replica, ExportTarget.Tum })
+            {
+                var refusal = LensExports.Refusal(lens, target);
+                Assert.That(refusal.Field, Is.EqualTo("--to"));
+                Assert.That(refusal.Value, Is.EqualTo(ExportTargets.Name(target)));
+                Assert.That(refusal.Reason, Does.StartWith("cannot hold lens distortion"));
+                Assert.That(LensExports.Refusal(null, target), Is.Null);
+            }
+        }
+
+        [Test]
         public void JpegAtTheStatedQualityRoundTripsAboveFortyDecibelsAndIsDeterministic()
         {
             // A smooth colour ramp with one hard edge, 33 × 17 (not a multiple of the 8-pixel block).
