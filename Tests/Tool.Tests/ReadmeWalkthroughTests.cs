@@ -134,6 +134,14 @@ namespace NerfDatasetCreator.Tool.Tests
                         case "dynamic3dgs":
                             yield return Promise(Dynamic3DGaussians.TrainMetaFileName, File.Exists(Path.Combine(output, Dynamic3DGaussians.TrainMetaFileName)));
                             break;
+                        case "replica":
+                            yield return Promise(Replica.TrajectoryFileName, File.Exists(Path.Combine(output, Replica.TrajectoryFileName)));
+                            yield return Promise("results/" + Replica.ColourName(0), File.Exists(Path.Combine(output, Replica.ResultsFolder, Replica.ColourName(0))));
+                            break;
+                        case "tum":
+                            yield return Promise(TumRgbd.GroundTruth, File.Exists(Path.Combine(output, TumRgbd.GroundTruth)));
+                            yield return Promise(TumRgbd.RgbList, File.Exists(Path.Combine(output, TumRgbd.RgbList)));
+                            break;
                         default:
                             yield return Promise("a known export target (teach this test what it writes)", false);
                             break;

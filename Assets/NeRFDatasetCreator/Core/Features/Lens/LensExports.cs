@@ -31,7 +31,7 @@ namespace NerfDatasetCreator
                 case ExportTarget.Replica:
                 case ExportTarget.Tum:
                     return new ValidationProblem("--to", ExportTargets.Name(target),
-                        "cannot hold lens distortion: the written SLAM configs describe a pinhole camera (MonoGS's and Gaussian-SLAM's distortion terms undistort a real lens's images, not a synthetic one's), and this dataset's images were taken through " + lens.Describe() + ".",
+                        "cannot hold lens distortion: SplaTAM and Gaussian-SLAM undistort the colour image only, not the depth (SplaTAM basedataset.py:308–310, Gaussian-SLAM datasets.py:155–157), so colour and depth would no longer align; the configs written describe a pinhole, and this dataset's images were taken through " + lens.Describe() + ".",
                         "Capture without a lens (the Camera step's lens \"none\") for a SLAM sequence.");
                 case ExportTarget.Colmap when depths:
                     return new ValidationProblem("--depths", lens.ColmapModelName,
