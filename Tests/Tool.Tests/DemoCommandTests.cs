@@ -66,7 +66,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(File.Exists(Path.Combine(train, "r_0_clean.png")), Is.EqualTo(preset == DemoPreset.Exposure));
             var transforms = JObject.Parse(File.ReadAllText(Path.Combine(folder, "transforms_train.json")));
             Assert.That(transforms["k1"] != null, Is.EqualTo(preset == DemoPreset.Lens), "the lens preset records its distortion");
-            Assert.That(transforms["frames"][0]["time"] != null, Is.EqualTo(preset == DemoPreset.Dynamic), "the dynamic preset records time");
+            Assert.That(transforms["frames"][0]["time"] != null, Is.EqualTo(preset == DemoPreset.Dynamic || preset == DemoPreset.Monocular), "the dynamic and monocular presets record time");
 
             foreach (var target in DemoCommand.Targets(preset))
             {

@@ -150,6 +150,12 @@ namespace NerfDatasetCreator.Tool.Tests
                         case "dynerf":
                             yield return Promise(Llff.PosesBoundsFileName, File.Exists(Path.Combine(output, Llff.PosesBoundsFileName)));
                             yield return Promise("cam00/images/0000.png", File.Exists(Path.Combine(output, "cam00", "images", "0000.png")));
+                        case "replica":
+                            yield return Promise(Replica.TrajectoryFileName, File.Exists(Path.Combine(output, Replica.TrajectoryFileName)));
+                            yield return Promise("results/" + Replica.ColourName(0), File.Exists(Path.Combine(output, Replica.ResultsFolder, Replica.ColourName(0))));
+                        case "tum":
+                            yield return Promise(TumRgbd.GroundTruth, File.Exists(Path.Combine(output, TumRgbd.GroundTruth)));
+                            yield return Promise(TumRgbd.RgbList, File.Exists(Path.Combine(output, TumRgbd.RgbList)));
                             break;
                         default:
                             yield return Promise("a known export target (teach this test what it writes)", false);

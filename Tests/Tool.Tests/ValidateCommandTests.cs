@@ -75,10 +75,11 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(lines[1], Does.StartWith("  plan --config <settings.json> --out <dir>"));
             Assert.That(lines[3], Does.StartWith("  merge --out <dir> [--files copy|move] <shard-dir>..."));
             Assert.That(lines[4], Does.StartWith("  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping|llff|dynerf|neus [--out <dir>]"));
+            Assert.That(lines[4], Does.StartWith("  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping|replica|tum [--out <dir>]"));
             Assert.That(lines[5], Does.StartWith("  clean <dir> [--dry-run]"));
             Assert.That(lines[6], Does.StartWith("  check <dir> [--split S] [--json FILE] [--max-views N]"));
             Assert.That(lines[7], Does.StartWith("  evaluate <dir> --renders <dir> [--split test]"));
-            Assert.That(lines[8], Does.StartWith("  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur]"));
+            Assert.That(lines[8], Does.StartWith("  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular]"));
             Assert.That(lines[9], Does.StartWith("exit codes:"));
             Assert.That(lines[10], Is.EqualTo("nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version."));
             Assert.That(lines, Has.Length.EqualTo(11));

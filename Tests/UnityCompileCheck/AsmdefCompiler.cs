@@ -37,6 +37,15 @@ namespace NerfDatasetCreator.UnityCompileCheck
                 .OrderBy(f => f, StringComparer.Ordinal)
                 .Select(f => (MetadataReference)MetadataReference.CreateFromFile(f)).ToList();
 
+        /// <summary>A plugin DLL named <paramref name="dll"/> under the Assets folder that holds <paramref name="folder"/>, or null.</summary>
+        static string ShippedPlugin(string folder, string dll)
+        {
+            var dir = new DirectoryInfo(folder);
+            while (dir != null && dir.Name != "Assets") dir = dir.Parent;
+            if (dir == null) return null;
+            return Directory.GetFiles(dir.FullName, dll, SearchOption.AllDirectories).Where(f => !f.Contains("~" + Path.DirectorySeparatorChar)).OrderBy(f => f, StringComparer.Ordinal).FirstOrDefault();
+        }
+
         /// <summary>Compiles every definition in dependency order; a definition whose references failed is still compiled against what exists.</summary>
         public static Dictionary<string, AssemblyResult> CompileAll(IReadOnlyList<AssemblyDefinition> definitions, UnityApi api,
             IReadOnlyList<PackageStub> stubs = null)
@@ -92,8 +101,10 @@ namespace NerfDatasetCreator.UnityCompileCheck
                     problems.Add("precompiledReferences are listed but overrideReferences is false, so Unity ignores the list");
                 foreach (var dll in def.PrecompiledReferences)
                 {
-                    var file = api.Find(dll);
-                    if (file == null) problems.Add("precompiled reference '" + dll + "' is not in " + api.Label);
+                    // Unity resolves precompiledReferences against every plugin DLL of the project, the package's own
+                    // included (2022.3 EditorBuildRules.cs:419–435), so a DLL shipped in the package is found there too.
+                    var file = api.Find(dll) ?? ShippedPlugin(def.Folder, dll);
+                    if (file == null) problems.Add("precompiled reference '" + dll + "' is not in " + api.Label + " nor shipped under Assets");
                     else references.Add(MetadataReference.CreateFromFile(file));
                 }
                 var unmet = def.DefineConstraints.Where(c => !defines.Contains(c.TrimStart('!')) ^ c.StartsWith("!", StringComparison.Ordinal)).ToList();

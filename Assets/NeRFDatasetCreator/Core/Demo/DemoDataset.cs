@@ -46,6 +46,9 @@ namespace NerfDatasetCreator
         /// <summary>The dynamic preset's time steps (every camera at each).</summary>
         public const int TimeSteps = 5;
 
+        /// <summary>The monocular preset's steps per second: under the TUM readers' 32, so that they keep every frame.</summary>
+        public const double MonocularFrameRate = 30;
+
         /// <summary>The lens preset's field of view: wider than the default 39.6°, so that the distortion shows at the edges.</summary>
         const double LensVerticalFov = 55;
 
@@ -102,6 +105,13 @@ namespace NerfDatasetCreator
                         s.Exposure.WriteClean = true;
                         s.Seed = 11;
                     };
+                    break;
+                case DemoPreset.Monocular:
+                    // One train view per step, MonocularFrameRate steps a second: the SLAM readers keep every frame
+                    // (TUM's keep only frames more than 1/32 s apart, TumRgbd.ReaderFrameRate).
+                    options.TimeSteps = perStep;
+                    options.Monocular = true;
+                    options.Configure = s => s.Time.EndSeconds = (perStep - 1) / MonocularFrameRate;
                     break;
                 case DemoPreset.Blur:
                     options.MotionBlur = new MotionBlurSettings { Enabled = true, Camera = ShutterCameraMotion.Shake, ShakeDistance = 0.1, ShakeDegrees = 1, SubFrames = BlurSubFrames };

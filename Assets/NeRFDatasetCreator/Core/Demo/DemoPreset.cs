@@ -5,7 +5,7 @@ namespace NerfDatasetCreator
 {
     /// <summary>
     /// What <c>nerf-dataset demo --preset</c> adds to the plain demo scene: nothing (a static object capture with RGBA,
-    /// depth, normals and masks), or one feature of the capture — moving content, labels, a lens, exposure, motion blur.
+    /// depth, normals and masks), or one feature of the capture — moving content, labels, a lens, exposure, motion blur, one camera moving in time.
     /// </summary>
     public enum DemoPreset
     {
@@ -15,12 +15,16 @@ namespace NerfDatasetCreator
         Lens,
         Exposure,
         Blur,
+
+        /// <summary>One camera moving around the target over time (monocular dynamic, depth on): a SLAM sequence's source.</summary>
+        Monocular,
     }
 
     /// <summary>The presets' command-line names, in <see cref="DemoPreset"/> order.</summary>
     public static class DemoPresets
     {
-        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur" };
+        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur",
+            "monocular" };
 
         public static string Name(DemoPreset preset) => Names[(int)preset];
 

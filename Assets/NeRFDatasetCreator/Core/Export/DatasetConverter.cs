@@ -29,7 +29,7 @@ namespace NerfDatasetCreator
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
-            var time = target == ExportTarget.Dynamic3dgs || target == ExportTarget.Nerfies || target == ExportTarget.Dycheck || target == ExportTarget.Dynerf ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
+            var time = target == ExportTarget.Dynamic3dgs || target == ExportTarget.Nerfies || target == ExportTarget.Dycheck || target == ExportTarget.Dynerf || target == ExportTarget.Replica || target == ExportTarget.Tum ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
             if (time != null) warnings.Add(time);
             if (objectNameOrId != null) return ExportObject(scene, target, objectNameOrId, outDir, warnings, images);
             return Export(scene, target, outDir, null, null, warnings, depths, colmap, images);
@@ -110,6 +110,8 @@ namespace NerfDatasetCreator
                     case ExportTarget.Llff: result = LlffExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.Dynerf: result = DynerfExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.Neus: result = NeusExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.Replica: result = ReplicaExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.Tum: result = TumRgbdExport.Write(scene, output, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 EvalProtocolCarry.Copy(scene.RootDirectory, output, staged, warnings);
@@ -138,6 +140,8 @@ namespace NerfDatasetCreator
                 case ExportTarget.Llff: return Path.GetFullPath(Path.Combine(root, Llff.FolderName));
                 case ExportTarget.Dynerf: return Path.GetFullPath(Path.Combine(root, Dynerf.FolderName));
                 case ExportTarget.Neus: return Path.GetFullPath(Path.Combine(root, Neus.FolderName));
+                case ExportTarget.Replica: return Path.GetFullPath(Path.Combine(root, Replica.FolderName));
+                case ExportTarget.Tum: return Path.GetFullPath(Path.Combine(root, TumRgbd.FolderName));
                 default: return Path.GetFullPath(root);
             }
         }

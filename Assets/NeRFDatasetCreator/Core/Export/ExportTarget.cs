@@ -30,6 +30,11 @@ namespace NerfDatasetCreator
 
         /// <summary>NeuS / IDR: cameras_sphere.npz, image/, mask/ (<see cref="NeusExport"/>).</summary>
         Neus,
+        /// <summary>A Replica RGB-D sequence for SplaTAM, MonoGS and Gaussian-SLAM (<see cref="ReplicaExport"/>).</summary>
+        Replica,
+
+        /// <summary>A TUM RGB-D sequence for SplaTAM, MonoGS and Gaussian-SLAM (<see cref="TumRgbdExport"/>).</summary>
+        Tum,
     }
 
     public static class ExportTargets
@@ -41,6 +46,8 @@ namespace NerfDatasetCreator
             "dynerf",
             "neus",
         };
+            "replica",
+            "tum" };
 
         /// <summary>
         /// The config's <c>loaders</c> names (<see cref="TargetLoaderNames"/>) that name an export too, so one

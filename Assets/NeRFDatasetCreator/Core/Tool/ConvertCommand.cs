@@ -13,10 +13,10 @@ namespace NerfDatasetCreator
     public static class ConvertCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("convert",
-            "convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping|llff|dynerf|neus [--out <dir>] [--images copy|link|relative] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>]",
-            "write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object; llff, dynerf (N3DV, multi-view dynamic), neus: LLFF, 4DGaussians and NeuS layouts)",
+            "convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping|nerfies|dycheck|llff|dynerf|neus|replica|tum [--out <dir>] [--images copy|link|relative] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>]",
+            "write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object; llff, dynerf (N3DV, multi-view dynamic), neus: LLFF, 4DGaussians and NeuS layouts; replica, tum: RGB-D sequences of a monocular dynamic capture for SLAM)",
             Parse, Run, "depths", "binary").WithOptions(
-            "--to <format>        nerfstudio, colmap (= 3dgs), ngp (= instant-ngp), dynamic3dgs, gaussian-grouping, nerfies (Nerfies, HyperNeRF, 4DGaussians), dycheck (DyCheck iPhone, exact depth), llff, dynerf or neus",
+            "--to <format>        nerfstudio, colmap (= 3dgs), ngp (= instant-ngp), dynamic3dgs, gaussian-grouping, nerfies (Nerfies, HyperNeRF, 4DGaussians), dycheck (DyCheck iPhone, exact depth), llff, dynerf, neus, replica or tum (SLAM sequences)",
             "--out <dir>          where the export goes (default: the format's place inside the dataset)",
             "--images copy|link|relative  nerfstudio, ngp: copy the files transforms.json names into the export (default with --out outside the dataset: a self-contained folder), hard-link them (the same without a second copy on disk; copies where the disk cannot link), or name the dataset's by relative path (default inside the dataset)",
             "--depths             colmap: also 3D Gaussian Splatting's inverse-depth maps and depth_params.json",

@@ -16,7 +16,7 @@ namespace NerfDatasetCreator
     public static class DemoCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("demo",
-            "demo <dir> [--preset static|dynamic|labels|lens|exposure|blur] [--views N] [--size PX] [--renders-for <dataset>]",
+            "demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular] [--views N] [--size PX] [--renders-for <dataset>]",
             "write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)",
             Parse, Run);
 
@@ -125,6 +125,7 @@ namespace NerfDatasetCreator
                 : preset == DemoPreset.Lens ? ", an OpenCV lens (k1 −0.12, k2 0.02) at a 55° field of view"
                 : preset == DemoPreset.Exposure ? ", random exposure with the clean images beside"
                 : preset == DemoPreset.Blur ? ", camera-shake motion blur with the sharp images beside"
+                : preset == DemoPreset.Monocular ? ", one camera moving around the target over time, " + ValidationProblem.Format(DemoDataset.MonocularFrameRate) + " views a second"
                 : "";
             return "RGBA, depth, normals, masks" + extra + ", points3d.ply, the geometry pack";
         }
@@ -137,6 +138,7 @@ namespace NerfDatasetCreator
         public static IReadOnlyList<ExportTarget> Targets(DemoPreset preset)
         {
             if (preset == DemoPreset.Dynamic) return new[] { ExportTarget.Dynamic3dgs, ExportTarget.Nerfies, ExportTarget.Dycheck, ExportTarget.Dynerf };
+            if (preset == DemoPreset.Monocular) return new[] { ExportTarget.Replica, ExportTarget.Tum };
             var targets = new List<ExportTarget> { ExportTarget.Nerfstudio, ExportTarget.Colmap, ExportTarget.Ngp };
             if (preset == DemoPreset.Labels) targets.Add(ExportTarget.GaussianGrouping);
             if (preset == DemoPreset.Static) targets.AddRange(new[] { ExportTarget.Llff, ExportTarget.Neus });
@@ -161,7 +163,7 @@ namespace NerfDatasetCreator
                 trains.Add("# " + TrainLine(target, output, targetReach));
             }
             lines.AddRange(trains);
-            if (preset != DemoPreset.Dynamic)
+            if (preset != DemoPreset.Dynamic && preset != DemoPreset.Monocular)
             {
                 var renders = folder.TrimEnd('/', '\\') + "-renders";
                 lines.Add(Line("demo", renders, "--renders-for", folder) + "   # stand-in renders: evaluate without a model");
@@ -184,6 +186,8 @@ namespace NerfDatasetCreator
                 case ExportTarget.Llff: return "python run_nerf.py --dataset_type llff --datadir " + Quote(output) + " --factor 1 --no_ndc --spherify   (nerf-pytorch)";
                 case ExportTarget.Neus: return "python exp_runner.py --mode train --conf ./confs/wmask.conf --case <case>   (NeuS: copy " + Quote(output) + " to public_data/<case>/ first)";
                 case ExportTarget.Dynerf: return "python train.py -s " + Quote(output) + " --configs arguments/dynerf/default.py   (4DGaussians)";
+                case ExportTarget.Replica:
+                case ExportTarget.Tum: return "python slam.py --config " + Quote(output + "/" + Replica.MonoGsConfigFileName) + "   (MonoGS, from its folder; convert prints SplaTAM's and Gaussian-SLAM's)";
                 default: return "python train.py   (Dynamic 3D Gaussians: copy " + Quote(output) + " to its data/ folder first, as convert says)";
             }
         }

@@ -38,6 +38,8 @@ namespace NerfDatasetCreator.Editor
             ("instant-ngp", ExportTarget.Ngp, false, "transforms.json with instant-ngp's aabb_scale, scale and offset."),
             ("Dynamic 3D Gaussians", ExportTarget.Dynamic3dgs, false, "A multi-view dynamic capture in Dynamic 3D Gaussians' layout (train_meta.json, ims/, seg/, init_pt_cld.npz)."),
             ("Gaussian Grouping", ExportTarget.GaussianGrouping, false, "A dataset captured with labels: the COLMAP model plus object_mask/ per image, object_ids.json and the num_classes config (Documentation~/exports.md, Labels)."),
+            ("Replica (SLAM)", ExportTarget.Replica, false, "A monocular dynamic capture with depth as a Replica RGB-D sequence for SplaTAM, MonoGS and Gaussian-SLAM (results/, traj.txt, their configs)."),
+            ("TUM RGB-D (SLAM)", ExportTarget.Tum, false, "A monocular dynamic capture with depth as a TUM RGB-D sequence for SplaTAM, MonoGS and Gaussian-SLAM (rgb.txt, depth.txt, groundtruth.txt, their configs)."),
         };
 
         [MenuItem("Window/NeRF Dataset Tools")]

@@ -27,6 +27,11 @@ namespace NerfDatasetCreator.Tool
         }
 
         /// <summary>Runs one command; whatever it cannot handle is one line on stderr and exit 1 (<see cref="UnexpectedError"/>).</summary>
-        public static int Run(string[] args, System.IO.TextWriter stdout, System.IO.TextWriter stderr) => ToolCommands.Run(args, stdout, stderr);
+        public static int Run(string[] args, System.IO.TextWriter stdout, System.IO.TextWriter stderr)
+        {
+            // Core ships no JPEG code (IJpegCodec): the tool brings LibJpeg.NET from NuGet.
+            if (JpegWriter.Codec == null) JpegWriter.Codec = new LibJpegCodec();
+            return ToolCommands.Run(args, stdout, stderr);
+        }
     }
 }

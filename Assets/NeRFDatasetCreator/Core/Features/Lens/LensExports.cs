@@ -28,6 +28,11 @@ namespace NerfDatasetCreator
                     return new ValidationProblem("--to", "gaussian-grouping",
                         "cannot hold lens distortion: Gaussian Grouping's COLMAP reader accepts only PINHOLE and SIMPLE_PINHOLE cameras (scene/dataset_readers.py:83-93), and this dataset's images were taken through " + lens.Describe() + ".",
                         "Undistort the images to a pinhole first, or convert to nerfstudio or colmap, which carry the lens.");
+                case ExportTarget.Replica:
+                case ExportTarget.Tum:
+                    return new ValidationProblem("--to", ExportTargets.Name(target),
+                        "cannot hold lens distortion: SplaTAM and Gaussian-SLAM undistort the colour image only, not the depth (SplaTAM basedataset.py:308–310, Gaussian-SLAM datasets.py:155–157), so colour and depth would no longer align; the configs written describe a pinhole, and this dataset's images were taken through " + lens.Describe() + ".",
+                        "Capture without a lens (the Camera step's lens \"none\") for a SLAM sequence.");
                 case ExportTarget.Colmap when depths:
                     return new ValidationProblem("--depths", lens.ColmapModelName,
                         "writes depth maps for 3DGS, whose COLMAP reader accepts only PINHOLE and SIMPLE_PINHOLE cameras, and this dataset's lens is " + lens.Describe() + ".",
