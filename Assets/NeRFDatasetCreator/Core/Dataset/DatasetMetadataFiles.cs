@@ -15,6 +15,8 @@ namespace NerfDatasetCreator
                 var s = split;
                 session.WriteText(DatasetLayout.TransformsFileName(split), text => BlenderTransformsWriter.Write(plan, s, text));
             }
+            // The config's sparseViews (none by default): splits/sparse_<n>.json from the planned poses.
+            SparseSplitFiles.Write(session, plan);
             session.WriteText(DatasetLayout.ConfigFileName, DatasetConfig.Write(plan, provenance, pointCloud, geometry));
         }
     }

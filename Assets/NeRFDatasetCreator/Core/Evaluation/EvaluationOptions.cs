@@ -9,6 +9,9 @@ namespace NerfDatasetCreator
         public string RendersFolder;
         public string Split = "test";
 
+        /// <summary><c>--split sparse_&lt;n&gt;</c>: a split file's name (<see cref="SplitFileSelection"/>); <see cref="Split"/> is then test. Null: none.</summary>
+        public string SplitFile;
+
         /// <summary>Null: <c>&lt;renders&gt;/evaluation-&lt;split&gt;</c>.</summary>
         public string OutFolder;
 
@@ -33,6 +36,6 @@ namespace NerfDatasetCreator
 
         public int Threads = Math.Max(1, Environment.ProcessorCount);
 
-        public string ResolvedOutFolder(string rendersRoot) => OutFolder ?? System.IO.Path.Combine(rendersRoot, "evaluation-" + Split);
+        public string ResolvedOutFolder(string rendersRoot) => OutFolder ?? System.IO.Path.Combine(rendersRoot, "evaluation-" + (SplitFile ?? Split));
     }
 }

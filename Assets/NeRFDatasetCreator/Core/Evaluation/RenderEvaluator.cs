@@ -18,7 +18,16 @@ namespace NerfDatasetCreator
         public static EvaluationResult Run(EvaluationOptions options, Action<string> progress = null)
         {
             var dataset = EvaluationDataset.Read(options.DatasetFolder, options.Split);
-            var renders = RenderFolder.Read(options.RendersFolder, options.Layout, options.Split, dataset.Frames.Select(f => f.FilePath).ToList());
+            RenderSet renders;
+            SparseSplit splitFile = null;
+            var testViews = dataset.Frames.Count;
+            if (options.SplitFile != null)
+            {
+                // --split sparse_<n>: only the test views the split file lists are scored.
+                splitFile = SparseSplits.Find(dataset.Root, options.SplitFile);
+                (dataset, renders) = SplitFileSelection.Select(dataset, splitFile, paths => RenderFolder.Read(options.RendersFolder, options.Layout, options.Split, paths));
+            }
+            else renders = RenderFolder.Read(options.RendersFolder, options.Layout, options.Split, dataset.Frames.Select(f => f.FilePath).ToList());
             var background = EvaluationBackground.Parse(options.Background, dataset.Config);
             var stepsFolder = options.GeometryPath != null && Directory.Exists(options.GeometryPath);
             if (options.GeometryPath != null && !stepsFolder && !File.Exists(options.GeometryPath))
@@ -44,6 +53,7 @@ namespace NerfDatasetCreator
             {
                 DatasetFolder = dataset.Root,
                 Split = options.Split,
+                SplitFile = splitFile,
                 Renders = renders,
                 Background = background,
                 DepthAlongRay = options.DepthAlongRay,
@@ -56,6 +66,7 @@ namespace NerfDatasetCreator
             if (wantNormals && !dataset.HasNormals) { wantNormals = false; result.Notes.Add("The renders include normals, but " + dataset.Unscored("normal", "normal_path", f => f.NormalPath) + ": normals not scored."); }
             if (firstColumn > 0)
                 result.Notes.Add("The 3DGS renders are the right half of each view (render.py with --train_test_exp keeps columns W//2 … W − 1 of the render and of gt): scored against that half of the dataset's images, from column " + firstColumn + ".");
+            if (splitFile != null) result.Notes.Add(SplitFileSelection.Note(splitFile, testViews));
             if (truth?.Note != null) result.Notes.Add(truth.Note);
             if (!dataset.HasMasks) result.Notes.Add("The dataset's " + options.Split + " split has no masks: PSNR in the mask not computed.");
             if (renders.Layout == RenderLayout.Nerfstudio && wantDepth)
