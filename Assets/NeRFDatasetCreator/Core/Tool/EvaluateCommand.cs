@@ -34,12 +34,9 @@ namespace NerfDatasetCreator
             if (!arguments.TryGet("renders", out var renders) || string.IsNullOrWhiteSpace(renders))
                 arguments.Error("evaluate needs --renders <folder>: the trainer's renders of the split (3DGS model folder, ns-render dataset's --output-path, instant-ngp --screenshot_dir, or r_<i>.png files).");
             e.RendersFolder = renders;
-            if (arguments.TryGet("split", out var splitName) && !DatasetSplits.TryParse(splitName, out _))
-            {
-                // Not train, val or test: a split file's name (splits/<name>.json), checked against the dataset when it is read.
-                if (SparseSplit.IsFileName(splitName + ".json") || System.Text.RegularExpressions.Regex.IsMatch(splitName, "^[A-Za-z0-9_-]+$")) e.SplitFile = splitName;
-                else arguments.Error("--split = " + splitName + ": is not train, val, test or the name of a split file such as sparse_8 (splits/sparse_8.json, written by nerf-dataset splits).");
-            }
+            // sparse_<n>: a split file (splits/sparse_<n>.json), checked against the dataset when it is read; anything else
+            // is read (and refused) as every command reads --split.
+            if (arguments.TryGet("split", out var splitName) && SparseSplit.IsFileName(splitName + ".json")) e.SplitFile = splitName;
             else e.Split = arguments.Split() ?? e.Split;
             e.OutFolder = arguments.OptionalPath("out", "--out is empty; leave it out to write into <renders>/evaluation-<split>.");
             if (arguments.TryGet("layout", out var layout))

@@ -163,6 +163,14 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(written["test"].Select(t => (int)t), Is.EqualTo(new[] { 0, 1, 2, 3 }));
                 Assert.That(OwnDataset.WhyNotOurs(folder), Is.Null, "splits/ is the plugin's");
                 Assert.That(SparseSplits.Find(folder, "sparse_3").Train, Is.EqualTo(expected));
+
+                // One shard of a sharded capture holds a share of the views: it writes none (indices are the whole dataset's).
+                var shard = temp.Combine("shard");
+                var session = DatasetWriteSession.Begin(shard, OverwritePolicy.Never);
+                DatasetMetadataFiles.Write(session, CapturePlan.Build(s, PlanTarget.AtOrigin), new Provenance(new System.DateTime(2026, 1, 2, 3, 4, 5, System.DateTimeKind.Utc)), wholeDataset: false);
+                session.Commit();
+                Assert.That(File.Exists(Path.Combine(shard, "transforms_train.json")), Is.True);
+                Assert.That(Directory.Exists(Path.Combine(shard, "splits")), Is.False);
             }
         }
     }
