@@ -77,7 +77,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(lines[4], Does.StartWith("  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping [--out <dir>]"));
             Assert.That(lines[5], Does.StartWith("  clean <dir> [--dry-run]"));
             Assert.That(lines[6], Does.StartWith("  check <dir> [--split S] [--json FILE] [--max-views N]"));
-            Assert.That(lines[7], Does.StartWith("  evaluate <dir> --renders <dir> [--split test]"));
+            Assert.That(lines[7], Does.StartWith("  evaluate <dir> --renders <dir> [--split test|sparse_<n>]"));
             Assert.That(lines[8], Does.StartWith("  splits <dir> [--views 8[,3,...]]"));
             Assert.That(lines[9], Does.StartWith("  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur]"));
             Assert.That(lines[10], Does.StartWith("exit codes:"));

@@ -70,6 +70,7 @@ namespace NerfDatasetCreator
                 ["compositing"] = "straight alpha over the colour on the stored 8-bit sRGB values: out = floor((c*a + bg*(255 - a) + 127) / 255) per channel",
                 ["masks"] = MasksFolder + "/: each image's alpha, 8-bit grey, 255 opaque",
             };
+            if (background.FromProtocol) record["from"] = "the dataset's protocol background (--background protocol)";
             if (background.IsRandom)
             {
                 record["seed"] = background.Seed;
@@ -134,7 +135,7 @@ namespace NerfDatasetCreator
                 if (target == ExportTarget.Colmap && c.StartsWith("python train.py", System.StringComparison.Ordinal) && background.Name == "white")
                     return c.Replace(" --eval", " --eval -w");
                 // nerfstudio: model options go before the dataparser (splatfacto's default is random, nerfacto's last_sample).
-                if (target == ExportTarget.Nerfstudio && c.StartsWith("ns-train ", System.StringComparison.Ordinal))
+                if (target == ExportTarget.Nerfstudio && c.StartsWith("ns-train ", System.StringComparison.Ordinal) && (background.Name == "white" || background.Name == "black"))
                 {
                     var space = c.IndexOf(' ', "ns-train ".Length);
                     return space < 0 ? c : c.Substring(0, space) + " --pipeline.model.background-color " + background.Name + c.Substring(space);

@@ -29,6 +29,7 @@ namespace NerfDatasetCreator
         {
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
+            background = background?.Resolve(scene.RootDirectory);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
             var time = target == ExportTarget.Dynamic3dgs ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
             if (time != null) warnings.Add(time);
@@ -126,7 +127,7 @@ namespace NerfDatasetCreator
         {
             if (outDir != null) return Path.GetFullPath(outDir);
             // --background: its own folder (<dir>/colmap_white, <dir>/nerfstudio_random, …), beside the plain export.
-            if (background != null) return Path.GetFullPath(Path.Combine(root, ExportTargets.Name(target) + "_" + background.Name));
+            if (background != null) return Path.GetFullPath(Path.Combine(root, ExportTargets.Name(target) + "_" + background.Resolve(root).Name));
             switch (target)
             {
                 case ExportTarget.Ngp: return Path.GetFullPath(Path.Combine(root, NgpWriter.FolderName));

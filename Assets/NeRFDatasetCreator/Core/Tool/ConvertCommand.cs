@@ -13,7 +13,7 @@ namespace NerfDatasetCreator
     public static class ConvertCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("convert",
-            "convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping [--out <dir>] [--images copy|link|relative] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>] [--background white|black|random [--seed N]]",
+            "convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping [--out <dir>] [--images copy|link|relative] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>] [--background white|black|random|protocol [--seed N]]",
             "write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object)",
             Parse, Run, "depths", "binary").WithOptions(
             "--to <format>        nerfstudio, colmap (= 3dgs), ngp (= instant-ngp), dynamic3dgs or gaussian-grouping",
@@ -24,7 +24,7 @@ namespace NerfDatasetCreator
             "--points N           colmap: the first N points of points3d.ply (default: all)",
             "--min-track N        colmap: the fewest images a point must be seen in (0 keeps every point)",
             "--object <name|id>   nerfstudio: mask every frame to this labelled object (labels.json)",
-            "--background white|black|random  colmap, nerfstudio: RGB images composited over the colour (random: one per image), the alpha in masks/ beside them, into <dir>/<format>_<background>",
+            "--background white|black|random|protocol  colmap, nerfstudio: RGB images composited over the colour (random: one per image; protocol: the dataset's), the alpha in masks/ beside them, into <dir>/<format>_<background>",
             "--seed N             --background random: the seed of the per-image colours (default 0)");
 
         public sealed class Options

@@ -102,6 +102,24 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void ProtocolIsTheDatasetsProtocolBackground()
+        {
+            using (var temp = new TempFolder())
+            {
+                var root = Dataset(temp);
+                var stdout = new StringWriter();
+                // No config and no protocol file: nerf_synthetic's white (ProtocolBackground.For).
+                Assert.That(ToolCommands.Run(new[] { "convert", root, "--to", "colmap", "--background", "protocol" }, stdout, new StringWriter()), Is.EqualTo(0));
+                var white = Path.Combine(root, "colmap_white");
+                Assert.That(Rgb(Path.Combine(white, "images", "train_r_0.png")), Is.EqualTo(OverWhite));
+                var record = JObject.Parse(File.ReadAllText(Path.Combine(white, "backgrounds.json")));
+                Assert.That((string)record["background"], Is.EqualTo("white"));
+                Assert.That((string)record["from"], Does.Contain("protocol"));
+                Assert.That(stdout.ToString(), Does.Contain(" --eval -w"));
+            }
+        }
+
+        [Test]
         public void NerfstudioGetsTheBackgroundFlagAndTheOtherTargetsAreRefused()
         {
             using (var temp = new TempFolder())
@@ -120,7 +138,7 @@ namespace NerfDatasetCreator.Tests
                 Assert.That(ToolCommands.Run(new[] { "convert", root, "--to", "colmap", "--background", "white", "--seed", "3" }, new StringWriter(), stderr = new StringWriter()), Is.EqualTo(2));
                 Assert.That(stderr.ToString(), Does.Contain("--seed picks the colours of --background random"));
                 Assert.That(ToolCommands.Run(new[] { "convert", root, "--to", "colmap", "--background", "grey" }, new StringWriter(), stderr = new StringWriter()), Is.EqualTo(2));
-                Assert.That(stderr.ToString(), Does.Contain("is not white, black or random"));
+                Assert.That(stderr.ToString(), Does.Contain("is not white, black, random or protocol"));
                 Assert.That(Directory.Exists(Path.Combine(root, "ngp_white")), Is.False);
             }
         }
