@@ -120,7 +120,7 @@ namespace NerfDatasetCreator
                 PlyWriter.Write(path, pointCloud);
                 record = PointCloudRecord.Of(path, TargetPointCloud.FileName, pointCloud.Count);
             }
-            DatasetMetadataFiles.Write(session, Plan, provenance, record, geometry);
+            DatasetMetadataFiles.Write(session, Plan, provenance, record, geometry, wholeDataset: Shard.Count == 1);
             if (Shard.Count == 1) File.WriteAllBytes(session.PathOf(RigPreviewPicture.FileName), RigPreviewPicture.Encode(FullPlan));
             if (Shard.Count > 1)
                 ShardManifest.ForShard(Shard, CountsOf(FullPlan)).Write(session.WorkingFolder);

@@ -65,6 +65,14 @@ namespace NerfDatasetCreator
         /// <summary>Focal length in pixels for an image <paramref name="width"/> wide: 0.5·W / tan(0.5·camera_angle_x).</summary>
         public double Focal(int width) => 0.5 * width / Math.Tan(0.5 * CameraAngleX);
 
+        /// <summary>The same dataset with only the frames at <paramref name="indices"/> (of <see cref="Frames"/>), in that order: a split file's test views.</summary>
+        public EvaluationDataset Subset(IReadOnlyList<int> indices)
+        {
+            var copy = (EvaluationDataset)MemberwiseClone();
+            copy.Frames = indices.Select(i => Frames[i]).ToList();
+            return copy;
+        }
+
         public static EvaluationDataset Read(string folder, string split)
         {
             if (string.IsNullOrEmpty(folder) || !Directory.Exists(folder))

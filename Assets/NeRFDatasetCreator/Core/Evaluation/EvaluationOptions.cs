@@ -10,6 +10,9 @@ namespace NerfDatasetCreator
         /// <summary>Null: the protocol's evaluation split (eval_protocol.json), else test.</summary>
         public string Split;
 
+        /// <summary><c>--split sparse_&lt;n&gt;</c>: a split file's name (<see cref="SplitFileSelection"/>); <see cref="Split"/> is then test. Null: none.</summary>
+        public string SplitFile;
+
         /// <summary>Null: <c>&lt;renders&gt;/evaluation-&lt;split&gt;</c>.</summary>
         public string OutFolder;
 
@@ -45,6 +48,6 @@ namespace NerfDatasetCreator
         public int Threads = Math.Max(1, Environment.ProcessorCount);
 
         /// <param name="split">The split evaluated (<see cref="Split"/> or the protocol's).</param>
-        public string ResolvedOutFolder(string rendersRoot, string split) => OutFolder ?? System.IO.Path.Combine(rendersRoot, "evaluation-" + split);
+        public string ResolvedOutFolder(string rendersRoot, string split) => OutFolder ?? System.IO.Path.Combine(rendersRoot, "evaluation-" + (SplitFile ?? split));
     }
 }

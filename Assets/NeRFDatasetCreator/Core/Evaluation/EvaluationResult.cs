@@ -34,6 +34,9 @@ namespace NerfDatasetCreator
     {
         public string DatasetFolder { get; internal set; }
         public string Split { get; internal set; }
+
+        /// <summary>The split file whose test views were scored (<c>--split sparse_&lt;n&gt;</c>), or null.</summary>
+        public SparseSplit SplitFile { get; internal set; }
         public RenderSet Renders { get; internal set; }
         public EvaluationBackground Background { get; internal set; }
         public bool DepthAlongRay { get; internal set; }

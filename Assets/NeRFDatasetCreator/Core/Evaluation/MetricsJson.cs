@@ -95,6 +95,13 @@ namespace NerfDatasetCreator
                 ["views"] = views,
             };
             if (r.Trainer != null) json["trainer_metrics"] = Trainer(r);
+            if (r.SplitFile != null)
+                json["split_file"] = new JObject
+                {
+                    ["file"] = SparseSplit.RelativePath(r.SplitFile.Name),
+                    ["rule"] = r.SplitFile.Rule,
+                    ["test"] = new JArray(r.SplitFile.Test.Select(i => (object)i).ToArray()),
+                };
             if (r.Geometry != null) json["geometry"] = Geometry(r.Geometry);
             if (r.GeometrySteps.Count > 0)
             {

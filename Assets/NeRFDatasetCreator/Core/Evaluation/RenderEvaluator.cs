@@ -19,9 +19,19 @@ namespace NerfDatasetCreator
         {
             // The protocol first: it names the split and the background when the options do not (eval_protocol.json).
             var protocol = !string.IsNullOrEmpty(options.DatasetFolder) && Directory.Exists(options.DatasetFolder) ? EvalProtocolFile.Read(Path.GetFullPath(options.DatasetFolder)) : null;
-            var split = options.Split ?? protocol?.EvaluationSplit ?? "test";
+            // --split sparse_<n> scores test views; otherwise the split named, else the protocol's, else test.
+            var split = options.SplitFile != null ? "test" : options.Split ?? protocol?.EvaluationSplit ?? "test";
             var dataset = EvaluationDataset.Read(options.DatasetFolder, split);
-            var renders = RenderFolder.Read(options.RendersFolder, options.Layout, split, dataset.Frames.Select(f => f.FilePath).ToList());
+            RenderSet renders;
+            SparseSplit splitFile = null;
+            var testViews = dataset.Frames.Count;
+            if (options.SplitFile != null)
+            {
+                // --split sparse_<n>: only the test views the split file lists are scored.
+                splitFile = SparseSplits.Find(dataset.Root, options.SplitFile);
+                (dataset, renders) = SplitFileSelection.Select(dataset, splitFile, paths => RenderFolder.Read(options.RendersFolder, options.Layout, split, paths));
+            }
+            else renders = RenderFolder.Read(options.RendersFolder, options.Layout, split, dataset.Frames.Select(f => f.FilePath).ToList());
             var warnings = new List<string>();
             var background = EvaluationBackground.Parse(ProtocolChoice(options, protocol, warnings), dataset.Config);
             var stepsFolder = options.GeometryPath != null && Directory.Exists(options.GeometryPath);
@@ -59,6 +69,7 @@ namespace NerfDatasetCreator
             {
                 DatasetFolder = dataset.Root,
                 Split = split,
+                SplitFile = splitFile,
                 Protocol = protocol,
                 RenderBackground = measured,
                 Trainer = trainer,
@@ -74,6 +85,7 @@ namespace NerfDatasetCreator
             if (wantNormals && !dataset.HasNormals) { wantNormals = false; result.Notes.Add("The renders include normals, but " + dataset.Unscored("normal", "normal_path", f => f.NormalPath) + ": normals not scored."); }
             if (firstColumn > 0)
                 result.Notes.Add("The 3DGS renders are the right half of each view (render.py with --train_test_exp keeps columns W//2 … W − 1 of the render and of gt): scored against that half of the dataset's images, from column " + firstColumn + ".");
+            if (splitFile != null) result.Notes.Add(SplitFileSelection.Note(splitFile, testViews));
             if (truth?.Note != null) result.Notes.Add(truth.Note);
             result.Warnings.AddRange(warnings);
             if (!dataset.HasMasks) result.Notes.Add("The dataset's " + split + " split has no masks: PSNR in the mask not computed.");

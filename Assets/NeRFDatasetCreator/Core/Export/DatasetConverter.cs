@@ -23,16 +23,20 @@ namespace NerfDatasetCreator
         /// <param name="colmap">COLMAP only: binary or text, how many points, the minimum track length (null: the defaults).</param>
         /// <param name="objectNameOrId">nerfstudio only: mask every frame to this labelled object (<see cref="ObjectMaskExport"/>); null for none.</param>
         /// <param name="images">nerfstudio and ngp: copy, link or name the dataset's files (<see cref="ExportImages"/>); null: copy outside the dataset, relative inside.</param>
+        /// <param name="background">colmap and nerfstudio: write RGB images composited over this colour, masks beside them (<see cref="BackgroundImages"/>); null: the dataset's images.</param>
         public static ConversionResult Convert(string datasetDir, ExportTarget target, string outDir = null, bool depths = false, ColmapOptions colmap = null,
-            string objectNameOrId = null, ExportImages? images = null)
+            string objectNameOrId = null, ExportImages? images = null, ExportBackground background = null)
         {
             var warnings = new List<ValidationProblem>();
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
+            background = background?.Resolve(scene.RootDirectory);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
             var time = target == ExportTarget.Dynamic3dgs || target == ExportTarget.Nerfies || target == ExportTarget.Dycheck || target == ExportTarget.Dynerf || target == ExportTarget.Replica || target == ExportTarget.Tum ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
             if (time != null) warnings.Add(time);
+            if (objectNameOrId != null && background != null)
+                throw new InvalidParameterException(new[] { new ValidationProblem("--background", background.Name, "cannot be combined with --object, whose masks already name the pixels to train.", "Drop one of them.") });
             if (objectNameOrId != null) return ExportObject(scene, target, objectNameOrId, outDir, warnings, images);
-            return Export(scene, target, outDir, null, null, warnings, depths, colmap, images);
+            return Export(scene, target, outDir, null, null, warnings, depths, colmap, images, background);
         }
 
         /// <summary>Where <c>--object</c> writes: <paramref name="outDir"/>, or <c>&lt;dir&gt;/object_&lt;id&gt;</c> of the object named (resolved from labels.json).</summary>
@@ -79,9 +83,10 @@ namespace NerfDatasetCreator
         /// </summary>
         public static ConversionResult Export(ExportScene scene, ExportTarget target, string outDir = null,
             IReadOnlyList<CloudPoint> points = null, double? sceneRadius = null,
-            List<ValidationProblem> warnings = null, bool depths = false, ColmapOptions colmap = null, ExportImages? images = null)
+            List<ValidationProblem> warnings = null, bool depths = false, ColmapOptions colmap = null, ExportImages? images = null, ExportBackground background = null)
         {
             warnings = warnings ?? new List<ValidationProblem>();
+            if (background != null) InvalidParameterException.ThrowIfAny(ExportBackground.Refusal(target, background));
             if (depths && target != ExportTarget.Colmap)
                 throw new InvalidParameterException(new[] { new ValidationProblem("--depths", ExportTargets.Name(target), "is for --to colmap (3DGS reads depth maps for COLMAP sources).", "Drop --depths, or convert to colmap.") });
             if (colmap != null && target != ExportTarget.Colmap && target != ExportTarget.GaussianGrouping)
@@ -89,7 +94,7 @@ namespace NerfDatasetCreator
             // A lens the target cannot hold is refused before anything is written (LensExports).
             InvalidParameterException.ThrowIfAny(LensExports.Refusal(scene.Lens, target, depths), MotionBlurExports.Refusal(scene, target));
             warnings.AddRange(MotionBlurExports.Warnings(scene, target));
-            var output = OutputFolder(scene.RootDirectory, target, outDir);
+            var output = OutputFolder(scene.RootDirectory, target, outDir, background);
             var references = References(target, images, scene.RootDirectory, output);
             // Label exports need labels.json and every instance map: refused before the output folder is made.
             var labelled = target == ExportTarget.GaussianGrouping ? LabelledDataset.Load(scene, GaussianGroupingExport.What) : null;
@@ -100,9 +105,9 @@ namespace NerfDatasetCreator
                 ConversionResult result;
                 switch (target)
                 {
-                    case ExportTarget.Nerfstudio: result = ToNerfstudio(scene, output, warnings, staged, references); break;
+                    case ExportTarget.Nerfstudio: result = background == null ? ToNerfstudio(scene, output, warnings, staged, references) : ToNerfstudio(scene, output, warnings, staged, references, background); break;
                     case ExportTarget.Ngp: result = ToNgp(scene, output, sceneRadius, warnings, staged, references); break;
-                    case ExportTarget.Colmap: result = ToColmap(scene, output, points, warnings, depths, colmap ?? ColmapOptions.Default, staged); break;
+                    case ExportTarget.Colmap: result = ToColmap(scene, output, points, warnings, depths, colmap ?? ColmapOptions.Default, staged, background); break;
                     case ExportTarget.Dynamic3dgs: result = Dynamic3DGaussiansExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.GaussianGrouping: result = GaussianGroupingExport.Write(scene, labelled, output, points, warnings, colmap, staged); break;
                     case ExportTarget.Nerfies: result = NerfiesExport.Write(scene, output, warnings, staged); break;
@@ -126,9 +131,11 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>Where <paramref name="target"/>'s export of the dataset in <paramref name="root"/> goes: <paramref name="outDir"/>, or the format's default place in the dataset.</summary>
-        public static string OutputFolder(string root, ExportTarget target, string outDir = null)
+        public static string OutputFolder(string root, ExportTarget target, string outDir = null, ExportBackground background = null)
         {
             if (outDir != null) return Path.GetFullPath(outDir);
+            // --background: its own folder (<dir>/colmap_white, <dir>/nerfstudio_random, …), beside the plain export.
+            if (background != null) return Path.GetFullPath(Path.Combine(root, ExportTargets.Name(target) + "_" + background.Resolve(root).Name));
             switch (target)
             {
                 case ExportTarget.Ngp: return Path.GetFullPath(Path.Combine(root, NgpWriter.FolderName));
@@ -184,6 +191,16 @@ namespace NerfDatasetCreator
                 references?.Describe());
         }
 
+        /// <summary>nerfstudio with <c>--background</c>: the composites and masks first, then transforms.json naming the composites.</summary>
+        static ConversionResult ToNerfstudio(ExportScene scene, string outDir, List<ValidationProblem> warnings, StagedOutput staged, ExportFileReferences references, ExportBackground background)
+        {
+            var written = new List<string>();
+            var composited = BackgroundImages.ForNerfstudio(scene, background, outDir, staged, warnings, written);
+            var result = ToNerfstudio(composited, outDir, warnings, staged, references);
+            return new ConversionResult(result.OutputDirectory, result.MainFile, result.WrittenFiles.Concat(written).ToList(), result.Warnings,
+                BackgroundImages.Commands(result.TrainCommands, ExportTarget.Nerfstudio, background), result.FileReferences);
+        }
+
         static ConversionResult ToNgp(ExportScene scene, string outDir, double? sceneRadius, List<ValidationProblem> warnings, StagedOutput staged, ExportFileReferences references)
         {
             outDir = Path.GetFullPath(outDir);
@@ -204,7 +221,8 @@ namespace NerfDatasetCreator
             return references.Place(staged);
         }
 
-        internal static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths, ColmapOptions options, StagedOutput staged)
+        internal static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths, ColmapOptions options, StagedOutput staged,
+            ExportBackground background = null)
         {
             outDir = Path.GetFullPath(outDir);
             var sparse = Path.Combine(outDir, "sparse", "0");
@@ -224,6 +242,20 @@ namespace NerfDatasetCreator
             if (testTxt != null) all.Add(testTxt);
             if (pointsPly != null) all.Add(pointsPly);
             all.AddRange(copies.Select(c => c.to));
+            // --background: the images are composites, their alpha goes to masks/ beside images/ (never inside it: gsplat
+            // pairs the files of images/ by sorted name), and backgrounds.json records each image's colour.
+            var composites = background == null ? null : scene.Frames.Select((f, i) => new BackgroundImages.Item
+            {
+                Source = copies[i].from,
+                Image = copies[i].to,
+                Mask = Path.Combine(outDir, BackgroundImages.MasksFolder, names[i]),
+                DatasetPath = f.ImagePath,
+            }).ToList();
+            if (composites != null)
+            {
+                all.AddRange(composites.Select(c => c.Mask));
+                all.Add(Path.Combine(outDir, BackgroundImages.RecordFileName));
+            }
             GaussianSplattingDepths.DepthScan depthScan = null;
             if (depths)
             {
@@ -252,7 +284,8 @@ namespace NerfDatasetCreator
             if (scene.Lens != null) warnings.Add(LensExports.ColmapWarning(scene.Lens));
             var model = ColmapModelBuilder.Build(scene, names, points, surface, options, warnings);
 
-            foreach (var (from, to) in copies) staged.Copy(from, to);
+            if (composites != null) BackgroundImages.Write(composites, background, outDir, staged, warnings);
+            else foreach (var (from, to) in copies) staged.Copy(from, to);
             if (options.Binary)
             {
                 staged.WriteNew(cameras, s => ColmapBinaryWriter.WriteCameras(s, scene.Intrinsics, scene.Lens));
@@ -272,7 +305,8 @@ namespace NerfDatasetCreator
                 warnings.Add(new ValidationProblem(Path.GetFileName(imagesFile), scene.Frames.Count + " images",
                     "COLMAP has no splits: train, val and test views are all listed; upstream 3DGS's --eval holds out every 8th image by name (sparse/0/test.txt lists the real test views for loaders that read it).",
                     "For the nerf_synthetic protocol, train 3DGS on the Blender layout itself (train.py -s <dir> --eval)."));
-            return new ConversionResult(outDir, outDir, all, warnings, ColmapTraining.Commands(outDir, depths, model));
+            var commands = ColmapTraining.Commands(outDir, depths, model);
+            return new ConversionResult(outDir, outDir, all, warnings, background == null ? commands : BackgroundImages.Commands(commands, ExportTarget.Colmap, background));
         }
 
         static void WriteText(Stream stream, Action<TextWriter> write)

@@ -145,6 +145,9 @@ namespace NerfDatasetCreator
         /// <summary>Motion blur and rolling shutter: each view exposed over a shutter interval (off by default; <see cref="MotionBlurSettings"/>).</summary>
         public MotionBlurSettings MotionBlur = new MotionBlurSettings();
 
+        /// <summary>Sparse-view split files a capture or plan writes, one per train view count (<c>splits/sparse_&lt;n&gt;.json</c>, <see cref="SparseSplitFiles"/>); none by default.</summary>
+        public int[] SparseViews = new int[0];
+
         public SplitSettings Split(DatasetSplit split)
         {
             switch (split)
@@ -170,6 +173,7 @@ namespace NerfDatasetCreator
             copy.Lens = Lens?.Clone();
             copy.Exposure = Exposure?.Clone();
             copy.MotionBlur = MotionBlur?.Clone();
+            copy.SparseViews = (int[])SparseViews?.Clone();
             return copy;
         }
 

@@ -95,6 +95,7 @@ namespace NerfDatasetCreator
             problems.AddRange(LensSettingsValidator.Validate(settings));
             problems.AddRange(ExposureSettingsValidator.Validate(settings));
             problems.AddRange(MotionBlurSettingsValidator.Validate(settings));
+            problems.AddRange(SparseViewsSettings.Validate(settings));
 
             if (settings.Loaders == TargetLoaders.None)
                 Add(new ValidationProblem("loaders", "[]", "is empty, so nothing checks that the splits suit any loader.",

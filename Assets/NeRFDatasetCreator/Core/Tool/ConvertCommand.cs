@@ -13,7 +13,7 @@ namespace NerfDatasetCreator
     public static class ConvertCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("convert",
-            "convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping|nerfies|dycheck|llff|dynerf|neus|replica|tum [--out <dir>] [--images copy|link|relative] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>]",
+            "convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping|nerfies|dycheck|llff|dynerf|neus|replica|tum [--out <dir>] [--images copy|link|relative] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>] [--background white|black|random|protocol [--seed N]]",
             "write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object; llff, dynerf (N3DV, multi-view dynamic), neus: LLFF, 4DGaussians and NeuS layouts; replica, tum: RGB-D sequences of a monocular dynamic capture for SLAM)",
             Parse, Run, "depths", "binary").WithOptions(
             "--to <format>        nerfstudio, colmap (= 3dgs), ngp (= instant-ngp), dynamic3dgs, gaussian-grouping, nerfies (Nerfies, HyperNeRF, 4DGaussians), dycheck (DyCheck iPhone, exact depth), llff, dynerf, neus, replica or tum (SLAM sequences)",
@@ -23,7 +23,9 @@ namespace NerfDatasetCreator
             "--binary             colmap: cameras.bin, images.bin, points3D.bin instead of the text model",
             "--points N           colmap: the first N points of points3d.ply (default: all)",
             "--min-track N        colmap: the fewest images a point must be seen in (0 keeps every point)",
-            "--object <name|id>   nerfstudio: mask every frame to this labelled object (labels.json)");
+            "--object <name|id>   nerfstudio: mask every frame to this labelled object (labels.json)",
+            "--background white|black|random|protocol  colmap, nerfstudio: RGB images composited over the colour (random: one per image; protocol: the dataset's), the alpha in masks/ beside them, into <dir>/<format>_<background>",
+            "--seed N             --background random: the seed of the per-image colours (default 0)");
 
         public sealed class Options
         {
@@ -58,11 +60,14 @@ namespace NerfDatasetCreator
 
             /// <summary><c>--images copy|link|relative</c>; null for the default (<see cref="ExportImagesModes.Resolve"/>).</summary>
             public ExportImages? Images { get; set; }
+
+            /// <summary><c>--background white|black|random [--seed N]</c>; null for the dataset's own images.</summary>
+            public ExportBackground Background { get; set; }
         }
 
         static Options Parse(ToolArguments arguments)
         {
-            arguments.RefuseUnknownOptions("to", "out", "depths", "binary", "points", "min-track", "object", "images");
+            arguments.RefuseUnknownOptions("to", "out", "depths", "binary", "points", "min-track", "object", "images", "background", "seed");
             var options = new Options();
             ColmapModelOptions(arguments, options);
             options.Depths = arguments.Flag("depths");
@@ -90,7 +95,25 @@ namespace NerfDatasetCreator
                 else if (options.Target.HasValue && !ExportImagesModes.NamesDatasetFiles(options.Target.Value) && options.Images != ExportImages.Copy)
                     arguments.Error(DatasetConverter.ImagesRefusal(options.Target.Value, options.Images.Value).ToString());
             }
+            BackgroundOption(arguments, options);
             return options;
+        }
+
+        /// <summary><c>--background white|black|random [--seed N]</c> (<see cref="ExportBackground"/>): refused for the targets that do not take it.</summary>
+        static void BackgroundOption(ToolArguments arguments, Options options)
+        {
+            var seed = arguments.WholeNumber("seed", 0, text => "--seed " + text + ": give a whole number ≥ 0 (the same seed gives the same colours).");
+            if (!arguments.TryGet("background", out var value))
+            {
+                if (arguments.Has("seed")) arguments.Error("--seed picks the colours of --background random: add --background random, or leave --seed out.");
+                return;
+            }
+            var background = ExportBackground.Parse(value, seed ?? 0, out var problem);
+            if (problem != null) { arguments.Error(problem.ToString()); return; }
+            if (arguments.Has("seed") && !background.IsRandom) { arguments.Error("--seed picks the colours of --background random; --background " + background.Name + " has one colour."); return; }
+            var refusal = options.Target.HasValue ? ExportBackground.Refusal(options.Target.Value, background) : null;
+            if (refusal != null) arguments.Error(refusal.ToString());
+            else options.Background = background;
         }
 
         /// <summary><c>--binary</c>, <c>--points N</c>, <c>--min-track N</c>: the COLMAP model's shape (<see cref="ColmapOptions"/>).</summary>
@@ -122,10 +145,10 @@ namespace NerfDatasetCreator
         const int FilesListedPerFolder = 5;
 
         public static int Run(Options options, TextWriter stdout, TextWriter stderr) =>
-            Run(options.DatasetFolder, options.Target.Value, options.OutputFolder, stdout, stderr, options.Depths, options.ColmapModelOptions, options.ObjectName, options.Images);
+            Run(options.DatasetFolder, options.Target.Value, options.OutputFolder, stdout, stderr, options.Depths, options.ColmapModelOptions, options.ObjectName, options.Images, options.Background);
 
         public static int Run(string datasetFolder, ExportTarget target, string outputFolder, TextWriter stdout, TextWriter stderr, bool depths = false, ColmapOptions colmap = null,
-            string objectName = null, ExportImages? images = null)
+            string objectName = null, ExportImages? images = null, ExportBackground background = null)
         {
             ConversionResult result;
             try
@@ -135,7 +158,7 @@ namespace NerfDatasetCreator
                 {
                     var output = objectName != null
                         ? DatasetConverter.ObjectOutputFolder(Path.GetFullPath(datasetFolder), objectName, outputFolder)
-                        : DatasetConverter.OutputFolder(Path.GetFullPath(datasetFolder), target, outputFolder);
+                        : DatasetConverter.OutputFolder(Path.GetFullPath(datasetFolder), target, outputFolder, background);
                     var recovered = Recovery.Run(output);
                     foreach (var note in recovered) stderr.WriteLine("note: " + note);
                     if (recovered.Any(n => n.Operation == "convert" && n.Finished))
@@ -144,7 +167,7 @@ namespace NerfDatasetCreator
                         return ToolExitCodes.Success;
                     }
                 }
-                result = DatasetConverter.Convert(datasetFolder, target, outputFolder, depths, colmap, objectName, images);
+                result = DatasetConverter.Convert(datasetFolder, target, outputFolder, depths, colmap, objectName, images, background);
             }
             catch (InvalidParameterException e)
             {

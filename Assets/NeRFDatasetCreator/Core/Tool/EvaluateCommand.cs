@@ -11,10 +11,11 @@ namespace NerfDatasetCreator
     public static class EvaluateCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("evaluate",
-            "evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset [--override-protocol]] [--trainer-metrics <json>] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
+            "evaluate <dir> --renders <dir> [--split test|sparse_<n>] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset [--override-protocol]] [--trainer-metrics <json>] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
             "score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html", Parse, Run, "override-protocol").WithOptions(
             "--renders <dir>               the trainer's renders of the split (3DGS model folder, ns-render --output-path, instant-ngp --screenshot_dir, or r_<i>.png)",
             "--split test|val|train        the split the renders show (default: eval_protocol.json's, else test)",
+            "--split sparse_<n>            score only the test views splits/sparse_<n>.json lists (nerf-dataset splits)",
             "--out <dir>                   where metrics.json, report.html and the error maps go (default <renders>/evaluation-<split>)",
             "--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain  how the renders are named (default: detected)",
             "--background white|black|dataset    what the dataset's transparent pixels are composited on (default: eval_protocol.json's, else white)",
@@ -35,7 +36,10 @@ namespace NerfDatasetCreator
             if (!arguments.TryGet("renders", out var renders) || string.IsNullOrWhiteSpace(renders))
                 arguments.Error("evaluate needs --renders <folder>: the trainer's renders of the split (3DGS model folder, ns-render dataset's --output-path, instant-ngp --screenshot_dir, or r_<i>.png files).");
             e.RendersFolder = renders;
-            e.Split = arguments.Split();
+            // sparse_<n>: a split file (splits/sparse_<n>.json), checked against the dataset when it is read; anything else
+            // is read (and refused) as every command reads --split.
+            if (arguments.TryGet("split", out var splitName) && SparseSplit.IsFileName(splitName + ".json")) e.SplitFile = splitName;
+            else e.Split = arguments.Split();
             e.OutFolder = arguments.OptionalPath("out", "--out is empty; leave it out to write into <renders>/evaluation-<split>.");
             if (arguments.TryGet("layout", out var layout))
             {

@@ -23,6 +23,7 @@ namespace NerfDatasetCreator
             CleanCommand.Command,
             CheckCommand.Command,
             EvaluateCommand.Command,
+            SplitsCommand.Command,
             DemoCommand.Command,
         };
 

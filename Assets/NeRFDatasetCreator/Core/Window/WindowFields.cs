@@ -46,6 +46,9 @@ namespace NerfDatasetCreator
         /// <summary>The Motion blur section (Editor MotionBlurSection) shows every "motionBlur.…" problem.</summary>
         public const string MotionBlur = MotionBlurSettingsJson.Key;
 
+        /// <summary>Step 5's Sparse-view splits field (<see cref="SparseViewsChoices"/>).</summary>
+        public const string SparseViews = SparseViewsSettings.Key;
+
         /// <summary>"splits.train.count" and the like.</summary>
         public static string SplitField(DatasetSplit split, string key) => "splits." + DatasetSplits.Name(split) + "." + key;
 
@@ -62,7 +65,7 @@ namespace NerfDatasetCreator
                 Supersampling, Background, Seed, Name, OutputFolder, Overwrite, Loaders,
                 Normalisation, NormalisedTargetRadius, PointCloudPoints, PointCloudRadius,
                 TimeModeField, TimeSourcesField, TimeStart, TimeEnd, TimeSteps, TimeFps,
-                Exposure, Lens, MotionBlur,
+                Exposure, Lens, MotionBlur, SparseViews,
             };
             foreach (var split in DatasetSplits.All)
             {
@@ -112,7 +115,7 @@ namespace NerfDatasetCreator
             if (Covers(Name, field) || Covers(OutputFolder, field) || Covers(Overwrite, field) || Covers(Loaders, field))
                 return WindowStep.OutputFolder;
             if (Covers(Normalisation, field) || Covers(NormalisedTargetRadius, field) || Covers(PointCloudPoints, field) || Covers(PointCloudRadius, field)
-                || Covers(Exposure, field) || Covers(Lens, field) || Covers(MotionBlur, field))
+                || Covers(Exposure, field) || Covers(Lens, field) || Covers(MotionBlur, field) || Covers(SparseViews, field))
                 return WindowStep.Outputs;
             if (Covers(Labels, field)) return WindowStep.Outputs;
             foreach (var split in DatasetSplits.All)

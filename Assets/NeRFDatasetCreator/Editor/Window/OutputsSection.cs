@@ -6,7 +6,7 @@ namespace NerfDatasetCreator.Editor
 {
     /// <summary>
     /// Step 5: per split, the extra passes next to the RGBA image: depth and normals (PNG and/or EXR) and the mask; then
-    /// one section per optional output (labels, exposure, lens, motion blur), the scene's scale and the geometry pack.
+    /// one section per optional output (labels, exposure, lens, motion blur, sparse-view splits), the scene's scale and the geometry pack.
     /// </summary>
     static class OutputsSection
     {
@@ -35,6 +35,7 @@ namespace NerfDatasetCreator.Editor
             ExposureSection.Draw(c);
             LensSection.Draw(c);
             MotionBlurSection.Draw(c);
+            SparseViewsSection.Draw(c);
             DrawScene(c);
             // "preflight" in config files (Documentation~/settings.md).
             c.Settings.Preflight = EditorGUILayout.Toggle(new GUIContent("Preflight check",

@@ -137,6 +137,7 @@ namespace NerfDatasetCreator.Tests
             "  validate <dir>                                          check a Blender-format dataset\n" +
             "  merge --out <dir> [--files copy|move] <shard-dir>...    join the folders of a sharded capture\n" +
             "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping|llff|dynerf|neus [--out <dir>] [--images copy|link|relative] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object; llff, dynerf (N3DV, multi-view dynamic), neus: LLFF, 4DGaussians and NeuS layouts)\n" +
+            "  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping [--out <dir>] [--images copy|link|relative] [--depths] [--binary] [--points N] [--min-track N] [--object <name|id>] [--background white|black|random|protocol [--seed N]]  write a dataset in another trainer's format (--depths: colmap + 3DGS depth maps; --binary/--points/--min-track: the colmap model, tracks from depth; dynamic3dgs: multi-view dynamic captures; gaussian-grouping: object masks from the labels; --object: nerfstudio masks of one labelled object)\n" +
             "  clean <dir> [--dry-run]                                 finish or roll back interrupted runs, remove their leftover folders\n" +
             "  check <dir> [--split S] [--json FILE] [--max-views N] [--model <dir>]  decode the images and check that alpha, masks, depth, normals, poses and point cloud agree\n" +
             "  evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset [--override-protocol]] [--trainer-metrics <json>] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]  score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html\n" +
@@ -145,6 +146,9 @@ namespace NerfDatasetCreator.Tests
             "  check <dir> [--split S] [--json FILE] [--max-views N]   decode the images and check that alpha, masks, depth, normals, poses and point cloud agree\n" +
             "  evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]  score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html\n" +
             "  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular] [--views N] [--size PX] [--renders-for <dataset>]  write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)\n" +
+            "  evaluate <dir> --renders <dir> [--split test|sparse_<n>] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]  score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html\n" +
+            "  splits <dir> [--views 8[,3,...]]                        write sparse-view split files (splits/sparse_<n>.json: nerf_synthetic's paper lists, else farthest-point views) for evaluate --split\n" +
+            "  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur] [--views N] [--size PX] [--renders-for <dataset>]  write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error\n" +
             "nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version.";
 
@@ -152,7 +156,7 @@ namespace NerfDatasetCreator.Tests
         public void TheHelpTextIsBuiltFromTheCommandTableAsReleased()
         {
             Assert.That(ToolCommands.Usage, Is.EqualTo(ReleasedUsage));
-            Assert.That(ToolCommands.All.Select(c => c.Name), Is.EqualTo(new[] { "plan", "validate", "merge", "convert", "clean", "check", "evaluate", "demo" }));
+            Assert.That(ToolCommands.All.Select(c => c.Name), Is.EqualTo(new[] { "plan", "validate", "merge", "convert", "clean", "check", "evaluate", "splits", "demo" }));
         }
 
         [Test]

@@ -27,6 +27,7 @@ namespace NerfDatasetCreator.Tests
             yield return Case("semisphere bottom", s => s.Train.Formation.BottomElevationDegrees = 95, "splits.train.formation.bottomElevationDegrees", WindowStep.Rig);
             yield return Case("normalised radius", s => s.NormalisedTargetRadius = double.NaN, "normalisedTargetRadius", WindowStep.Outputs);
             yield return Case("point cloud", s => s.PointCloudPoints = -5, "pointCloudPoints", WindowStep.Outputs);
+            yield return Case("sparse views", s => s.SparseViews = new[] { 0 }, "sparseViews", WindowStep.Outputs);
             yield return Case("time steps", s =>
             {
                 s.Time.Mode = TimeMode.MultiView;
