@@ -105,6 +105,7 @@ namespace NerfDatasetCreator
                     case ExportTarget.Colmap: result = ToColmap(scene, output, points, warnings, depths, colmap ?? ColmapOptions.Default, staged); break;
                     case ExportTarget.Dynamic3dgs: result = Dynamic3DGaussiansExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.GaussianGrouping: result = GaussianGroupingExport.Write(scene, labelled, output, points, warnings, colmap, staged); break;
+                    case ExportTarget.Multiscale: result = MultiscaleExport.Write(scene, output, points, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 staged.Commit();
@@ -127,6 +128,7 @@ namespace NerfDatasetCreator
                 case ExportTarget.Colmap: return Path.GetFullPath(Path.Combine(root, ColmapFolderName));
                 case ExportTarget.Dynamic3dgs: return Path.GetFullPath(Path.Combine(root, Dynamic3DGaussians.FolderName));
                 case ExportTarget.GaussianGrouping: return Path.GetFullPath(Path.Combine(root, GaussianGrouping.FolderName));
+                case ExportTarget.Multiscale: return Path.GetFullPath(Path.Combine(root, MultiscaleExport.FolderName));
                 default: return Path.GetFullPath(root);
             }
         }
@@ -189,7 +191,9 @@ namespace NerfDatasetCreator
             return references.Place(staged);
         }
 
-        internal static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths, ColmapOptions options, StagedOutput staged)
+        /// <param name="writeImage">Writes frame i's image to images/&lt;name&gt; (multiscale re-encodes it); null: copy the dataset's file.</param>
+        internal static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths, ColmapOptions options, StagedOutput staged,
+            Action<int, string> writeImage = null)
         {
             outDir = Path.GetFullPath(outDir);
             var sparse = Path.Combine(outDir, "sparse", "0");
@@ -237,7 +241,9 @@ namespace NerfDatasetCreator
             if (scene.Lens != null) warnings.Add(LensExports.ColmapWarning(scene.Lens));
             var model = ColmapModelBuilder.Build(scene, names, points, surface, options, warnings);
 
-            foreach (var (from, to) in copies) staged.Copy(from, to);
+            for (var i = 0; i < copies.Count; i++)
+                if (writeImage != null) writeImage(i, copies[i].to);
+                else staged.Copy(copies[i].from, copies[i].to);
             if (options.Binary)
             {
                 staged.WriteNew(cameras, s => ColmapBinaryWriter.WriteCameras(s, scene.Intrinsics, scene.Lens));

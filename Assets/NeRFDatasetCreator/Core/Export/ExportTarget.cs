@@ -16,11 +16,14 @@ namespace NerfDatasetCreator
 
         /// <summary>Gaussian Grouping's COLMAP layout with per-image object masks (<see cref="GaussianGroupingExport"/>).</summary>
         GaussianGrouping,
+
+        /// <summary>gsplat's images_2/4/8 beside a COLMAP model, and mip-NeRF's multi-scale Blender layout (<see cref="MultiscaleExport"/>).</summary>
+        Multiscale,
     }
 
     public static class ExportTargets
     {
-        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping" };
+        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping", "multiscale" };
 
         /// <summary>
         /// The config's <c>loaders</c> names (<see cref="TargetLoaderNames"/>) that name an export too, so one
