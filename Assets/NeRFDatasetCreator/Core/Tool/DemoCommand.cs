@@ -135,6 +135,7 @@ namespace NerfDatasetCreator
             if (preset == DemoPreset.Dynamic) return new[] { ExportTarget.Dynamic3dgs };
             var targets = new List<ExportTarget> { ExportTarget.Nerfstudio, ExportTarget.Colmap, ExportTarget.Ngp };
             if (preset == DemoPreset.Labels) targets.Add(ExportTarget.GaussianGrouping);
+            if (preset == DemoPreset.Static) targets.Add(ExportTarget.Multiscale); // a pinhole: mip-NeRF's metadata has no lens
             return targets;
         }
 
@@ -174,6 +175,7 @@ namespace NerfDatasetCreator
                 case ExportTarget.Colmap: return "python train.py -s " + Quote(output) + " --eval   (3D Gaussian Splatting)";
                 case ExportTarget.Ngp: return "./instant-ngp " + Quote(output + "/" + NgpWriter.FileName) + "   (instant-ngp, from its folder)";
                 case ExportTarget.GaussianGrouping: return "python train.py -s " + Quote(output) + " -r 1 --config_file " + Quote(output + "/" + GaussianGrouping.ConfigFileName) + "   (Gaussian Grouping)";
+                case ExportTarget.Multiscale: return "python simple_trainer.py default --data_dir " + Quote(output + "/" + MultiscaleExport.ColmapFolder) + " --data_factor 4   (gsplat; mip-NeRF layout in " + Quote(output + "/" + MipNerfMultiscale.FolderName) + ")";
                 default: return "python train.py   (Dynamic 3D Gaussians: copy " + Quote(output) + " to its data/ folder first, as convert says)";
             }
         }

@@ -78,6 +78,12 @@ namespace NerfDatasetCreator
                 }
             });
 
+            // gsplat's own hold-out, not 3DGS's, is what a user of colmap/ meets (examples/datasets/colmap.py Dataset: test_every 8).
+            var noSplits = warnings.FindIndex(w => w.Reason.StartsWith("COLMAP has no splits", System.StringComparison.Ordinal));
+            if (noSplits >= 0)
+                warnings[noSplits] = new ValidationProblem(warnings[noSplits].Field, warnings[noSplits].Value,
+                    "COLMAP has no splits: colmap/ lists train, val and test views alike, and gsplat holds out every 8th image in name order (test_every 8), not the dataset's test views.",
+                    "For the dataset's own splits, train on mipnerf/ (metadata.json keeps train, val and test apart).");
             var reach = scene.TargetReach;
             if (reach == null)
                 warnings.Add(new ValidationProblem("near, far", "2, 6",

@@ -250,14 +250,14 @@ namespace NerfDatasetCreator.Tests
         }
 
         /// <summary>A nerf_synthetic-style dataset by hand: <paramref name="w"/>×<paramref name="h"/> RGBA images, one per split.</summary>
-        static string HandDataset(string root, int w, int h)
+        static string HandDataset(string root, int w, int h, string extra = "")
         {
             Directory.CreateDirectory(root);
             foreach (var split in new[] { "train", "val", "test" })
             {
                 TestPng.Write(Path.Combine(root, split, "r_0.png"), w, h);
                 File.WriteAllText(Path.Combine(root, "transforms_" + split + ".json"),
-                    "{\"camera_angle_x\": 0.69, \"frames\": [{\"file_path\": \"./" + split + "/r_0\", \"transform_matrix\": [[1,0,0,0],[0,1,0,0],[0,0,1,4],[0,0,0,1]]}]}");
+                    "{\"camera_angle_x\": 0.69, " + extra + "\"frames\": [{\"file_path\": \"./" + split + "/r_0\", \"transform_matrix\": [[1,0,0,0],[0,1,0,0],[0,0,1,4],[0,0,0,1]]}]}");
             }
             return root;
         }
@@ -280,6 +280,20 @@ namespace NerfDatasetCreator.Tests
                 var e = Assert.Throws<InvalidParameterException>(() => DatasetConverter.Convert(tiny, ExportTarget.Multiscale));
                 Assert.That(e.Message, Does.Contain("12×6").And.Contain("1/8 level"));
                 Assert.That(Directory.Exists(Path.Combine(tiny, "multiscale")), Is.False, "nothing written");
+            }
+        }
+
+        [Test]
+        public void ALensIsRefusedAndGsplatsHoldOutIsNamed()
+        {
+            using (var temp = new TempFolder())
+            {
+                var plain = DatasetConverter.Convert(HandDataset(temp.Combine("plain"), 16, 16), ExportTarget.Multiscale);
+                Assert.That(plain.Warnings.Select(w => w.Reason), Has.Some.Contains("every 8th image in name order"));
+                var lens = HandDataset(temp.Combine("lens"), 16, 16, "\"camera_model\": \"OPENCV\", \"k1\": -0.1, ");
+                var e = Assert.Throws<InvalidParameterException>(() => DatasetConverter.Convert(lens, ExportTarget.Multiscale));
+                Assert.That(e.Message, Does.Contain("cannot hold lens distortion").And.Contain("pix2cam"));
+                Assert.That(Directory.Exists(Path.Combine(lens, "multiscale")), Is.False, "nothing written");
             }
         }
 
