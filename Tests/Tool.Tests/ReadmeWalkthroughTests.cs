@@ -134,6 +134,10 @@ namespace NerfDatasetCreator.Tool.Tests
                         case "dynamic3dgs":
                             yield return Promise(Dynamic3DGaussians.TrainMetaFileName, File.Exists(Path.Combine(output, Dynamic3DGaussians.TrainMetaFileName)));
                             break;
+                        case "multiscale":
+                            yield return Promise("colmap/images_4", Directory.Exists(Path.Combine(output, MultiscaleExport.ColmapFolder, "images_4")));
+                            yield return Promise("mipnerf/metadata.json", File.Exists(Path.Combine(output, MipNerfMultiscale.FolderName, MipNerfMultiscale.MetadataFileName)));
+                            break;
                         default:
                             yield return Promise("a known export target (teach this test what it writes)", false);
                             break;
