@@ -77,6 +77,7 @@ namespace NerfDatasetCreator
             LabelSettingsJson.Write(w, s.Labels);
             ExposureSettingsJson.Write(w, s.Exposure);
             MotionBlurSettingsJson.Write(w, s.MotionBlur);
+            HdrSettingsJson.Write(w, s.Hdr);
             w.WritePropertyName("splits");
             w.WriteStartObject();
             foreach (var split in DatasetSplits.All)
@@ -270,6 +271,7 @@ namespace NerfDatasetCreator
                 [LensSettings.Key] = (t, p) => LensSettingsJson.Read(reader, t, p, s.Lens),
                 [ExposureSettingsJson.Key] = (t, p) => ExposureSettingsJson.Read(reader, t, p, s.Exposure),
                 [MotionBlurSettingsJson.Key] = (t, p) => MotionBlurSettingsJson.Read(reader, t, p, s.MotionBlur),
+                [HdrSettingsJson.Key] = (t, p) => HdrSettingsJson.Read(reader, t, p, s.Hdr),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),
