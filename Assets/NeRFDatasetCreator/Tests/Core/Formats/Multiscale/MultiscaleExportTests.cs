@@ -10,11 +10,12 @@ namespace NerfDatasetCreator.Tests
 {
     /// <summary>
     /// convert --to multiscale read back the way its readers read it:
-    /// gsplat examples/datasets/colmap.py at nerfstudio-project/gsplat 0714fc6 (Parser: K[:2, :] /= factor, imsize
-    /// cam.width // factor, images_&lt;factor&gt; paired with images/ by sorted position via dict(zip(colmap_files, image_files)),
-    /// then K rescaled by the actual image size), and google/mipnerf internal/datasets.py at ee5cbb8 (Multicam:
-    /// metadata.json[split], rays through (x + ½, y + ½, 1)·pix2cam[:3, :3]ᵀ·c2w[:3, :3]ᵀ), with Tri-MipRF's
-    /// dataset/parsers/nerf_synthetic_multiscale.py at 2836b8b (entries grouped by index % 4, K = inv(pix2cam)).
+    /// gsplat examples/datasets/colmap.py at nerfstudio-project/gsplat 90d7b4b (Parser: K[:2, :] /= factor at line 169, imsize
+    /// cam.width // factor at 176, images_&lt;factor&gt; paired with images/ by sorted position via dict(zip(colmap_files,
+    /// image_files)) at 232–239, then K rescaled by the actual image size at 355–358), and google/mipnerf
+    /// internal/datasets.py at 84c969e (Multicam: metadata.json[split] at 220, rays through (x + ½, y + ½, 1)·pix2cam[:3, :3]ᵀ
+    /// at 266–272), with Tri-MipRF's dataset/parsers/nerf_synthetic_multiscale.py at 5b54a27 (entries grouped by index % 4
+    /// at 56, K = inv(pix2cam) at 36–40). Sources: Documentation~/maintainers/layouts-multiscale-hdr.md.
     /// Expected pixels are computed here in doubles from the source images, independently of PremultipliedBox.
     /// </summary>
     public class MultiscaleExportTests
