@@ -91,6 +91,9 @@ namespace NerfDatasetCreator
                         s.Seed = 11;
                     };
                     break;
+                case DemoPreset.Hdr:
+                    options.Configure = s => s.Hdr.On = true;
+                    break;
                 case DemoPreset.Blur:
                     options.MotionBlur = new MotionBlurSettings { Enabled = true, Camera = ShutterCameraMotion.Shake, ShakeDistance = 0.1, ShakeDegrees = 1, SubFrames = BlurSubFrames };
                     break;

@@ -15,12 +15,13 @@ namespace NerfDatasetCreator
         Lens,
         Exposure,
         Blur,
+        Hdr,
     }
 
     /// <summary>The presets' command-line names, in <see cref="DemoPreset"/> order.</summary>
     public static class DemoPresets
     {
-        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur" };
+        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur", "hdr" };
 
         public static string Name(DemoPreset preset) => Names[(int)preset];
 

@@ -16,7 +16,7 @@ namespace NerfDatasetCreator
     public static class DemoCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("demo",
-            "demo <dir> [--preset static|dynamic|labels|lens|exposure|blur] [--views N] [--size PX] [--renders-for <dataset>]",
+            "demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|hdr] [--views N] [--size PX] [--renders-for <dataset>]",
             "write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)",
             Parse, Run);
 
@@ -125,6 +125,7 @@ namespace NerfDatasetCreator
                 : preset == DemoPreset.Lens ? ", an OpenCV lens (k1 −0.12, k2 0.02) at a 55° field of view"
                 : preset == DemoPreset.Exposure ? ", random exposure with the clean images beside"
                 : preset == DemoPreset.Blur ? ", camera-shake motion blur with the sharp images beside"
+                : preset == DemoPreset.Hdr ? ", linear HDR colour (r_<i>_hdr.exr) beside each PNG"
                 : "";
             return "RGBA, depth, normals, masks" + extra + ", points3d.ply, the geometry pack";
         }
