@@ -45,6 +45,8 @@ namespace NerfDatasetCreator
         public const string Lens = LensSettings.Key;
         /// <summary>The Motion blur section (Editor MotionBlurSection) shows every "motionBlur.…" problem.</summary>
         public const string MotionBlur = MotionBlurSettingsJson.Key;
+        /// <summary>The HDR section (Editor HdrSection) shows every "hdr.…" problem.</summary>
+        public const string Hdr = HdrSettingsJson.Key;
 
         /// <summary>"splits.train.count" and the like.</summary>
         public static string SplitField(DatasetSplit split, string key) => "splits." + DatasetSplits.Name(split) + "." + key;
@@ -62,7 +64,7 @@ namespace NerfDatasetCreator
                 Supersampling, Background, Seed, Name, OutputFolder, Overwrite, Loaders,
                 Normalisation, NormalisedTargetRadius, PointCloudPoints, PointCloudRadius,
                 TimeModeField, TimeSourcesField, TimeStart, TimeEnd, TimeSteps, TimeFps,
-                Exposure, Lens, MotionBlur,
+                Exposure, Lens, MotionBlur, Hdr,
             };
             foreach (var split in DatasetSplits.All)
             {
@@ -112,7 +114,7 @@ namespace NerfDatasetCreator
             if (Covers(Name, field) || Covers(OutputFolder, field) || Covers(Overwrite, field) || Covers(Loaders, field))
                 return WindowStep.OutputFolder;
             if (Covers(Normalisation, field) || Covers(NormalisedTargetRadius, field) || Covers(PointCloudPoints, field) || Covers(PointCloudRadius, field)
-                || Covers(Exposure, field) || Covers(Lens, field) || Covers(MotionBlur, field))
+                || Covers(Exposure, field) || Covers(Lens, field) || Covers(MotionBlur, field) || Covers(Hdr, field))
                 return WindowStep.Outputs;
             if (Covers(Labels, field)) return WindowStep.Outputs;
             foreach (var split in DatasetSplits.All)
