@@ -114,8 +114,8 @@ namespace NerfDatasetCreator.Tests
         [TestCase(new[] { "convert", "d" }, "convert needs --to nerfstudio|colmap|ngp")]
         [TestCase(new[] { "convert", "--to", "ngp" }, "convert needs exactly one dataset folder")]
         [TestCase(new[] { "convert", "a", "b", "--to", "ngp" }, "convert needs exactly one dataset folder")]
-        [TestCase(new[] { "convert", "d", "--to", "splat" }, "--to = splat: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp). Did you mean \"gsplat\"?")]
-        [TestCase(new[] { "convert", "d", "--to", "3dg" }, "--to = 3dg: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp). Did you mean \"3dgs\"?")]
+        [TestCase(new[] { "convert", "d", "--to", "splat" }, "--to = splat: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, multiscale (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp). Did you mean \"gsplat\"?")]
+        [TestCase(new[] { "convert", "d", "--to", "3dg" }, "--to = 3dg: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, multiscale (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp). Did you mean \"3dgs\"?")]
         [TestCase(new[] { "chek", "d" }, "unknown command 'chek'. Did you mean \"check\"?")]
         [TestCase(new[] { "--version", "check" }, "--version takes nothing after it ('check').")]
         [TestCase(new[] { "convert", "d", "--to", "ngp", "--out=" }, "--out is empty")]
@@ -136,7 +136,7 @@ namespace NerfDatasetCreator.Tests
             "  clean <dir> [--dry-run]                                 finish or roll back interrupted runs, remove their leftover folders\n" +
             "  check <dir> [--split S] [--json FILE] [--max-views N]   decode the images and check that alpha, masks, depth, normals, poses and point cloud agree\n" +
             "  evaluate <dir> --renders <dir> [--split test] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]  score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html\n" +
-            "  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur] [--views N] [--size PX] [--renders-for <dataset>]  write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)\n" +
+            "  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|hdr] [--views N] [--size PX] [--renders-for <dataset>]  write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error\n" +
             "nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version.";
 
