@@ -141,21 +141,30 @@ namespace NerfDatasetCreator.Tool.Tests
                         case "dycheck":
                             yield return Promise("splits/train.json", File.Exists(Path.Combine(output, DyCheck.SplitsFolder, "train.json")));
                             yield return Promise("depth/1x", Directory.Exists(Path.Combine(output, DyCheck.DepthFolder, "1x")));
+                            break;
                         case "llff":
                             yield return Promise(Llff.PosesBoundsFileName, File.Exists(Path.Combine(output, Llff.PosesBoundsFileName)));
                             yield return Promise("images/0000.png", File.Exists(Path.Combine(output, Llff.ImagesFolder, "0000.png")));
+                            break;
                         case "neus":
                             yield return Promise(Neus.CamerasFileName, File.Exists(Path.Combine(output, Neus.CamerasFileName)));
                             yield return Promise("mask/000.png", File.Exists(Path.Combine(output, Neus.MaskFolder, "000.png")));
+                            break;
                         case "dynerf":
                             yield return Promise(Llff.PosesBoundsFileName, File.Exists(Path.Combine(output, Llff.PosesBoundsFileName)));
                             yield return Promise("cam00/images/0000.png", File.Exists(Path.Combine(output, "cam00", "images", "0000.png")));
+                            break;
                         case "replica":
                             yield return Promise(Replica.TrajectoryFileName, File.Exists(Path.Combine(output, Replica.TrajectoryFileName)));
                             yield return Promise("results/" + Replica.ColourName(0), File.Exists(Path.Combine(output, Replica.ResultsFolder, Replica.ColourName(0))));
+                            break;
                         case "tum":
                             yield return Promise(TumRgbd.GroundTruth, File.Exists(Path.Combine(output, TumRgbd.GroundTruth)));
                             yield return Promise(TumRgbd.RgbList, File.Exists(Path.Combine(output, TumRgbd.RgbList)));
+                            break;
+                        case "multiscale":
+                            yield return Promise("colmap/images_4", Directory.Exists(Path.Combine(output, MultiscaleExport.ColmapFolder, "images_4")));
+                            yield return Promise("mipnerf/metadata.json", File.Exists(Path.Combine(output, MipNerfMultiscale.FolderName, MipNerfMultiscale.MetadataFileName)));
                             break;
                         default:
                             yield return Promise("a known export target (teach this test what it writes)", false);

@@ -80,6 +80,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(lines[6], Does.StartWith("  check <dir> [--split S] [--json FILE] [--max-views N]"));
             Assert.That(lines[7], Does.StartWith("  evaluate <dir> --renders <dir> [--split test]"));
             Assert.That(lines[8], Does.StartWith("  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular]"));
+            Assert.That(lines[8], Does.StartWith("  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|hdr]"));
             Assert.That(lines[9], Does.StartWith("exit codes:"));
             Assert.That(lines[10], Is.EqualTo("nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version."));
             Assert.That(lines, Has.Length.EqualTo(11));

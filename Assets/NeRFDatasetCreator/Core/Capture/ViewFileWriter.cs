@@ -108,6 +108,8 @@ namespace NerfDatasetCreator
                 if (wantsMask) MaskEncoding.Encode(colour, mask);
             }
             else StraightAlpha.Resolve(colour, rgba, _background, mask);
+            // Linear HDR colour (settings hdr): the same pair, before the clip and before exposure (HdrColour).
+            if (view.Writes(DatasetFileKind.HdrExr)) Save(view, DatasetFileKind.HdrExr, Exr(HdrColour.Resolve(colour, _background), width, height, 4));
             if (_exposure != null && _exposure.Applies(view.Split))
             {
                 // The last stage before encoding (exposure.md): the clean image first, then the same pixels scaled in linear light.

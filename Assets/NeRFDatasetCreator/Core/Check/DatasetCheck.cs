@@ -57,6 +57,7 @@ namespace NerfDatasetCreator
                 new StraightAlphaCheck(),
                 InstanceMaskCheck.For(root, views),
                 new ExposureCheck(root),
+                new HdrCheck(root),
                 new MotionBlurCheck(),
                 geometryPack,
             };

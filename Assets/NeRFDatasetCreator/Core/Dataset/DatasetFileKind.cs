@@ -23,5 +23,7 @@ namespace NerfDatasetCreator
         CleanColor,
         /// <summary>Motion blur: the sharp RGBA image at the mid pose beside the blurred <c>r_7.png</c>: <c>r_7_sharp_0000.png</c>.</summary>
         SharpPng,
+        /// <summary>Float32 RGBA EXR, linear colour with straight alpha before the clip to [0, 1] (settings <c>hdr</c>): <c>r_7_hdr.exr</c>.</summary>
+        HdrExr,
     }
 }

@@ -57,6 +57,7 @@ namespace NerfDatasetCreator
                 case DatasetFileKind.SemanticPng: return "_semantic_0000.png";
                 case DatasetFileKind.CleanColor: return "_clean.png";
                 case DatasetFileKind.SharpPng: return "_sharp_0000.png";
+                case DatasetFileKind.HdrExr: return "_hdr.exr";
                 default: throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a dataset file kind");
             }
         }
@@ -87,6 +88,7 @@ namespace NerfDatasetCreator
             var kinds = (List<DatasetFileKind>)FileKinds(settings.Split(split), settings.Labels);
             if (ExposurePlan.Of(settings)?.WritesClean(split) == true) kinds.Add(DatasetFileKind.CleanColor);
             if (ShutterPlanning.IsOn(settings)) kinds.Add(DatasetFileKind.SharpPng);
+            if (settings.Hdr != null && settings.Hdr.Applies(split)) kinds.Add(DatasetFileKind.HdrExr);
             return kinds;
         }
     }

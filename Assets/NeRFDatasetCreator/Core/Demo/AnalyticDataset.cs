@@ -172,8 +172,8 @@ namespace NerfDatasetCreator
             var labels = options.Labels ? LabelTable.Build(settings.Labels, LabelObjects(options.Look)) : null;
             // The capture's own per-view stages (Core's ViewPipeline). Without ThroughWideRender a lens's distorted rays are
             // traced here, per pixel: an independent oracle of the lens stage, whose frames are then at the output frame.
-            var pipeline = options.ThroughWideRender ? new ViewPipeline(run.Plan, session, null, labels)
-                : new ViewPipeline(new ViewFileWriter(run.Plan, session, null) { Labels = labels }, null);
+            var pipeline = options.ThroughWideRender ? new ViewPipeline(run.Plan, session, ExrWriter.Encode, labels)
+                : new ViewPipeline(new ViewFileWriter(run.Plan, session, ExrWriter.Encode) { Labels = labels }, null);
             var lens = settings.Lens.ToDistortion();
             var wide = pipeline.WideRender;
             var scenes = new Dictionary<double, AnalyticScene>();

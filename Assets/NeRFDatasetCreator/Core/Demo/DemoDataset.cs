@@ -113,6 +113,9 @@ namespace NerfDatasetCreator
                     options.Monocular = true;
                     options.Configure = s => s.Time.EndSeconds = (perStep - 1) / MonocularFrameRate;
                     break;
+                case DemoPreset.Hdr:
+                    options.Configure = s => s.Hdr.On = true;
+                    break;
                 case DemoPreset.Blur:
                     options.MotionBlur = new MotionBlurSettings { Enabled = true, Camera = ShutterCameraMotion.Shake, ShakeDistance = 0.1, ShakeDegrees = 1, SubFrames = BlurSubFrames };
                     break;

@@ -117,6 +117,7 @@ namespace NerfDatasetCreator
                     case ExportTarget.Neus: result = NeusExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.Replica: result = ReplicaExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.Tum: result = TumRgbdExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.Multiscale: result = MultiscaleExport.Write(scene, output, points, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 EvalProtocolCarry.Copy(scene.RootDirectory, output, staged, warnings);
@@ -149,6 +150,7 @@ namespace NerfDatasetCreator
                 case ExportTarget.Neus: return Path.GetFullPath(Path.Combine(root, Neus.FolderName));
                 case ExportTarget.Replica: return Path.GetFullPath(Path.Combine(root, Replica.FolderName));
                 case ExportTarget.Tum: return Path.GetFullPath(Path.Combine(root, TumRgbd.FolderName));
+                case ExportTarget.Multiscale: return Path.GetFullPath(Path.Combine(root, MultiscaleExport.FolderName));
                 default: return Path.GetFullPath(root);
             }
         }
@@ -221,8 +223,9 @@ namespace NerfDatasetCreator
             return references.Place(staged);
         }
 
+        /// <param name="writeImage">Writes frame i's image to images/&lt;name&gt; (multiscale re-encodes it); null: copy the dataset's file.</param>
         internal static ConversionResult ToColmap(ExportScene scene, string outDir, IReadOnlyList<CloudPoint> points, List<ValidationProblem> warnings, bool depths, ColmapOptions options, StagedOutput staged,
-            ExportBackground background = null)
+            ExportBackground background = null, Action<int, string> writeImage = null)
         {
             outDir = Path.GetFullPath(outDir);
             var sparse = Path.Combine(outDir, "sparse", "0");
@@ -285,7 +288,10 @@ namespace NerfDatasetCreator
             var model = ColmapModelBuilder.Build(scene, names, points, surface, options, warnings);
 
             if (composites != null) BackgroundImages.Write(composites, background, outDir, staged, warnings);
-            else foreach (var (from, to) in copies) staged.Copy(from, to);
+            else
+                for (var i = 0; i < copies.Count; i++)
+                    if (writeImage != null) writeImage(i, copies[i].to);
+                    else staged.Copy(copies[i].from, copies[i].to);
             if (options.Binary)
             {
                 staged.WriteNew(cameras, s => ColmapBinaryWriter.WriteCameras(s, scene.Intrinsics, scene.Lens));

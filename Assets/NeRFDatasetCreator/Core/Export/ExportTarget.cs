@@ -22,6 +22,7 @@ namespace NerfDatasetCreator
 
         /// <summary>DyCheck's iPhone layout from a dynamic capture, with exact depth (<see cref="DyCheckExport"/>).</summary>
         Dycheck,
+
         /// <summary>LLFF's poses_bounds.npy and images/ (<see cref="LlffExport"/>).</summary>
         Llff,
 
@@ -30,24 +31,24 @@ namespace NerfDatasetCreator
 
         /// <summary>NeuS / IDR: cameras_sphere.npz, image/, mask/ (<see cref="NeusExport"/>).</summary>
         Neus,
+
         /// <summary>A Replica RGB-D sequence for SplaTAM, MonoGS and Gaussian-SLAM (<see cref="ReplicaExport"/>).</summary>
         Replica,
 
         /// <summary>A TUM RGB-D sequence for SplaTAM, MonoGS and Gaussian-SLAM (<see cref="TumRgbdExport"/>).</summary>
         Tum,
+
+        /// <summary>gsplat's images_2/4/8 beside a COLMAP model, and mip-NeRF's multi-scale Blender layout (<see cref="MultiscaleExport"/>).</summary>
+        Multiscale,
     }
 
     public static class ExportTargets
     {
-        public static readonly string[] Names = { "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping",
-            "nerfies",
-            "dycheck",
-            "llff",
-            "dynerf",
-            "neus",
+        public static readonly string[] Names =
+        {
+            "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping", "nerfies", "dycheck", "llff", "dynerf", "neus",
+            "replica", "tum", "multiscale",
         };
-            "replica",
-            "tum" };
 
         /// <summary>
         /// The config's <c>loaders</c> names (<see cref="TargetLoaderNames"/>) that name an export too, so one

@@ -14,7 +14,7 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class OwnDataset
     {
-        static readonly Regex ViewFile = new Regex(@"^r_\d+(\.png|_depth_0000\.png|_depth_0000\.exr|_normal_0000\.png|_normal_0000\.exr|_mask_0000\.png|_instance_0000\.png|_semantic_0000\.png|_clean\.png|_sharp_0000\.png)$", RegexOptions.CultureInvariant);
+        static readonly Regex ViewFile = new Regex(@"^r_\d+(\.png|_depth_0000\.png|_depth_0000\.exr|_normal_0000\.png|_normal_0000\.exr|_mask_0000\.png|_instance_0000\.png|_semantic_0000\.png|_clean\.png|_sharp_0000\.png|_hdr\.exr)$", RegexOptions.CultureInvariant);
         static readonly string[] RootFiles = new[]
         {
             DatasetLayout.ConfigFileName, DatasetLayout.RigPreviewFileName, RigPreviewPicture.FileName, TargetPointCloud.FileName, ShardManifest.FileName,

@@ -142,6 +142,9 @@ namespace NerfDatasetCreator
         /// <summary>Per-view exposure and white balance of the colour images (off by default): <see cref="ExposureSettings"/>.</summary>
         public ExposureSettings Exposure = new ExposureSettings();
 
+        /// <summary>Linear HDR colour beside the PNGs, <c>r_&lt;i&gt;_hdr.exr</c> (off by default): <see cref="HdrSettings"/>.</summary>
+        public HdrSettings Hdr = new HdrSettings();
+
         /// <summary>Motion blur and rolling shutter: each view exposed over a shutter interval (off by default; <see cref="MotionBlurSettings"/>).</summary>
         public MotionBlurSettings MotionBlur = new MotionBlurSettings();
 
@@ -172,6 +175,7 @@ namespace NerfDatasetCreator
             copy.Labels = Labels?.Clone();
             copy.Lens = Lens?.Clone();
             copy.Exposure = Exposure?.Clone();
+            copy.Hdr = Hdr?.Clone();
             copy.MotionBlur = MotionBlur?.Clone();
             copy.SparseViews = (int[])SparseViews?.Clone();
             return copy;

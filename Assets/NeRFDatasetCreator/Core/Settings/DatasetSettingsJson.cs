@@ -84,6 +84,7 @@ namespace NerfDatasetCreator
             ExposureSettingsJson.Write(w, s.Exposure);
             MotionBlurSettingsJson.Write(w, s.MotionBlur);
             SparseViewsSettings.Write(w, s);
+            HdrSettingsJson.Write(w, s.Hdr);
             w.WritePropertyName("splits");
             w.WriteStartObject();
             foreach (var split in DatasetSplits.All)
@@ -286,6 +287,7 @@ namespace NerfDatasetCreator
                 [ExposureSettingsJson.Key] = (t, p) => ExposureSettingsJson.Read(reader, t, p, s.Exposure),
                 [MotionBlurSettingsJson.Key] = (t, p) => MotionBlurSettingsJson.Read(reader, t, p, s.MotionBlur),
                 [SparseViewsSettings.Key] = (t, p) => s.SparseViews = SparseViewsSettings.Read(t, p, reader.Int, reader.Error),
+                [HdrSettingsJson.Key] = (t, p) => HdrSettingsJson.Read(reader, t, p, s.Hdr),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),

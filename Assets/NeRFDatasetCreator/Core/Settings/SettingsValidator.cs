@@ -94,6 +94,7 @@ namespace NerfDatasetCreator
             problems.AddRange(LabelSettingsValidator.Validate(settings));
             problems.AddRange(LensSettingsValidator.Validate(settings));
             problems.AddRange(ExposureSettingsValidator.Validate(settings));
+            problems.AddRange(HdrSettingsValidator.Validate(settings));
             problems.AddRange(MotionBlurSettingsValidator.Validate(settings));
             problems.AddRange(SparseViewsSettings.Validate(settings));
 

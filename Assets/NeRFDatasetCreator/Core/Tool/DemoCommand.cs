@@ -16,7 +16,7 @@ namespace NerfDatasetCreator
     public static class DemoCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("demo",
-            "demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular] [--views N] [--size PX] [--renders-for <dataset>]",
+            "demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular|hdr] [--views N] [--size PX] [--renders-for <dataset>]",
             "write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)",
             Parse, Run);
 
@@ -126,6 +126,7 @@ namespace NerfDatasetCreator
                 : preset == DemoPreset.Exposure ? ", random exposure with the clean images beside"
                 : preset == DemoPreset.Blur ? ", camera-shake motion blur with the sharp images beside"
                 : preset == DemoPreset.Monocular ? ", one camera moving around the target over time, " + ValidationProblem.Format(DemoDataset.MonocularFrameRate) + " views a second"
+                : preset == DemoPreset.Hdr ? ", linear HDR colour (r_<i>_hdr.exr) beside each PNG"
                 : "";
             return "RGBA, depth, normals, masks" + extra + ", points3d.ply, the geometry pack";
         }
@@ -141,7 +142,8 @@ namespace NerfDatasetCreator
             if (preset == DemoPreset.Monocular) return new[] { ExportTarget.Replica, ExportTarget.Tum };
             var targets = new List<ExportTarget> { ExportTarget.Nerfstudio, ExportTarget.Colmap, ExportTarget.Ngp };
             if (preset == DemoPreset.Labels) targets.Add(ExportTarget.GaussianGrouping);
-            if (preset == DemoPreset.Static) targets.AddRange(new[] { ExportTarget.Llff, ExportTarget.Neus });
+            // LLFF, NeuS and multiscale hold no lens (mip-NeRF's metadata is a pinhole): the plain static preset only.
+            if (preset == DemoPreset.Static) targets.AddRange(new[] { ExportTarget.Llff, ExportTarget.Neus, ExportTarget.Multiscale });
             return targets;
         }
 
@@ -188,6 +190,7 @@ namespace NerfDatasetCreator
                 case ExportTarget.Dynerf: return "python train.py -s " + Quote(output) + " --configs arguments/dynerf/default.py   (4DGaussians)";
                 case ExportTarget.Replica:
                 case ExportTarget.Tum: return "python slam.py --config " + Quote(output + "/" + Replica.MonoGsConfigFileName) + "   (MonoGS, from its folder; convert prints SplaTAM's and Gaussian-SLAM's)";
+                case ExportTarget.Multiscale: return "python simple_trainer.py default --data_dir " + Quote(output + "/" + MultiscaleExport.ColmapFolder) + " --data_factor 4   (gsplat; mip-NeRF layout in " + Quote(output + "/" + MipNerfMultiscale.FolderName) + ")";
                 default: return "python train.py   (Dynamic 3D Gaussians: copy " + Quote(output) + " to its data/ folder first, as convert says)";
             }
         }

@@ -45,6 +45,8 @@ namespace NerfDatasetCreator
         public const string Lens = LensSettings.Key;
         /// <summary>The Motion blur section (Editor MotionBlurSection) shows every "motionBlur.…" problem.</summary>
         public const string MotionBlur = MotionBlurSettingsJson.Key;
+        /// <summary>The HDR section (Editor HdrSection) shows every "hdr.…" problem.</summary>
+        public const string Hdr = HdrSettingsJson.Key;
 
         /// <summary>Step 5's Sparse-view splits field (<see cref="SparseViewsChoices"/>).</summary>
         public const string SparseViews = SparseViewsSettings.Key;
@@ -65,7 +67,7 @@ namespace NerfDatasetCreator
                 Supersampling, Background, Seed, Name, OutputFolder, Overwrite, Loaders,
                 Normalisation, NormalisedTargetRadius, PointCloudPoints, PointCloudRadius,
                 TimeModeField, TimeSourcesField, TimeStart, TimeEnd, TimeSteps, TimeFps,
-                Exposure, Lens, MotionBlur, SparseViews,
+                Exposure, Lens, MotionBlur, SparseViews, Hdr,
             };
             foreach (var split in DatasetSplits.All)
             {
@@ -115,7 +117,7 @@ namespace NerfDatasetCreator
             if (Covers(Name, field) || Covers(OutputFolder, field) || Covers(Overwrite, field) || Covers(Loaders, field))
                 return WindowStep.OutputFolder;
             if (Covers(Normalisation, field) || Covers(NormalisedTargetRadius, field) || Covers(PointCloudPoints, field) || Covers(PointCloudRadius, field)
-                || Covers(Exposure, field) || Covers(Lens, field) || Covers(MotionBlur, field) || Covers(SparseViews, field))
+                || Covers(Exposure, field) || Covers(Lens, field) || Covers(MotionBlur, field) || Covers(SparseViews, field) || Covers(Hdr, field))
                 return WindowStep.Outputs;
             if (Covers(Labels, field)) return WindowStep.Outputs;
             foreach (var split in DatasetSplits.All)

@@ -33,6 +33,7 @@ namespace NerfDatasetCreator.Editor
             }
             LabelsSection.Draw(c);
             ExposureSection.Draw(c);
+            HdrSection.Draw(c);
             LensSection.Draw(c);
             MotionBlurSection.Draw(c);
             SparseViewsSection.Draw(c);

@@ -110,6 +110,7 @@ namespace NerfDatasetCreator
             }
             LabelFrameKeys.WriteFrameFiles(this, v);
             ExposureKeys.WriteFrameFiles(this, v);
+            HdrKeys.WriteFrameFiles(this, v);
             MotionBlurKeys.WriteFrameFiles(this, v);
             Raw("\n        }");
         }

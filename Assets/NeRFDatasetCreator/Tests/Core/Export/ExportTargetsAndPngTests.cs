@@ -28,6 +28,7 @@ namespace NerfDatasetCreator.Tests
             Assert.That(problem.Fix, Is.EqualTo("Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, nerfies, dycheck (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp)."));
             Assert.That(problem.Fix, Is.EqualTo("Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, llff, dynerf, neus (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp)."));
             Assert.That(problem.Fix, Is.EqualTo("Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, replica, tum (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp)."));
+            Assert.That(problem.Fix, Is.EqualTo("Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, multiscale (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp)."));
         }
 
         [TestCase("3dsg", "3dgs")]

@@ -120,6 +120,8 @@ namespace NerfDatasetCreator.Tests
         [TestCase(new[] { "convert", "d", "--to", "3dg" }, "--to = 3dg: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, llff, dynerf, neus (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp). Did you mean \"3dgs\"?")]
         [TestCase(new[] { "convert", "d", "--to", "splat" }, "--to = splat: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, replica, tum (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp). Did you mean \"gsplat\"?")]
         [TestCase(new[] { "convert", "d", "--to", "3dg" }, "--to = 3dg: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, replica, tum (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp). Did you mean \"3dgs\"?")]
+        [TestCase(new[] { "convert", "d", "--to", "splat" }, "--to = splat: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, multiscale (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp). Did you mean \"gsplat\"?")]
+        [TestCase(new[] { "convert", "d", "--to", "3dg" }, "--to = 3dg: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, multiscale (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp). Did you mean \"3dgs\"?")]
         [TestCase(new[] { "chek", "d" }, "unknown command 'chek'. Did you mean \"check\"?")]
         [TestCase(new[] { "--version", "check" }, "--version takes nothing after it ('check').")]
         [TestCase(new[] { "convert", "d", "--to", "ngp", "--out=" }, "--out is empty")]
@@ -149,6 +151,7 @@ namespace NerfDatasetCreator.Tests
             "  evaluate <dir> --renders <dir> [--split test|sparse_<n>] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]  score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html\n" +
             "  splits <dir> [--views 8[,3,...]]                        write sparse-view split files (splits/sparse_<n>.json: nerf_synthetic's paper lists, else farthest-point views) for evaluate --split\n" +
             "  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur] [--views N] [--size PX] [--renders-for <dataset>]  write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)\n" +
+            "  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|hdr] [--views N] [--size PX] [--renders-for <dataset>]  write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error\n" +
             "nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version.";
 

@@ -83,6 +83,11 @@ namespace NerfDatasetCreator.Tests
                 s.MotionBlur.Enabled = true;
                 s.MotionBlur.Camera = ShutterCameraMotion.Still;
             }, "motionBlur.camera", WindowStep.Outputs);
+            yield return Case("hdr without splits", s =>
+            {
+                s.Hdr.On = true;
+                s.Hdr.Train = s.Hdr.Val = s.Hdr.Test = false;
+            }, "hdr.splits", WindowStep.Outputs);
             yield return Case("halo elevation", s =>
             {
                 s.Train.Formation.Kind = FormationKind.Halo;

@@ -7,7 +7,7 @@ using UnityEngine.TestTools;
 namespace NerfDatasetCreator.Editor.Tests
 {
     /// <summary>
-    /// Step 5's sections for the optional outputs (lens, motion blur, exposure list values, sparse-view splits) draw with every part they
+    /// Step 5's sections for the optional outputs (lens, motion blur, exposure list values, sparse-view splits, hdr) draw with every part they
     /// have open, and drawing them is not an edit: the stored settings are the same afterwards (a section that
     /// "corrected" a value while drawing would make an undo step of its own).
     /// </summary>
@@ -26,6 +26,7 @@ namespace NerfDatasetCreator.Editor.Tests
             opencv.Exposure.Mode = ExposureMode.List;
             opencv.Exposure.Values = new List<ViewExposure> { new ViewExposure(-1, 1, 1, 1), new ViewExposure(1, 1.3, 1, 0.75), new ViewExposure(20, 1, 1, 1) };
             opencv.SparseViews = new[] { 3, 8 }; // the Sparse-view splits field shows "3, 8"
+            opencv.Hdr.On = true;
             yield return opencv;
 
             var fisheye = new DatasetSettings { Name = "sections" };
@@ -35,6 +36,8 @@ namespace NerfDatasetCreator.Editor.Tests
             fisheye.MotionBlur.Readout = 0.5;
             fisheye.Exposure.Mode = ExposureMode.List; // empty: the list's own error below the rows
             fisheye.SparseViews = new[] { 100 }; // as many as the train views: its error under the field
+            fisheye.Hdr.On = true;
+            fisheye.Hdr.Train = fisheye.Hdr.Val = fisheye.Hdr.Test = false; // hdr.splits' error under the section
             yield return fisheye;
         }
 
