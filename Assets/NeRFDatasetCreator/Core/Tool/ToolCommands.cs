@@ -23,6 +23,7 @@ namespace NerfDatasetCreator
             CleanCommand.Command,
             CheckCommand.Command,
             EvaluateCommand.Command,
+            PlaceSplatCommand.Command,
             DemoCommand.Command,
         };
 
