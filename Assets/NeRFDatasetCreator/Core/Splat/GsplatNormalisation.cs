@@ -35,12 +35,13 @@ namespace NerfDatasetCreator
             var scored = candidates.Select(c => (c.Transform, c.Signs, Score: Match(c.Transform, model.Points, centres)))
                 .OrderBy(c => c.Score.Median).ThenBy(c => c.Score.Mean).ToList();
             var best = scored[0];
+            var next = scored.Count > 1 ? scored[1] : scored[0];
             var size = Size(model.Points.Select(best.Transform.MultiplyPoint).ToList());
             notes.Add("gsplat normalised the world (normalize_world_space " + (assumedDefault ? "not in cfg.yml: gsplat's default, on" : "on") + "): recomputed from " + model.Source +
                       ", data_dir " + how + ".");
-            var tie = Math.Abs(scored[1].Score.Median - best.Score.Median) <= 1e-6 * size && Math.Abs(scored[1].Score.Mean - best.Score.Mean) <= 1e-6 * size;
+            var tie = Math.Abs(next.Score.Median - best.Score.Median) <= 1e-6 * size && Math.Abs(next.Score.Mean - best.Score.Mean) <= 1e-6 * size;
             notes.Add("the principal axes' signs are numpy's choice: chose " + best.Signs + ", whose transformed COLMAP points lie a median " + Show(best.Score.Median) +
-                      " (mean " + Show(best.Score.Mean) + ") from the PLY's nearest centres; the next best choice " + scored[1].Signs + ": median " + Show(scored[1].Score.Median) + ", mean " + Show(scored[1].Score.Mean) + "." +
+                      " (mean " + Show(best.Score.Mean) + ") from the PLY's nearest centres; the next best choice " + next.Signs + ": median " + Show(next.Score.Median) + ", mean " + Show(next.Score.Mean) + "." +
                       (tie ? " The two fit equally (the points look the same after a half turn), so either places the splat's centres alike." : ""));
             return new TrainedModel(TrainedModel.Gsplat, folder, ply, best.Transform,
                 "gsplat's normalised world (recomputed exactly as its COLMAP parser does, principal-axis signs " + best.Signs + ")", notes);
@@ -65,7 +66,10 @@ namespace NerfDatasetCreator
                 "Run place-splat from the folder simple_trainer.py ran in, or train again with --no-normalize-world-space.");
         }
 
-        /// <summary>The four right-handed sign choices of the principal axes, each the whole transform T3·T2·T1.</summary>
+        /// <summary>
+        /// The four right-handed sign choices of the principal axes, each the whole transform T3·T2·T1; choices that end
+        /// in the same transform (the upside-down turn undoes a y and z flip) are one candidate, named by both.
+        /// </summary>
         public static List<(Matrix4x4d Transform, string Signs)> Candidates(ColmapSparseModel model)
         {
             var c2w = model.Poses.Select(CameraToWorldOpenCv).ToList();
@@ -85,9 +89,21 @@ namespace NerfDatasetCreator
                 var transform = t2 * t1;
                 var z = p1.Select(p => t2.MultiplyPoint(p).Z).ToList();
                 if (Median(z) > z.Average()) transform = Matrix4x4d.FromRowMajor(1, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1) * transform; // T3, colmap.py 290–302
-                result.Add((transform, "(" + Sign(signs.Item1) + ", " + Sign(signs.Item2) + ", " + Sign(signs.Item3) + ")"));
+                var name = "(" + Sign(signs.Item1) + ", " + Sign(signs.Item2) + ", " + Sign(signs.Item3) + ")";
+                // Two sign choices that differ in y and z end the same after the upside-down turn: one candidate.
+                var same = result.FindIndex(r => Same(r.Item1, transform));
+                if (same >= 0) result[same] = (result[same].Item1, result[same].Item2 + " = " + name);
+                else result.Add((transform, name));
             }
             return result;
+        }
+
+        static bool Same(Matrix4x4d a, Matrix4x4d b)
+        {
+            var scale = Math.Abs(a.Determinant3x3) + 1e-300;
+            for (var i = 0; i < 12; i++)
+                if (Math.Abs(a[i / 4, i % 4] - b[i / 4, i % 4]) > 1e-9 * Math.Pow(scale, 1.0 / 3) * (1 + Math.Abs(a[i / 4, 3]))) return false;
+            return true;
         }
 
         /// <summary>camtoworlds = inv(w2c) (colmap.py line 190): OpenCV axes, as gsplat keeps them.</summary>
