@@ -23,8 +23,8 @@ namespace NerfDatasetCreator
             CleanCommand.Command,
             CheckCommand.Command,
             EvaluateCommand.Command,
-            PlaceSplatCommand.Command,
             DemoCommand.Command,
+            PlaceSplatCommand.Command,
         };
 
         /// <summary>The last line of every usage text.</summary>
