@@ -58,7 +58,6 @@ namespace NerfDatasetCreator
         /// <summary>
         /// Reads the trained output in <paramref name="model"/>. <paramref name="trainer"/> (null: detect) must agree with
         /// the folder; <paramref name="ply"/> replaces the PLY found there (nerfstudio's <c>ns-export --output-dir</c>).
-        /// <paramref name="datasetDir"/> is where gsplat's normalisation is recomputed from when the run's data folder is gone.
         /// Refusals are <see cref="InvalidParameterException"/>s naming the option and what was looked for.
         /// </summary>
         public static TrainedModel Find(string model, string trainer = null, string ply = null)
