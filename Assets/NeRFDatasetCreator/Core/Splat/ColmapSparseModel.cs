@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
-using System.Text;
 
 namespace NerfDatasetCreator
 {
@@ -99,8 +98,7 @@ namespace NerfDatasetCreator
                     r.ReadUInt32();
                     while (r.ReadByte() != 0) { }
                     var points2D = r.ReadUInt64();
-                    if (points2D > (ulong)(r.BaseStream.Length / 24)) throw new FormatException(path + " declares more 2D points than it holds.");
-                    r.BaseStream.Seek((long)points2D * 24, SeekOrigin.Current);
+                    Skip(r, points2D, 24, path);
                     poses.Add(new ColmapPose(new Quaterniond(qx, qy, qz, qw), new Vector3d(tx, ty, tz)));
                 }
             }
@@ -120,11 +118,24 @@ namespace NerfDatasetCreator
                     r.ReadBytes(3);
                     r.ReadDouble();
                     var track = r.ReadUInt64();
-                    if (track > (ulong)(r.BaseStream.Length / 8)) throw new FormatException(path + " declares a longer track than it holds.");
-                    r.BaseStream.Seek((long)track * 8, SeekOrigin.Current);
+                    Skip(r, track, 8, path);
                 }
             }
             return points;
+        }
+
+        /// <summary>Reads past <paramref name="count"/> records of <paramref name="size"/> bytes (the file stream is read-only forward).</summary>
+        static void Skip(BinaryReader r, ulong count, int size, string path)
+        {
+            if (count > (1UL << 40) / (ulong)size) throw new FormatException(path + " declares " + count + " entries, more than any model holds.");
+            var left = (long)count * size;
+            var buffer = new byte[Math.Min(left, 1 << 16)];
+            while (left > 0)
+            {
+                var read = r.Read(buffer, 0, (int)Math.Min(left, buffer.Length));
+                if (read <= 0) throw new EndOfStreamException(path + " ends inside its records.");
+                left -= read;
+            }
         }
 
         static double D(string s) => double.Parse(s, NumberStyles.Float, CultureInfo.InvariantCulture);
