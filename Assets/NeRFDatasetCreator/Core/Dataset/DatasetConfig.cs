@@ -66,6 +66,12 @@ namespace NerfDatasetCreator
         /// <summary>Whether the geometry pack holds one mesh per time step.</summary>
         public bool GeometryIsPerStep => GeometryPackStepRecord.IsPerStep(Json);
 
+        /// <summary>
+        /// The output-to-Unity frame (<see cref="UnityFrameRecord"/>): <c>unity_frame</c>, else derived from
+        /// <c>scene_normalisation</c>; null when neither is recorded. A malformed <c>unity_frame</c> throws, naming it.
+        /// </summary>
+        public UnityFrameRecord UnityFrame => UnityFrameRecord.Read(Json);
+
         /// <summary>How far the target reaches from the output origin (<see cref="DatasetTargetReach"/>), or null; a malformed record is a warning.</summary>
         public double? TargetReach(ICollection<ValidationProblem> warnings = null) => DatasetTargetReach.FromConfig(Json, warnings);
     }

@@ -6,7 +6,7 @@ namespace NerfDatasetCreator
     /// <summary>
     /// Writing <c>dataset_config.json</c> (reading it is <see cref="Read"/>): enough to regenerate the dataset — the full settings (the same object a config
     /// file holds, so it can be used as one), the seed, the resolved distance, the target and how output poses
-    /// relate to the Unity world (<c>scene_normalisation</c>, as in the transforms files), the plugin and Unity versions
+    /// relate to the Unity world (<c>scene_normalisation</c>, as in the transforms files, and its inverse <c>unity_frame</c>), the plugin and Unity versions
     /// and the UTC date; with a point cloud, its <see cref="PointCloudRecord"/> (file, point count, SHA-256).
     /// </summary>
     public sealed partial class DatasetConfig
@@ -47,6 +47,9 @@ namespace NerfDatasetCreator
                     w.WriteValue("Blender world (right-handed, +Z up): output = scene_normalisation.scale * ((x, z, y) of the Unity position - scene_normalisation.centre); OpenGL camera axes; depth files in output units");
                     w.WritePropertyName(BlenderTransformsWriter.SceneNormalisationKey);
                     JsonNumbers.WriteToken(w, plan.Normalisation.ToJson());
+                    // How to go back: the output-to-Unity matrix and the Editor's facts about the target (issue 34, place-splat).
+                    w.WritePropertyName(UnityFrameRecord.Key);
+                    JsonNumbers.WriteToken(w, UnityFrameRecord.ToJson(plan.Normalisation, provenance.UnityFrame));
                     w.WritePropertyName("views");
                     w.WriteStartObject();
                     foreach (var split in DatasetSplits.All)

@@ -34,7 +34,8 @@ namespace NerfDatasetCreator
     /// geometry pack (<c>dataset_config.json</c>'s <c>geometry.file</c>, else <c>geometry/target_mesh.ply</c>); it is
     /// sampled area-uniformly (<see cref="SurfaceSampler"/>, fixed seed) into <see cref="DefaultTruthPoints"/> points; the
     /// points the train split's depth maps saw are kept for completeness and recall (<see cref="ObservedPoints"/>, tolerance
-    /// = the threshold); a reconstruction mesh is sampled at the same density, a point cloud used as it is.
+    /// = the threshold); a reconstruction mesh is sampled at the same density, a point cloud used as it is, a trained
+    /// Gaussian splat's PLY as its opaque centres in the output frame (<see cref="TrainedSplatCentres"/>).
     /// </summary>
     public static class GeometryEvaluation
     {
@@ -104,8 +105,26 @@ namespace NerfDatasetCreator
                 result.ObservedRule = "the train" + (truthChoice.Step.HasValue ? " views of time step " + truthChoice.Step.Value + " have" : " split has") + " no depth maps, so every ground-truth point counts (none could be ruled unobserved)";
             }
 
-            var reconstructionMesh = GeometryFile.Read(reconstructionPath);
             float[] reconstruction;
+            if (GaussianPly.IsGaussianSplat(reconstructionPath))
+            {
+                // A trained splat (issue 34): its opaque centres, moved out of the trainer's frame as place-splat moves them.
+                var splat = TrainedSplatCentres.Read(reconstructionPath);
+                reconstruction = new float[splat.Centres.Count * 3];
+                for (var i = 0; i < splat.Centres.Count; i++)
+                {
+                    reconstruction[3 * i] = (float)splat.Centres[i].X;
+                    reconstruction[3 * i + 1] = (float)splat.Centres[i].Y;
+                    reconstruction[3 * i + 2] = (float)splat.Centres[i].Z;
+                }
+                result.ReconstructionKind = splat.Kind;
+                if (splat.Centres.Count == 0)
+                    throw new InvalidParameterException(new[] { new ValidationProblem(GeometryFile.Reconstruction, reconstructionPath, "has no Gaussian with opacity above " + TrainedSplatCentres.OpacityThreshold.ToString(System.Globalization.CultureInfo.InvariantCulture) + ", so there is no surface to score.", "Pass the PLY of a trained model (a later iteration).") });
+                progress?.Invoke("geometry: nearest neighbours both ways");
+                result.Distances = SurfaceDistances.Compute(reconstruction, truth, observed, tau);
+                return result;
+            }
+            var reconstructionMesh = GeometryFile.Read(reconstructionPath);
             if (reconstructionMesh.TriangleCount > 0)
             {
                 var reconstructionArea = Area(reconstructionMesh);

@@ -12,7 +12,7 @@ namespace NerfDatasetCreator
     {
         public ExportScene(string rootDirectory, CameraIntrinsics intrinsics, IEnumerable<ExportFrame> frames,
             string pointCloudPath = null, SceneNormalisation normalisation = null, double depthUnitScale = DefaultDepthUnitScale,
-            int? declaredAabbScale = null, double? targetReach = null, bool insideOut = false, LensDistortion lens = null)
+            int? declaredAabbScale = null, double? targetReach = null, bool insideOut = false, LensDistortion lens = null, Newtonsoft.Json.Linq.JObject unityFrame = null)
         {
             RootDirectory = rootDirectory ?? throw new ArgumentNullException(nameof(rootDirectory));
             Intrinsics = intrinsics ?? throw new ArgumentNullException(nameof(intrinsics));
@@ -30,7 +30,14 @@ namespace NerfDatasetCreator
             TargetReach = targetReach;
             InsideOut = insideOut;
             Lens = lens == null || lens.IsPinhole ? null : lens;
+            UnityFrame = unityFrame;
         }
+
+        /// <summary>
+        /// dataset_config.json's <c>unity_frame</c> as recorded (<see cref="UnityFrameRecord"/>), or null: the JSON exports
+        /// beside <c>scene_normalisation</c> carry it, so a converted dataset still knows its way back to Unity.
+        /// </summary>
+        public Newtonsoft.Json.Linq.JObject UnityFrame { get; }
 
         /// <summary>
         /// The lens distortion every image was taken through (<see cref="LensDistortion"/>, the same for all frames), or

@@ -42,5 +42,26 @@ namespace NerfDatasetCreator
 
         /// <summary>What the user should know (a choice made, a file not written and why).</summary>
         public System.Collections.Generic.IReadOnlyList<string> Notes { get; }
+
+        /// <summary>The rotation as the Inspector's Euler angles in degrees (Unity's z-x-y order), x y z.</summary>
+        public double[] EulerDegrees { get; internal set; }
+
+        /// <summary>The trainer's frame in one line (e.g. "nerfstudio's dataparser frame (...)").</summary>
+        public string TrainerFrame { get; internal set; }
+
+        /// <summary>x_output = TrainerToOutput·[x_ply, 1]: 16 numbers, row-major (evaluate --geometry uses the same map).</summary>
+        public double[] TrainerToOutput { get; internal set; }
+
+        /// <summary>x_unity = OutputToUnity·[x_output, 1]: the dataset's unity_frame, 16 numbers row-major.</summary>
+        public double[] OutputToUnity { get; internal set; }
+
+        /// <summary>Null when the dataset records unity_frame; otherwise what the output-to-Unity matrix was derived from.</summary>
+        public string UnityFrameDerivedFrom { get; internal set; }
+
+        /// <summary>The cameras.json aras-p's importer will read for this PLY (the first up from its folder), or null for none.</summary>
+        public string ViewerCamerasJsonPath { get; internal set; }
+
+        /// <summary>How many train cameras <see cref="CamerasJsonPath"/> holds (0 when none was written).</summary>
+        public int CameraCount { get; internal set; }
     }
 }

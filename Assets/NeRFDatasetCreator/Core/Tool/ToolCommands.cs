@@ -25,6 +25,7 @@ namespace NerfDatasetCreator
             EvaluateCommand.Command,
             SplitsCommand.Command,
             DemoCommand.Command,
+            PlaceSplatCommand.Command,
         };
 
         /// <summary>The last line of every usage text.</summary>

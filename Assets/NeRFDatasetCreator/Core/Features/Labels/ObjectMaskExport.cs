@@ -70,7 +70,7 @@ namespace NerfDatasetCreator
                 frames.Add(new ExportFrame(f.Split, f.ImagePath, f.CameraToWorld, f.DepthPath, rootRelative, f.Time, f.UnusableDepth));
             }
             return new ExportScene(scene.RootDirectory, scene.Intrinsics, frames, scene.PointCloudPath, scene.Normalisation, scene.DepthUnitScale,
-                scene.DeclaredAabbScale, scene.TargetReach, scene.InsideOut, scene.Lens);
+                scene.DeclaredAabbScale, scene.TargetReach, scene.InsideOut, scene.Lens, scene.UnityFrame);
         }
 
         /// <summary><c>train/r_0.png</c> → <c>train/r_0.png</c> under <see cref="MaskFolder"/>: the image's own relative path (PNG).</summary>

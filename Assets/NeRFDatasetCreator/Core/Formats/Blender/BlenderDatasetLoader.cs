@@ -155,7 +155,8 @@ namespace NerfDatasetCreator
             var config = DatasetConfig.Read(root);
             var ply = !isLink && PointCloudOwnership.IsOwn(root, config, warnings) ? PointCloudFileName : null;
             return new ExportScene(root, intrinsics, frames, ply, normalisation,
-                declaredAabbScale: aabbScale, targetReach: DatasetTargetReach.Read(config, warnings), insideOut: config.Config?.InsideOut == true, lens: lens);
+                declaredAabbScale: aabbScale, targetReach: DatasetTargetReach.Read(config, warnings), insideOut: config.Config?.InsideOut == true, lens: lens,
+                unityFrame: config.Config?.Json[UnityFrameRecord.Key] as Newtonsoft.Json.Linq.JObject);
         }
 
         /// <summary>The PNG header of a dataset image; a file that is not a whole PNG is a problem naming it.</summary>

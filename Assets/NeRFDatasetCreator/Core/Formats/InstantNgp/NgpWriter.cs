@@ -87,6 +87,7 @@ namespace NerfDatasetCreator
                 : AabbScale.ForDataset(scene.DeclaredAabbScale, scene.TargetReach, warnings);
             if (depth) json["integer_depth_scale"] = scene.DepthUnitScale;
             if (scene.Normalisation != null) json["scene_normalisation"] = scene.Normalisation.ToJson();
+            if (scene.UnityFrame != null) json[UnityFrameRecord.Key] = scene.UnityFrame.DeepClone(); // carried for place-splat; instant-ngp ignores it
             var frames = new JArray();
             foreach (var f in train)
             {

@@ -35,6 +35,7 @@ namespace NerfDatasetCreator
             if (scene.PointCloudPath != null) json["ply_file_path"] = Rel(scene.PointCloudPath);
             if (scene.HasDepth) json["depth_unit_scale_factor"] = scene.DepthUnitScale;
             if (scene.Normalisation != null) json["scene_normalisation"] = scene.Normalisation.ToJson();
+            if (scene.UnityFrame != null) json[UnityFrameRecord.Key] = scene.UnityFrame.DeepClone(); // carried for place-splat; nerfstudio ignores it
             foreach (var split in DatasetSplits.Names)
                 json[split + "_filenames"] = new JArray(scene.Split(split).Select(f => (object)Rel(f.ImagePath)).ToArray());
 

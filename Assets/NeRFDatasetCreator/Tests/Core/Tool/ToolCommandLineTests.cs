@@ -146,6 +146,7 @@ namespace NerfDatasetCreator.Tests
             "  splits <dir> [--views 8[,3,...]]                        write sparse-view split files (splits/sparse_<n>.json: nerf_synthetic's paper lists, else farthest-point views) for evaluate --split\n" +
             "  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur] [--views N] [--size PX] [--renders-for <dataset>]  write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)\n" +
             "  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|hdr] [--views N] [--size PX] [--renders-for <dataset>]  write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)\n" +
+            "  place-splat <dir> --model <trained output> [--trainer 3dgs|nerfstudio|gsplat] [--ply <file>] [--json <file>]  where a trained Gaussian splat goes in the Unity scene: Transform, object-to-world, cameras.json\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error\n" +
             "nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version.";
 
@@ -154,6 +155,7 @@ namespace NerfDatasetCreator.Tests
         {
             Assert.That(ToolCommands.Usage, Is.EqualTo(ReleasedUsage));
             Assert.That(ToolCommands.All.Select(c => c.Name), Is.EqualTo(new[] { "plan", "validate", "merge", "convert", "clean", "check", "evaluate", "splits", "demo" }));
+            Assert.That(ToolCommands.All.Select(c => c.Name), Is.EqualTo(new[] { "plan", "validate", "merge", "convert", "clean", "check", "evaluate", "demo", "place-splat" }));
         }
 
         [Test]
