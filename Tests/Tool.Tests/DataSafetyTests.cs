@@ -249,7 +249,11 @@ namespace NerfDatasetCreator.Tool.Tests
             var complete = Entries(trial);
 
             RunKilled(firstMap + 1, "evaluate", dataset, "--renders", renders, "--out", outFolder);
-            Assert.That(Directory.GetFiles(Path.Combine(outFolder, "errors")), Has.Length.EqualTo(1), "one error map was written before the kill");
+            // Views are scored on every core, so another thread may finish its map between the first one and the kill
+            // (seen on a loaded machine: 2): some maps, not all, and no report.
+            var written = Directory.GetFiles(Path.Combine(outFolder, "errors")).Length;
+            Assert.That(written, Is.GreaterThanOrEqualTo(1), "an error map was written before the kill");
+            Assert.That(written, Is.LessThan(Directory.GetFiles(Path.Combine(trial, "errors")).Length), "the run died before its last map");
             Assert.That(File.Exists(Path.Combine(outFolder, "metrics.json")), Is.False);
 
             var again = ToolRun.Of("evaluate", dataset, "--renders", renders, "--out", outFolder);
