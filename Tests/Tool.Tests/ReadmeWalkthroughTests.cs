@@ -162,6 +162,10 @@ namespace NerfDatasetCreator.Tool.Tests
                             yield return Promise(TumRgbd.GroundTruth, File.Exists(Path.Combine(output, TumRgbd.GroundTruth)));
                             yield return Promise(TumRgbd.RgbList, File.Exists(Path.Combine(output, TumRgbd.RgbList)));
                             break;
+                        case "hdr-nerf":
+                            yield return Promise(HdrNerf.ExposureFileName("test"), File.Exists(Path.Combine(output, HdrNerf.ExposureFileName("test"))));
+                            yield return Promise("test/r_0_4.png", File.Exists(Path.Combine(output, "test", "r_0_4.png")));
+                            break;
                         case "multiscale":
                             yield return Promise("colmap/images_4", Directory.Exists(Path.Combine(output, MultiscaleExport.ColmapFolder, "images_4")));
                             yield return Promise("mipnerf/metadata.json", File.Exists(Path.Combine(output, MipNerfMultiscale.FolderName, MipNerfMultiscale.MetadataFileName)));

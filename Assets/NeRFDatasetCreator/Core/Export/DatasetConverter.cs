@@ -118,6 +118,7 @@ namespace NerfDatasetCreator
                     case ExportTarget.Replica: result = ReplicaExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.Tum: result = TumRgbdExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.Multiscale: result = MultiscaleExport.Write(scene, output, points, warnings, staged); break;
+                    case ExportTarget.HdrNerf: result = HdrNerfExport.Write(scene, output, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 EvalProtocolCarry.Copy(scene.RootDirectory, output, staged, warnings);
@@ -151,6 +152,7 @@ namespace NerfDatasetCreator
                 case ExportTarget.Replica: return Path.GetFullPath(Path.Combine(root, Replica.FolderName));
                 case ExportTarget.Tum: return Path.GetFullPath(Path.Combine(root, TumRgbd.FolderName));
                 case ExportTarget.Multiscale: return Path.GetFullPath(Path.Combine(root, MultiscaleExport.FolderName));
+                case ExportTarget.HdrNerf: return Path.GetFullPath(Path.Combine(root, HdrNerf.FolderName));
                 default: return Path.GetFullPath(root);
             }
         }

@@ -40,6 +40,9 @@ namespace NerfDatasetCreator
 
         /// <summary>gsplat's images_2/4/8 beside a COLMAP model, and mip-NeRF's multi-scale Blender layout (<see cref="MultiscaleExport"/>).</summary>
         Multiscale,
+
+        /// <summary>HDR-NeRF's synthetic layout: five exposure brackets per view from the linear HDR colour (<see cref="HdrNerfExport"/>).</summary>
+        HdrNerf,
     }
 
     public static class ExportTargets
@@ -47,7 +50,7 @@ namespace NerfDatasetCreator
         public static readonly string[] Names =
         {
             "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping", "nerfies", "dycheck", "llff", "dynerf", "neus",
-            "replica", "tum", "multiscale",
+            "replica", "tum", "multiscale", "hdr-nerf",
         };
 
         /// <summary>
