@@ -41,19 +41,7 @@ namespace NerfDatasetCreator
             for (var y = 0; y < h; y++)
                 for (var x = 0; x < w; x++)
                 {
-                    long p0 = 0, p1 = 0, p2 = 0, a = 0;
-                    for (var by = 0; by < factor; by++)
-                    {
-                        var s = ((long)(y * factor + by) * width + (long)x * factor) * channels;
-                        for (var bx = 0; bx < factor; bx++, s += channels)
-                        {
-                            long alpha = channels == 4 ? samples[s + 3] : 255;
-                            p0 += samples[s] * alpha;
-                            p1 += samples[s + 1] * alpha;
-                            p2 += samples[s + 2] * alpha;
-                            a += alpha;
-                        }
-                    }
+                    BlockSums(samples, width, channels, factor, x, y, out var p0, out var p1, out var p2, out var a);
                     output[d] = Colour(p0, a);
                     output[d + 1] = Colour(p1, a);
                     output[d + 2] = Colour(p2, a);
@@ -61,6 +49,27 @@ namespace NerfDatasetCreator
                     d += 4;
                 }
             return output;
+        }
+
+        /// <summary>
+        /// The sums over the factor × factor block (x, y) of the output: each colour × its alpha (premultiplied, in code
+        /// units) and the alpha. One call per output pixel, not per sample: cheap enough on Mono, which does not inline it.
+        /// </summary>
+        static void BlockSums(byte[] samples, int width, int channels, int factor, int x, int y, out long p0, out long p1, out long p2, out long a)
+        {
+            p0 = p1 = p2 = a = 0;
+            for (var by = 0; by < factor; by++)
+            {
+                var s = ((long)(y * factor + by) * width + (long)x * factor) * channels;
+                for (var bx = 0; bx < factor; bx++, s += channels)
+                {
+                    long alpha = channels == 4 ? samples[s + 3] : 255;
+                    p0 += samples[s] * alpha;
+                    p1 += samples[s + 1] * alpha;
+                    p2 += samples[s + 2] * alpha;
+                    a += alpha;
+                }
+            }
         }
 
         /// <summary>
@@ -77,19 +86,7 @@ namespace NerfDatasetCreator
             for (var y = 0; y < h; y++)
                 for (var x = 0; x < w; x++)
                 {
-                    long p0 = 0, p1 = 0, p2 = 0, a = 0;
-                    for (var by = 0; by < factor; by++)
-                    {
-                        var s = ((long)(y * factor + by) * width + (long)x * factor) * channels;
-                        for (var bx = 0; bx < factor; bx++, s += channels)
-                        {
-                            long alpha = channels == 4 ? samples[s + 3] : 255;
-                            p0 += samples[s] * alpha;
-                            p1 += samples[s + 1] * alpha;
-                            p2 += samples[s + 2] * alpha;
-                            a += alpha;
-                        }
-                    }
+                    BlockSums(samples, width, channels, factor, x, y, out var p0, out var p1, out var p2, out var a);
                     output[d] = Round(p0 + r * (whole - a), whole);
                     output[d + 1] = Round(p1 + g * (whole - a), whole);
                     output[d + 2] = Round(p2 + b * (whole - a), whole);

@@ -47,16 +47,7 @@ namespace NerfDatasetCreator
             }
             if (count != values.Length) throw new ArgumentException("values holds " + values.Length + " numbers, not " + count + ".", nameof(values));
             var tuple = string.Join(", ", Array.ConvertAll(shape, n => n.ToString(CultureInfo.InvariantCulture))) + (shape.Length == 1 ? "," : "");
-            var dict = "{'descr': '<f4', 'fortran_order': False, 'shape': (" + tuple + "), }";
-            var unpadded = Magic.Length + 2 + dict.Length + 1;
-            var padding = (Alignment - unpadded % Alignment) % Alignment;
-            var header = Encoding.ASCII.GetBytes(dict + new string(' ', padding) + "\n");
-            var bytes = new byte[Magic.Length + 2 + header.Length + 4L * values.Length];
-            Buffer.BlockCopy(Magic, 0, bytes, 0, Magic.Length);
-            bytes[8] = (byte)(header.Length & 0xFF);
-            bytes[9] = (byte)(header.Length >> 8);
-            Buffer.BlockCopy(header, 0, bytes, 10, header.Length);
-            var data = 10 + header.Length;
+            var bytes = Start("<f4", tuple, 4, values.Length, out var data);
             for (var i = 0; i < values.Length; i++)
             {
                 var bits = BitConverter.SingleToInt32Bits(values[i]);
@@ -68,20 +59,31 @@ namespace NerfDatasetCreator
             return bytes;
         }
 
+        /// <summary>
+        /// A .npy file's bytes up to its data: magic, version, header length and the header dict padded to
+        /// <see cref="Alignment"/>, with room for <paramref name="count"/> items of <paramref name="itemSize"/> bytes
+        /// starting at <paramref name="data"/>.
+        /// </summary>
+        static byte[] Start(string descr, string shapeTuple, int itemSize, int count, out int data)
+        {
+            var dict = "{'descr': '" + descr + "', 'fortran_order': False, 'shape': (" + shapeTuple + "), }";
+            var unpadded = Magic.Length + 2 + dict.Length + 1;
+            var padding = (Alignment - unpadded % Alignment) % Alignment;
+            var header = Encoding.ASCII.GetBytes(dict + new string(' ', padding) + "\n");
+            var bytes = new byte[Magic.Length + 2 + header.Length + (long)itemSize * count];
+            Buffer.BlockCopy(Magic, 0, bytes, 0, Magic.Length);
+            bytes[8] = (byte)(header.Length & 0xFF);
+            bytes[9] = (byte)(header.Length >> 8);
+            Buffer.BlockCopy(header, 0, bytes, 10, header.Length);
+            data = 10 + header.Length;
+            return bytes;
+        }
+
         /// <summary>Writes a new <c>.npz</c> holding one array under <paramref name="key"/> (<c>np.load(path)[key]</c>); never overwrites.</summary>
         public static void WriteNpz(string path, string key, byte[] npy) => FileOps.WriteNewBytes(path, Npz(key, npy));
 
         /// <summary>The bytes of an <c>.npz</c> (a zip archive) holding one array under <paramref name="key"/>.</summary>
-        public static byte[] Npz(string key, byte[] npy)
-        {
-            var buffer = new MemoryStream();
-            using (var zip = new ZipArchive(buffer, ZipArchiveMode.Create, leaveOpen: true))
-            {
-                var entry = zip.CreateEntry(key + ".npy", CompressionLevel.NoCompression);
-                using (var stream = entry.Open()) stream.Write(npy, 0, npy.Length);
-            }
-            return buffer.ToArray();
-        }
+        public static byte[] Npz(string key, byte[] npy) => Npz(new[] { new KeyValuePair<string, byte[]>(key, npy) });
 
         /// <summary>
         /// A 2-D little-endian float64 array (<c>'&lt;f8'</c>) of <paramref name="rows"/> × <paramref name="columns"/>, row-major:
@@ -92,17 +94,7 @@ namespace NerfDatasetCreator
             if (values == null) throw new ArgumentNullException(nameof(values));
             if (rows < 0 || columns < 0 || (long)rows * columns != values.Length)
                 throw new ArgumentException("values holds " + values.Length + " numbers, not " + rows + " × " + columns + ".", nameof(values));
-            var dict = "{'descr': '<f8', 'fortran_order': False, 'shape': (" +
-                       rows.ToString(CultureInfo.InvariantCulture) + ", " + columns.ToString(CultureInfo.InvariantCulture) + "), }";
-            var unpadded = Magic.Length + 2 + dict.Length + 1;
-            var padding = (Alignment - unpadded % Alignment) % Alignment;
-            var header = Encoding.ASCII.GetBytes(dict + new string(' ', padding) + "\n");
-            var bytes = new byte[Magic.Length + 2 + header.Length + 8L * values.Length];
-            Buffer.BlockCopy(Magic, 0, bytes, 0, Magic.Length);
-            bytes[8] = (byte)(header.Length & 0xFF);
-            bytes[9] = (byte)(header.Length >> 8);
-            Buffer.BlockCopy(header, 0, bytes, 10, header.Length);
-            var data = 10 + header.Length;
+            var bytes = Start("<f8", rows.ToString(CultureInfo.InvariantCulture) + ", " + columns.ToString(CultureInfo.InvariantCulture), 8, values.Length, out var data);
             for (var i = 0; i < values.Length; i++)
             {
                 var bits = BitConverter.DoubleToInt64Bits(values[i]);
