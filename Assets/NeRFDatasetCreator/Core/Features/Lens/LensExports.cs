@@ -33,6 +33,10 @@ namespace NerfDatasetCreator
                     return new ValidationProblem("--to", ExportTargets.Name(target),
                         "cannot hold lens distortion: SplaTAM and Gaussian-SLAM undistort the colour image only, not the depth (SplaTAM basedataset.py:308–310, Gaussian-SLAM datasets.py:155–157), so colour and depth would no longer align; the configs written describe a pinhole, and this dataset's images were taken through " + lens.Describe() + ".",
                         "Capture without a lens (the Camera step's lens \"none\") for a SLAM sequence.");
+                case ExportTarget.HdrNerf:
+                    return new ValidationProblem("--to", "hdr-nerf",
+                        "cannot hold lens distortion: HDR-NeRF's synthetic loader takes a pinhole focal from camera_angle_x only (load_syn_llff.py:133–134), and this dataset's images were taken through " + lens.Describe() + ".",
+                        "Capture without a lens (the Camera step's lens \"none\") for exposure brackets.");
                 case ExportTarget.Colmap when depths:
                     return new ValidationProblem("--depths", lens.ColmapModelName,
                         "writes depth maps for 3DGS, whose COLMAP reader accepts only PINHOLE and SIMPLE_PINHOLE cameras, and this dataset's lens is " + lens.Describe() + ".",

@@ -117,6 +117,15 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void ALensIsRefusedBeforeAnythingIsWritten()
+        {
+            var problem = LensExports.Refusal(new LensDistortion(LensModel.OpenCv, -0.1, 0.01, 0, 0, 0, 0), ExportTarget.HdrNerf);
+            Assert.That(problem, Is.Not.Null);
+            Assert.That(problem.Field, Is.EqualTo("--to"));
+            Assert.That(problem.Reason, Does.Contain("camera_angle_x only"));
+        }
+
+        [Test]
         public void ACaptureWithoutLinearColourIsRefusedBeforeAnythingIsWritten()
         {
             var plain = AnalyticDataset.Write(_temp.Path, "plain", new AnalyticDataset.Options { Train = 2, Val = 1, Test = 1, PointCloud = 0 });
