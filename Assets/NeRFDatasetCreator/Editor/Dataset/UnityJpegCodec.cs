@@ -37,6 +37,8 @@ namespace NerfDatasetCreator.Editor
                 if (!texture.LoadImage(jpeg)) throw new System.IO.InvalidDataException("Unity could not decode the JPEG.");
                 width = texture.width;
                 height = texture.height;
+                // Texture2D.GetPixels32 (docs: ScriptReference/Texture2D.GetPixels32): "a flattened 2D array, where pixels are
+                // laid out left to right, bottom to top", so row y of the image is row height − 1 − y here.
                 var pixels = texture.GetPixels32();
                 var rgb = new byte[width * height * 3];
                 for (var y = 0; y < height; y++)

@@ -36,11 +36,7 @@ namespace NerfDatasetCreator
             if (image.Width != k.Width || image.Height != k.Height)
                 throw NerfiesViews.Refuse("file_path", frame.ImagePath, "is " + image.Width + " × " + image.Height + ", not the dataset's " + k.Width + " × " + k.Height + ".",
                     "Re-capture the dataset: every image has the camera's size.");
-            var pixels = image.Width * image.Height;
-            var rgb = new byte[pixels * 3];
-            if (image.ColorType == PngInfo.ColorTypeRgb) Buffer.BlockCopy(image.Samples, 0, rgb, 0, rgb.Length);
-            else AlphaCompositing.OverSolid(image.Samples, rgb, pixels, r, g, b);
-            return rgb;
+            return ExportRgb.Rgb(image, (r, g, b));
         }
 
         /// <summary>Whether level <paramref name="factor"/> is written for a <paramref name="width"/> × <paramref name="height"/> image.</summary>

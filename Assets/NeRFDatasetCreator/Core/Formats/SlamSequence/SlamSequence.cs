@@ -84,11 +84,7 @@ namespace NerfDatasetCreator
                 throw Refuse("file_path", frame.ImagePath, "is not an 8-bit RGB or RGBA PNG.", "Re-capture the dataset with this plugin.");
             width = image.Width;
             height = image.Height;
-            var pixels = width * height;
-            if (image.ColorType == PngInfo.ColorTypeRgb) return (byte[])image.Samples.Clone();
-            var rgb = new byte[pixels * 3];
-            AlphaCompositing.OverSolid(image.Samples, rgb, pixels, background.R, background.G, background.B);
-            return rgb;
+            return ExportRgb.Rgb(image, (background.R, background.G, background.B));
         }
 
         /// <summary>
