@@ -103,6 +103,38 @@ namespace NerfDatasetCreator
         /// </summary>
         public ushort[] InstanceIds { get; set; }
 
+        /// <summary>
+        /// Material pass (issue 38): the shader's base colour (albedo), linear, 4 floats per sample (R G B, A ignored),
+        /// drawn unlit with no post-processing over a (0,0,0,0) clear; coverage comes from <see cref="Mask"/>.
+        /// </summary>
+        public float[] MaterialAlbedo { get; set; }
+
+        /// <summary>Material pass: metallic in [0, 1], one float per sample; 0 where nothing is drawn.</summary>
+        public float[] MaterialMetallic { get; set; }
+
+        /// <summary>Material pass: perceptual roughness = 1 − smoothness in [0, 1], one float per sample.</summary>
+        public float[] MaterialRoughness { get; set; }
+
+        /// <summary>Material pass: specular colour (specular-setup shaders), linear, 4 floats per sample (A ignored).</summary>
+        public float[] MaterialSpecular { get; set; }
+
+        /// <summary>Material pass: emission, linear (may exceed 1), 4 floats per sample (A ignored).</summary>
+        public float[] MaterialEmission { get; set; }
+
+        /// <summary>
+        /// Material coverage: 255 where the sample's shader is one whose parameters the material passes read exactly,
+        /// 0 where it is another shader (its values are not guessed) or nothing is drawn; one byte per sample.
+        /// </summary>
+        public byte[] MaterialSupported { get; set; }
+
+        /// <summary>
+        /// Relighting (issue 38): the colour of this view under each extra lighting condition, keyed by the file-name
+        /// key of the condition and rotation (<c>sunset_090</c>, <c>olat-03</c>); each value carries only the colour
+        /// arrays (<see cref="ColorSrgb"/>, <see cref="ColorLinear"/> or the over-black/over-white pair) and goes through
+        /// the same colour pipeline as this frame.
+        /// </summary>
+        public Dictionary<string, RawFrame> Relit { get; set; }
+
         /// <summary>Every problem with the sizes and arrays at once; empty when the frame is usable.</summary>
         public List<ValidationProblem> Validate()
         {

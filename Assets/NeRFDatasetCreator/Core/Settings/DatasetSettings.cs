@@ -148,6 +148,15 @@ namespace NerfDatasetCreator
         /// <summary>Motion blur and rolling shutter: each view exposed over a shutter interval (off by default; <see cref="MotionBlurSettings"/>).</summary>
         public MotionBlurSettings MotionBlur = new MotionBlurSettings();
 
+        /// <summary>Exact optical flow, scene flow, occlusion and tracks of a dynamic capture (off by default; <see cref="FlowSettings"/>).</summary>
+        public FlowSettings Flow = new FlowSettings();
+
+        /// <summary>Material passes: albedo, metallic, roughness, specular, emission (off by default; <see cref="MaterialPassSettings"/>).</summary>
+        public MaterialPassSettings Materials = new MaterialPassSettings();
+
+        /// <summary>The same views under more lighting conditions, with lights.json (off by default; <see cref="RelightingSettings"/>).</summary>
+        public RelightingSettings Relighting = new RelightingSettings();
+
         /// <summary>Sparse-view split files a capture or plan writes, one per train view count (<c>splits/sparse_&lt;n&gt;.json</c>, <see cref="SparseSplitFiles"/>); none by default.</summary>
         public int[] SparseViews = new int[0];
 
@@ -177,6 +186,9 @@ namespace NerfDatasetCreator
             copy.Exposure = Exposure?.Clone();
             copy.Hdr = Hdr?.Clone();
             copy.MotionBlur = MotionBlur?.Clone();
+            copy.Flow = Flow?.Clone();
+            copy.Materials = Materials?.Clone();
+            copy.Relighting = Relighting?.Clone();
             copy.SparseViews = (int[])SparseViews?.Clone();
             return copy;
         }
