@@ -38,6 +38,18 @@ namespace NerfDatasetCreator
             _atTo = TriangleBvh.Build(verticesTo, triangles);
         }
 
+        /// <summary>The same, with each time's tree already built (<see cref="FlowMeshes"/> builds one per step and shares it).</summary>
+        public SurfaceFlow(double[] verticesFrom, TriangleBvh atFrom, double[] verticesTo, TriangleBvh atTo, int[] triangles)
+        {
+            if (verticesFrom == null || verticesTo == null || verticesFrom.Length != verticesTo.Length)
+                throw new ArgumentException("The mesh at both times needs the same vertices: " + (verticesFrom?.Length / 3) + " and " + (verticesTo?.Length / 3) + " given (a changing topology cannot carry flow).");
+            _from = verticesFrom;
+            _to = verticesTo;
+            _triangles = triangles;
+            _atFrom = atFrom ?? throw new ArgumentNullException(nameof(atFrom));
+            _atTo = atTo ?? throw new ArgumentNullException(nameof(atTo));
+        }
+
         /// <summary>
         /// The flow of continuous pixel (x, y) of <paramref name="from"/> into <paramref name="to"/>: false (and
         /// <see cref="FlowState.NoSurface"/>) when its ray meets no surface. Not thread-safe (the trees' stacks).

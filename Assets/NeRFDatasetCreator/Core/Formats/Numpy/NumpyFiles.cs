@@ -59,6 +59,24 @@ namespace NerfDatasetCreator
             return bytes;
         }
 
+        /// <summary>A uint8 array (<c>'|u1'</c>) of any <paramref name="shape"/>, C order: e.g. per-pixel or per-point state codes.</summary>
+        public static byte[] UInt8Array(byte[] values, params int[] shape)
+        {
+            if (values == null) throw new ArgumentNullException(nameof(values));
+            if (shape == null || shape.Length == 0) throw new ArgumentException("an array needs at least one dimension.", nameof(shape));
+            long count = 1;
+            foreach (var n in shape)
+            {
+                if (n < 0) throw new ArgumentException("a dimension is never negative.", nameof(shape));
+                count *= n;
+            }
+            if (count != values.Length) throw new ArgumentException("values holds " + values.Length + " numbers, not " + count + ".", nameof(values));
+            var tuple = string.Join(", ", Array.ConvertAll(shape, n => n.ToString(CultureInfo.InvariantCulture))) + (shape.Length == 1 ? "," : "");
+            var bytes = Start("|u1", tuple, 1, values.Length, out var data);
+            Buffer.BlockCopy(values, 0, bytes, data, values.Length);
+            return bytes;
+        }
+
         /// <summary>
         /// A .npy file's bytes up to its data: magic, version, header length and the header dict padded to
         /// <see cref="Alignment"/>, with room for <paramref name="count"/> items of <paramref name="itemSize"/> bytes
