@@ -129,6 +129,9 @@ namespace NerfDatasetCreator
             }
             progress?.Invoke(total, total);
             foreach (var p in geometryPack.PackProblems) report.Add(p);
+            var recordProblems = new List<DatasetProblem>();
+            var records = RecordsCheck.Run(root, config, recordProblems);
+            foreach (var p in recordProblems) report.Add(p);
 
             report.Add(new DatasetCheckResult(CheckDatasetReader.CheckName,
                 read.Problems.Count > 0 || decoded < views.Count ? DatasetCheckStatus.Failed : DatasetCheckStatus.Passed,
@@ -138,6 +141,7 @@ namespace NerfDatasetCreator
             report.Add(multiView.Finish(multiSkip));
             foreach (var check in checks.Skip(3)) report.Add(check.Finish());
             report.Add(reprojection.Finish(multiSkip ?? (views.Any(v => v.InstanceFile != null) ? null : "no view has an instance map (a capture without labels)")));
+            report.Add(records);
             report.ViewsChecked = decoded;
             report.DecodeSeconds = decodeTicks / (double)Stopwatch.Frequency;
             report.TotalSeconds = (Stopwatch.GetTimestamp() - started) / (double)Stopwatch.Frequency;
