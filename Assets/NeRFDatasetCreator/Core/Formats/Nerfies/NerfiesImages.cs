@@ -21,18 +21,8 @@ namespace NerfDatasetCreator
         /// <summary>The 1x RGB of the frame's image over (<paramref name="r"/>, <paramref name="g"/>, <paramref name="b"/>): 3 bytes a pixel.</summary>
         public static byte[] Composited(ExportScene scene, ExportFrame frame, byte r, byte g, byte b)
         {
-            PngImage image;
-            try
-            {
-                image = PngReader.Read(Path.Combine(scene.RootDirectory, frame.ImagePath));
-            }
-            catch (InvalidDataException e)
-            {
-                throw NerfiesViews.Refuse("file_path", frame.ImagePath, e.Message, "Re-capture the dataset with this plugin.");
-            }
+            var image = ExportRgb.Decode(Path.Combine(scene.RootDirectory, frame.ImagePath), frame.ImagePath);
             var k = scene.Intrinsics;
-            if (image.BitDepth != 8 || (image.ColorType != PngInfo.ColorTypeRgba && image.ColorType != PngInfo.ColorTypeRgb))
-                throw NerfiesViews.Refuse("file_path", frame.ImagePath, "is not an 8-bit RGB or RGBA PNG.", "Re-capture the dataset with this plugin.");
             if (image.Width != k.Width || image.Height != k.Height)
                 throw NerfiesViews.Refuse("file_path", frame.ImagePath, "is " + image.Width + " × " + image.Height + ", not the dataset's " + k.Width + " × " + k.Height + ".",
                     "Re-capture the dataset: every image has the camera's size.");

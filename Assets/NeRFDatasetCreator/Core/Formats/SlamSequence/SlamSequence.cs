@@ -71,17 +71,7 @@ namespace NerfDatasetCreator
         /// <summary>The frame's colour as 8-bit RGB over (<paramref name="r"/>, <paramref name="g"/>, <paramref name="b"/>) (<see cref="AlphaCompositing"/>).</summary>
         public static byte[] Rgb(ExportScene scene, ExportFrame frame, (string Name, byte R, byte G, byte B) background, out int width, out int height)
         {
-            PngImage image;
-            try
-            {
-                image = PngReader.Read(Path.Combine(scene.RootDirectory, frame.ImagePath));
-            }
-            catch (InvalidDataException e)
-            {
-                throw Refuse("file_path", frame.ImagePath, e.Message, "Re-capture the dataset with this plugin.");
-            }
-            if (image.BitDepth != 8 || (image.ColorType != PngInfo.ColorTypeRgba && image.ColorType != PngInfo.ColorTypeRgb))
-                throw Refuse("file_path", frame.ImagePath, "is not an 8-bit RGB or RGBA PNG.", "Re-capture the dataset with this plugin.");
+            var image = ExportRgb.Decode(Path.Combine(scene.RootDirectory, frame.ImagePath), frame.ImagePath);
             width = image.Width;
             height = image.Height;
             return ExportRgb.Rgb(image, (background.R, background.G, background.B));

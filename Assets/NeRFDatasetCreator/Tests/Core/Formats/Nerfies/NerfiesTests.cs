@@ -292,6 +292,23 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void ASixteenBitImageIsRefusedNamingItsFormatByNerfiesAndTheSlamTargets()
+        {
+            using (var temp = new TempFolder())
+            {
+                var options = new AnalyticDataset.Options { Width = 8, Height = 8, Supersampling = 1, Train = 2, Val = 1, Test = 1, TimeSteps = 2, Monocular = true, PointCloud = 0 };
+                var folder = AnalyticDataset.Write(temp.Path, "grey16", options);
+                File.WriteAllBytes(Path.Combine(folder, "train", "r_0.png"), PngWriter.EncodeGray16(new ushort[64], 8, 8));
+                foreach (var target in new[] { ExportTarget.Nerfies, ExportTarget.Tum })
+                {
+                    var e = Assert.Throws<InvalidParameterException>(() => DatasetConverter.Convert(folder, target));
+                    Assert.That(e.Problems[0].Value, Is.EqualTo("train/r_0.png"), target.ToString());
+                    Assert.That(e.Problems[0].Reason, Is.EqualTo("is not an 8-bit RGB or RGBA PNG (colour type 0, 16 bits)."), "the one wording of ExportRgb.Decode");
+                }
+            }
+        }
+
+        [Test]
         public void AStaticDatasetIsRefusedInOneLineAndNothingIsWritten()
         {
             using (var temp = new TempFolder())
