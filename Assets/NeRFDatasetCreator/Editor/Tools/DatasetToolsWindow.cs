@@ -1,3 +1,4 @@
+using System;
 using System.IO;
 using System.Linq;
 using UnityEditor;
@@ -41,6 +42,16 @@ namespace NerfDatasetCreator.Editor
             ("Replica (SLAM)", ExportTarget.Replica, false, "A monocular dynamic capture with depth as a Replica RGB-D sequence for SplaTAM, MonoGS and Gaussian-SLAM (results/, traj.txt, their configs)."),
             ("TUM RGB-D (SLAM)", ExportTarget.Tum, false, "A monocular dynamic capture with depth as a TUM RGB-D sequence for SplaTAM, MonoGS and Gaussian-SLAM (rgb.txt, depth.txt, groundtruth.txt, their configs)."),
         };
+
+        /// <summary>
+        /// Every other <c>convert --to</c> target, in the enum's order, offered in one menu beside the buttons: a target
+        /// added to <see cref="ExportTarget"/> is in the window without a line here.
+        /// </summary>
+        internal static readonly ExportTarget[] MoreExports =
+            ((ExportTarget[])Enum.GetValues(typeof(ExportTarget))).Where(t => Exports.All(e => e.Target != t)).ToArray();
+
+        /// <summary>The menu's choice for this Editor session (UI state only: a domain reload resets it to the first).</summary>
+        static int moreExport;
 
         [MenuItem("Window/NeRF Dataset Tools")]
         public static void Open() => Open(null);
@@ -170,6 +181,15 @@ namespace NerfDatasetCreator.Editor
                 if (GUILayout.Button(new GUIContent(export.Label, export.Tooltip)))
                     Run("export for " + export.Label, ConvertCommand.Arguments(folder, export.Target, outputFolder, export.Depths));
             }
+            EditorGUILayout.EndHorizontal();
+            if (MoreExports.Length == 0) return;
+            EditorGUILayout.BeginHorizontal();
+            var names = MoreExports.Select(t => ExportTargets.Name(t)).ToArray();
+            moreExport = EditorGUILayout.Popup(new GUIContent("More formats", "Every other convert --to target (Documentation~/exports.md says what each writes and what it needs)."),
+                Math.Min(moreExport, names.Length - 1), names);
+            var chosen = MoreExports[moreExport];
+            if (GUILayout.Button(new GUIContent("Export", "nerf-dataset convert --to " + names[moreExport]), GUILayout.Width(70)))
+                Run("export for " + names[moreExport], ConvertCommand.Arguments(folder, chosen, outputFolder, false));
             EditorGUILayout.EndHorizontal();
         }
 

@@ -30,6 +30,16 @@ namespace NerfDatasetCreator.Editor.Tests
             if (Directory.Exists(_root)) Directory.Delete(_root, true);
         }
 
+        [Test]
+        public void EveryExportTargetIsOfferedOnceByAButtonOrTheMoreFormatsMenu()
+        {
+            var offered = new System.Collections.Generic.List<ExportTarget>();
+            foreach (var e in DatasetToolsWindow.Exports) if (!offered.Contains(e.Target)) offered.Add(e.Target);
+            offered.AddRange(DatasetToolsWindow.MoreExports);
+            Assert.That(offered, Is.EquivalentTo((ExportTarget[])System.Enum.GetValues(typeof(ExportTarget))));
+            Assert.That(DatasetToolsWindow.MoreExports, Does.Not.Contain(ExportTarget.Colmap), "a target with a button is not in the menu again");
+        }
+
         /// <summary>A planned dataset (JSON files, no images), written by the tool's own plan command.</summary>
         string Planned()
         {
