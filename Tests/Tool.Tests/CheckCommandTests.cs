@@ -13,7 +13,7 @@ namespace NerfDatasetCreator.Tool.Tests
         Scratch _scratch;
         string _clean;
 
-        static readonly string[] Checks = { "dataset", "alpha vs mask", "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry", "straight alpha", "instance vs mask", "exposure", "hdr", "motion blur", "geometry pack vs depth", "instance reprojection" };
+        static readonly string[] Checks = { "dataset", "alpha vs mask", "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry", "straight alpha", "instance vs mask", "exposure", "hdr", "motion blur", "geometry pack vs depth", "instance reprojection", "records" };
 
         [OneTimeSetUp]
         public void Render()
