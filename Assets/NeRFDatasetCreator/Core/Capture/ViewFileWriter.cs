@@ -228,6 +228,37 @@ namespace NerfDatasetCreator
             Interlocked.Add(ref _writeTicks, Stopwatch.GetTimestamp() - started);
         }
 
+        /// <summary>
+        /// The material passes (settings <c>materials</c>) of <paramref name="frame"/>, the view's colour render at its pose
+        /// (the sharp, mid-pose one with motion blur; after the lens): per pass its EXR and PNG
+        /// (<see cref="MaterialPassResolve"/>, <see cref="MaterialEncoding"/>), and the coverage PNG. Alpha is the colour
+        /// image's coverage: the frame resolved as the colour image is, on a transparent background — the colour image's
+        /// own alpha unless the settings' background is solid (then that image is opaque, and the passes still carry coverage).
+        /// </summary>
+        public void WriteMaterials(PlannedView view, RawFrame frame)
+        {
+            if (!MaterialPassFiles.Writes(view)) return;
+            long started = Stopwatch.GetTimestamp();
+            long encoding = 0;
+            int width = frame.OutputWidth, height = frame.OutputHeight, pixels = width * height;
+            var rgba = new byte[pixels * 4];
+            if (frame.ColorOverBlack != null) DifferenceMatting.Resolve(frame, rgba, Background.Transparent, _backgroundIsClear);
+            else StraightAlpha.Resolve(frame, rgba, Background.Transparent);
+            var alpha = new byte[pixels];
+            for (var i = 0; i < pixels; i++) alpha[i] = rgba[i * 4 + 3];
+            foreach (var pass in MaterialPassFiles.All)
+            {
+                if (!view.Writes(pass.Exr)) continue;
+                var straight = MaterialPassResolve.Resolve(frame, pass, alpha);
+                Save(view, pass.Exr, Exr(MaterialEncoding.ExrOrder(straight, width, height), width, height, 4));
+                if (pass.Png is DatasetFileKind png)
+                    Save(view, png, Png(MaterialEncoding.PngBytes(straight, alpha, pass.Encoding), width, height, PngPixelFormat.Rgba8, ref encoding));
+            }
+            Save(view, DatasetFileKind.MaterialCoveragePng, Png(MaterialPassResolve.Coverage(frame), width, height, PngPixelFormat.Gray8, ref encoding));
+            Interlocked.Add(ref _encodeTicks, encoding);
+            Interlocked.Add(ref _writeTicks, Stopwatch.GetTimestamp() - started);
+        }
+
         static byte[] Png(byte[] pixels, int width, int height, PngPixelFormat format, ref long encoding)
         {
             long before = Stopwatch.GetTimestamp();
