@@ -33,6 +33,8 @@ namespace NerfDatasetCreator
         {
             public byte[] Rgba = new byte[0], Mask = new byte[0], Rgb = new byte[0];
             public ushort[] Millimetres = new ushort[0], Ids = new ushort[0];
+            public byte[] MaterialRgba = new byte[0], MaterialAlpha = new byte[0];
+            public float[] MaterialValues = new float[0], MaterialExr = new float[0];
         }
 
         [ThreadStatic] static Scratch scratch;
@@ -241,18 +243,19 @@ namespace NerfDatasetCreator
             long started = Stopwatch.GetTimestamp();
             long encoding = 0;
             int width = frame.OutputWidth, height = frame.OutputHeight, pixels = width * height;
-            var rgba = new byte[pixels * 4];
+            var s = scratch ?? (scratch = new Scratch());
+            var rgba = Exact(ref s.MaterialRgba, pixels * 4);
             if (frame.ColorOverBlack != null) DifferenceMatting.Resolve(frame, rgba, Background.Transparent, _backgroundIsClear);
             else StraightAlpha.Resolve(frame, rgba, Background.Transparent);
-            var alpha = new byte[pixels];
+            var alpha = Exact(ref s.MaterialAlpha, pixels);
             for (var i = 0; i < pixels; i++) alpha[i] = rgba[i * 4 + 3];
             foreach (var pass in MaterialPassFiles.All)
             {
                 if (!view.Writes(pass.Exr)) continue;
-                var straight = MaterialPassResolve.Resolve(frame, pass, alpha);
-                Save(view, pass.Exr, Exr(MaterialEncoding.ExrOrder(straight, width, height), width, height, 4));
+                var straight = MaterialPassResolve.Resolve(frame, pass, alpha, Exact(ref s.MaterialValues, pixels * 4));
+                Save(view, pass.Exr, Exr(MaterialEncoding.ExrOrder(straight, width, height, Exact(ref s.MaterialExr, pixels * 4)), width, height, 4));
                 if (pass.Png is DatasetFileKind png)
-                    Save(view, png, Png(MaterialEncoding.PngBytes(straight, alpha, pass.Encoding), width, height, PngPixelFormat.Rgba8, ref encoding));
+                    Save(view, png, Png(MaterialEncoding.PngBytes(straight, alpha, pass.Encoding, rgba), width, height, PngPixelFormat.Rgba8, ref encoding));
             }
             Save(view, DatasetFileKind.MaterialCoveragePng, Png(MaterialPassResolve.Coverage(frame), width, height, PngPixelFormat.Gray8, ref encoding));
             Interlocked.Add(ref _encodeTicks, encoding);

@@ -20,10 +20,12 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>The PNG's RGBA bytes, top row first: RGB encoded as <paramref name="encoding"/> says, A = <paramref name="alpha"/>.</summary>
-        public static byte[] PngBytes(float[] straight, byte[] alpha, MaterialPngEncoding encoding)
+        public static byte[] PngBytes(float[] straight, byte[] alpha, MaterialPngEncoding encoding) => PngBytes(straight, alpha, encoding, new byte[alpha.Length * 4]);
+
+        /// <summary><see cref="PngBytes(float[], byte[], MaterialPngEncoding)"/> into <paramref name="rgba"/>, which it returns.</summary>
+        public static byte[] PngBytes(float[] straight, byte[] alpha, MaterialPngEncoding encoding, byte[] rgba)
         {
             var n = alpha.Length;
-            var rgba = new byte[n * 4];
             for (int i = 0, o = 0; i < n; i++, o += 4)
             {
                 for (var c = 0; c < 3; c++)
@@ -34,9 +36,11 @@ namespace NerfDatasetCreator
         }
 
         /// <summary>The values bottom row first, as <see cref="ExrEncoder"/> takes them (texture order).</summary>
-        public static float[] ExrOrder(float[] straight, int width, int height)
+        public static float[] ExrOrder(float[] straight, int width, int height) => ExrOrder(straight, width, height, new float[straight.Length]);
+
+        /// <summary><see cref="ExrOrder(float[], int, int)"/> into <paramref name="flipped"/>, which it returns.</summary>
+        public static float[] ExrOrder(float[] straight, int width, int height, float[] flipped)
         {
-            var flipped = new float[straight.Length];
             RowOrder.FlipRows(straight, flipped, width * 4, height);
             return flipped;
         }

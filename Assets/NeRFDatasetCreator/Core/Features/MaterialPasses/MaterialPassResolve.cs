@@ -15,22 +15,27 @@ namespace NerfDatasetCreator
         /// OutputWidth × OutputHeight × 4 floats (R G B A, top row first) of <paramref name="pass"/>; a grey pass is written
         /// R = G = B. <paramref name="alpha"/> holds one byte per output pixel, top row first.
         /// </summary>
-        public static float[] Resolve(RawFrame frame, MaterialPass pass, byte[] alpha)
+        public static float[] Resolve(RawFrame frame, MaterialPass pass, byte[] alpha) =>
+            Resolve(frame, pass, alpha, new float[frame.OutputWidth * frame.OutputHeight * 4]);
+
+        /// <summary><see cref="Resolve(RawFrame, MaterialPass, byte[])"/> into <paramref name="output"/> (the capture reuses one array per thread), which it returns.</summary>
+        public static float[] Resolve(RawFrame frame, MaterialPass pass, byte[] alpha, float[] output)
         {
             var samples = pass.Samples(frame);
             Require(frame, "frame.Material" + char.ToUpperInvariant(pass.Name[0]) + pass.Name.Substring(1), samples, pass.FloatsPerSample);
             int k = frame.Supersampling, width = frame.Width, ow = frame.OutputWidth, oh = frame.OutputHeight, stride = frame.MaskBytesPerPixel, per = pass.FloatsPerSample;
             RawFrame.RequireOutput("alpha", alpha, (long)ow * oh, "bytes (1 per output pixel)");
             byte[] mask = frame.Mask, supported = frame.MaterialSupported;
-            var output = new float[ow * oh * 4];
+            RawFrame.RequireOutput("output", output, (long)ow * oh * 4, "floats (4 per output pixel)");
             for (int oy = 0, o = 0; oy < oh; oy++)
             {
                 int blockRow = RowOrder.SourceBlockRow(oy, oh, k);
                 for (int ox = 0; ox < ow; ox++, o += 4)
                 {
                     var a = alpha[oy * ow + ox];
-                    if (a == 0) continue; // (0, 0, 0, 0)
+                    output[o] = output[o + 1] = output[o + 2] = 0;
                     output[o + 3] = a / 255f;
+                    if (a == 0) continue; // (0, 0, 0, 0)
                     long weights = 0;
                     double r = 0, g = 0, b = 0;
                     for (int dy = 0; dy < k; dy++)
