@@ -235,7 +235,8 @@ namespace NerfDatasetCreator
         /// (the sharp, mid-pose one with motion blur; after the lens): per pass its EXR and PNG
         /// (<see cref="MaterialPassResolve"/>, <see cref="MaterialEncoding"/>), and the coverage PNG. Alpha is the colour
         /// image's coverage: the frame resolved as the colour image is, on a transparent background — the colour image's
-        /// own alpha unless the settings' background is solid (then that image is opaque, and the passes still carry coverage).
+        /// own alpha unless the settings' background is solid (then that image is opaque, and the passes still carry coverage);
+        /// with a sky, which leaves the colour no coverage, the mask's.
         /// </summary>
         public void WriteMaterials(PlannedView view, RawFrame frame)
         {
@@ -245,10 +246,15 @@ namespace NerfDatasetCreator
             int width = frame.OutputWidth, height = frame.OutputHeight, pixels = width * height;
             var s = scratch ?? (scratch = new Scratch());
             var rgba = Exact(ref s.MaterialRgba, pixels * 4);
-            if (frame.ColorOverBlack != null) DifferenceMatting.Resolve(frame, rgba, Background.Transparent, _backgroundIsClear);
-            else StraightAlpha.Resolve(frame, rgba, Background.Transparent);
             var alpha = Exact(ref s.MaterialAlpha, pixels);
-            for (var i = 0; i < pixels; i++) alpha[i] = rgba[i * 4 + 3];
+            // A sky is rendered into both colour halves, so the colour holds no coverage (alpha 1 everywhere): the mask's.
+            if (!_backgroundIsClear) MaskEncoding.Encode(frame, alpha);
+            else
+            {
+                if (frame.ColorOverBlack != null) DifferenceMatting.Resolve(frame, rgba, Background.Transparent, _backgroundIsClear);
+                else StraightAlpha.Resolve(frame, rgba, Background.Transparent);
+                for (var i = 0; i < pixels; i++) alpha[i] = rgba[i * 4 + 3];
+            }
             foreach (var pass in MaterialPassFiles.All)
             {
                 if (!view.Writes(pass.Exr)) continue;

@@ -158,6 +158,18 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void UnderASkyTheAlphaIsTheMasksCoverage()
+        {
+            // A sky leaves the colour image opaque everywhere: the passes take the mask's coverage (glass 255, not its 50 % alpha).
+            var folder = AnalyticDataset.Write(_temp.Path, "sky", new AnalyticDataset.Options { Train = 2, Val = 1, Test = 1, PointCloud = 0, Materials = true, Configure = s => s.Background = BackgroundSettings.Parse("sky") });
+            var mask = PngReader.Read(Path.Combine(folder, "train", "r_0_mask_0000.png")).Samples;
+            var albedo = PngReader.Read(Path.Combine(folder, "train", "r_0_albedo.png")).Samples;
+            Assert.That(Enumerable.Range(0, mask.Length).Select(i => albedo[i * 4 + 3]), Is.EqualTo(mask));
+            Assert.That(mask.Count(m => m > 0 && m < 255), Is.GreaterThan(0), "edges: coverage between 0 and 255");
+            Assert.That(Materials(folder, out var report).Status, Is.EqualTo(DatasetCheckStatus.Passed));
+        }
+
+        [Test]
         public void TheCheckSkipsADatasetWithoutMaterials()
         {
             var folder = AnalyticDataset.Write(_temp.Path, "plain", new AnalyticDataset.Options { Train = 2, Val = 1, Test = 1, PointCloud = 0 });
