@@ -33,6 +33,8 @@ namespace NerfDatasetCreator
         {
             public byte[] Rgba = new byte[0], Mask = new byte[0], Rgb = new byte[0];
             public ushort[] Millimetres = new ushort[0], Ids = new ushort[0];
+            public byte[] MaterialRgba = new byte[0], MaterialAlpha = new byte[0];
+            public float[] MaterialValues = new float[0], MaterialExr = new float[0];
         }
 
         [ThreadStatic] static Scratch scratch;
@@ -224,6 +226,44 @@ namespace NerfDatasetCreator
             // With exposure, the sharp image is exposed like the blurred one, so that the two differ by the motion only.
             if (_exposure != null && _exposure.Applies(view.Split)) ExposureWhiteBalance.ApplyRgba(rgba, _exposure.For(view.Split, view.Index));
             Save(view, DatasetFileKind.SharpPng, Png(rgba, width, height, PngPixelFormat.Rgba8, ref encoding));
+            Interlocked.Add(ref _encodeTicks, encoding);
+            Interlocked.Add(ref _writeTicks, Stopwatch.GetTimestamp() - started);
+        }
+
+        /// <summary>
+        /// The material passes (settings <c>materials</c>) of <paramref name="frame"/>, the view's colour render at its pose
+        /// (the sharp, mid-pose one with motion blur; after the lens): per pass its EXR and PNG
+        /// (<see cref="MaterialPassResolve"/>, <see cref="MaterialEncoding"/>), and the coverage PNG. Alpha is the colour
+        /// image's coverage: the frame resolved as the colour image is, on a transparent background — the colour image's
+        /// own alpha unless the settings' background is solid (then that image is opaque, and the passes still carry coverage);
+        /// with a sky, which leaves the colour no coverage, the mask's.
+        /// </summary>
+        public void WriteMaterials(PlannedView view, RawFrame frame)
+        {
+            if (!MaterialPassFiles.Writes(view)) return;
+            long started = Stopwatch.GetTimestamp();
+            long encoding = 0;
+            int width = frame.OutputWidth, height = frame.OutputHeight, pixels = width * height;
+            var s = scratch ?? (scratch = new Scratch());
+            var rgba = Exact(ref s.MaterialRgba, pixels * 4);
+            var alpha = Exact(ref s.MaterialAlpha, pixels);
+            // A sky is rendered into both colour halves, so the colour holds no coverage (alpha 1 everywhere): the mask's.
+            if (!_backgroundIsClear) MaskEncoding.Encode(frame, alpha);
+            else
+            {
+                if (frame.ColorOverBlack != null) DifferenceMatting.Resolve(frame, rgba, Background.Transparent, _backgroundIsClear);
+                else StraightAlpha.Resolve(frame, rgba, Background.Transparent);
+                for (var i = 0; i < pixels; i++) alpha[i] = rgba[i * 4 + 3];
+            }
+            foreach (var pass in MaterialPassFiles.All)
+            {
+                if (!view.Writes(pass.Exr)) continue;
+                var straight = MaterialPassResolve.Resolve(frame, pass, alpha, Exact(ref s.MaterialValues, pixels * 4));
+                Save(view, pass.Exr, Exr(MaterialEncoding.ExrOrder(straight, width, height, Exact(ref s.MaterialExr, pixels * 4)), width, height, 4));
+                if (pass.Png is DatasetFileKind png)
+                    Save(view, png, Png(MaterialEncoding.PngBytes(straight, alpha, pass.Encoding, rgba), width, height, PngPixelFormat.Rgba8, ref encoding));
+            }
+            Save(view, DatasetFileKind.MaterialCoveragePng, Png(MaterialPassResolve.Coverage(frame), width, height, PngPixelFormat.Gray8, ref encoding));
             Interlocked.Add(ref _encodeTicks, encoding);
             Interlocked.Add(ref _writeTicks, Stopwatch.GetTimestamp() - started);
         }

@@ -66,6 +66,7 @@ namespace NerfDatasetCreator
                 // with it; one of its own reuses the thread's arrays only at another size than the colour's (else it would
                 // share them with the colour frame's passes).
                 var sharp = _lens.Resample(colour, reuseThreadBuffers: blurred == null);
+                MaterialPassLens.Carry(_lens, colour, sharp);
                 if (blurred != null)
                 {
                     var distortedBlur = _lens.Resample(blurred, reuseThreadBuffers: true);
@@ -77,6 +78,8 @@ namespace NerfDatasetCreator
                 else data = ReferenceEquals(data, colour) ? sharp : _lens.Resample(data, reuseThreadBuffers: data.Supersampling != colour.Supersampling);
                 colour = sharp;
             }
+            // The material passes are of the colour render at the view's pose (the sharp one with motion blur), like depth and normals.
+            Files.WriteMaterials(view, colour);
             if (blurred == null)
             {
                 Files.Write(view, colour, data, countMatting: !countApart);

@@ -58,6 +58,7 @@ namespace NerfDatasetCreator
                 InstanceMaskCheck.For(root, views),
                 new ExposureCheck(root),
                 new HdrCheck(root),
+                new MaterialPassCheck(root, config.Config),
                 new MotionBlurCheck(),
                 geometryPack,
             };

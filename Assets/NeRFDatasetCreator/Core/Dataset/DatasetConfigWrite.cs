@@ -63,6 +63,7 @@ namespace NerfDatasetCreator
                         w.WritePropertyName(TimeRecord.Key);
                         TimeRecord.Write(w, plan.Time, plan.Settings.Time);
                     }
+                    MaterialRecord.Write(w, plan.Settings, provenance.Materials);
                     if (pointCloud != null)
                     {
                         w.WritePropertyName(PointCloudRecord.Key);

@@ -25,5 +25,21 @@ namespace NerfDatasetCreator
         SharpPng,
         /// <summary>Float32 RGBA EXR, linear colour with straight alpha before the clip to [0, 1] (settings <c>hdr</c>): <c>r_7_hdr.exr</c>.</summary>
         HdrExr,
+        /// <summary>Material passes (settings <c>materials</c>, Documentation~/materials.md): the base colour as float32 RGBA EXR (linear, straight, A = the colour image's coverage) and as 8-bit sRGB RGBA PNG.</summary>
+        AlbedoExr,
+        AlbedoPng,
+        /// <summary>Metallic: float32 RGBA EXR (R = G = B) and 8-bit RGBA PNG, linear (R = G = B = round(255·metallic)).</summary>
+        MetallicExr,
+        MetallicPng,
+        /// <summary>Perceptual roughness (1 − smoothness), encoded as metallic.</summary>
+        RoughnessExr,
+        RoughnessPng,
+        /// <summary>Specular colour (specular-setup shaders), encoded as albedo.</summary>
+        SpecularExr,
+        SpecularPng,
+        /// <summary>Emission: float32 RGBA EXR, linear (may exceed 1), straight; no PNG.</summary>
+        EmissionExr,
+        /// <summary>8-bit grey PNG, 255 where the shader's parameters were read exactly, 0 elsewhere (edge coverage between): <c>r_7_material_coverage.png</c>.</summary>
+        MaterialCoveragePng,
     }
 }

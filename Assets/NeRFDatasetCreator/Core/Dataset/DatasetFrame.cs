@@ -46,6 +46,7 @@ namespace NerfDatasetCreator
         FrameIntrinsics _intrinsics;
         FrameShutter _shutter;
         FrameExposure _exposure;
+        FrameMaterials _materials;
         IReadOnlyList<string> _distortionKeys;
 
         /// <summary>The frame's own camera keys (<c>fl_x</c>, <c>w</c>, …, which override the file's), <see cref="FrameIntrinsics.None"/> without.</summary>
@@ -59,6 +60,9 @@ namespace NerfDatasetCreator
 
         /// <summary>The exposure keys (<see cref="ExposureKeys.Read"/>).</summary>
         public FrameExposure Exposure => _exposure ?? (_exposure = ExposureKeys.Read(Json));
+
+        /// <summary>The material files the frame names (<see cref="MaterialKeys.Read"/>).</summary>
+        public FrameMaterials Materials => _materials ?? (_materials = MaterialKeys.Read(this));
 
         /// <summary>The lens coefficients (k1…p2) the frame or its file gives a non-zero number (<see cref="TransformsLens.NonZeroCoefficients"/>).</summary>
         public IReadOnlyList<string> DistortionKeys => _distortionKeys ?? (_distortionKeys = Json == null ? Array.Empty<string>() : TransformsLens.NonZeroCoefficients(File?.Top, Json));

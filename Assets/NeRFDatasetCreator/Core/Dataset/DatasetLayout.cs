@@ -58,6 +58,16 @@ namespace NerfDatasetCreator
                 case DatasetFileKind.CleanColor: return "_clean.png";
                 case DatasetFileKind.SharpPng: return "_sharp_0000.png";
                 case DatasetFileKind.HdrExr: return "_hdr.exr";
+                case DatasetFileKind.AlbedoExr: return "_albedo.exr";
+                case DatasetFileKind.AlbedoPng: return "_albedo.png";
+                case DatasetFileKind.MetallicExr: return "_metallic.exr";
+                case DatasetFileKind.MetallicPng: return "_metallic.png";
+                case DatasetFileKind.RoughnessExr: return "_roughness.exr";
+                case DatasetFileKind.RoughnessPng: return "_roughness.png";
+                case DatasetFileKind.SpecularExr: return "_specular.exr";
+                case DatasetFileKind.SpecularPng: return "_specular.png";
+                case DatasetFileKind.EmissionExr: return "_emission.exr";
+                case DatasetFileKind.MaterialCoveragePng: return "_material_coverage.png";
                 default: throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a dataset file kind");
             }
         }
@@ -89,6 +99,7 @@ namespace NerfDatasetCreator
             if (ExposurePlan.Of(settings)?.WritesClean(split) == true) kinds.Add(DatasetFileKind.CleanColor);
             if (ShutterPlanning.IsOn(settings)) kinds.Add(DatasetFileKind.SharpPng);
             if (settings.Hdr != null && settings.Hdr.Applies(split)) kinds.Add(DatasetFileKind.HdrExr);
+            MaterialPassFiles.AddKinds(settings.Materials, kinds);
             return kinds;
         }
     }

@@ -28,6 +28,9 @@ namespace NerfDatasetCreator
         /// <summary>The Editor's facts about the target and project for <c>unity_frame</c>, or null outside Unity (set by the capture).</summary>
         public UnityFrameFacts UnityFrame { get; set; }
 
+        /// <summary>How the material passes were rendered (pipeline, shaders read exactly and not), or null outside a capture with materials (set by the capture; <see cref="MaterialRecord"/>).</summary>
+        public MaterialCaptureFacts Materials { get; set; }
+
         /// <summary>Measured figures (e.g. "viewsPerSecond"), written in name order.</summary>
         public SortedDictionary<string, double> Statistics { get; } = new SortedDictionary<string, double>(StringComparer.Ordinal);
     }

@@ -44,6 +44,9 @@ namespace NerfDatasetCreator
             /// <summary>Instance and semantic maps with labels.json (<see cref="LabelObjects"/>: renderers are objects, classes from tags).</summary>
             public bool Labels { get; set; }
 
+            /// <summary>Every material pass (<see cref="AnalyticMaterials"/>): settings <c>materials</c> with all five passes, and the passes rendered.</summary>
+            public bool Materials { get; set; }
+
             /// <summary>One shard of a sharded capture (default: the whole dataset).</summary>
             public ShardSpec Shard { get; set; }
 
@@ -151,6 +154,7 @@ namespace NerfDatasetCreator
             }
             if (options.Labels) settings.Labels = new LabelSettings { Enabled = true, Instances = InstanceRule.Renderer, ClassFrom = ClassSource.Tag };
             if (options.MotionBlur != null) settings.MotionBlur = options.MotionBlur.Clone();
+            if (options.Materials) settings.Materials = new MaterialPassSettings { On = true, Specular = true, Emission = true };
             settings.GeometryPackEveryStep = options.GeometryPackEveryStep;
             options.Configure?.Invoke(settings);
             return settings;
@@ -201,7 +205,8 @@ namespace NerfDatasetCreator
             options.AfterViews?.Invoke(pipeline);
             var cloud = options.PointCloud > 0 ? AnalyticScene.Layout(run.Plan.Normalisation, Centre, 0, options.Look).Surface(options.PointCloud) : null;
             var meshesAt = options.MeshesAt;
-            run.Finish(session, new Provenance(options.Written), cloud, meshesAt?.Invoke(0), labels,
+            var provenance = new Provenance(options.Written) { Materials = options.Materials ? AnalyticMaterials.Facts() : null };
+            run.Finish(session, provenance, cloud, meshesAt?.Invoke(0), labels,
                 meshesAt == null || run.Plan.Time == null ? (Func<int, IReadOnlyList<SurfaceMesh>>)null : k => meshesAt(run.Plan.Time.NormalisedOf(k)));
             return run.DatasetFolder;
         }
@@ -283,6 +288,15 @@ namespace NerfDatasetCreator
                 Depth = new float[w * h], Normals = new float[w * h * 4], NormalsInUnityWorld = false,
                 InstanceIds = options.Labels ? new ushort[w * h] : null,
             };
+            if (options.Materials)
+            {
+                frame.MaterialAlbedo = new float[w * h * 4];
+                frame.MaterialMetallic = new float[w * h];
+                frame.MaterialRoughness = new float[w * h];
+                frame.MaterialSpecular = new float[w * h * 4];
+                frame.MaterialEmission = new float[w * h * 4];
+                frame.MaterialSupported = new byte[w * h];
+            }
             var light = new Vector3d(0.3, -0.5, 0.8).Normalized();
             // The colour arrays of each compositing depth, reused from sample to sample (no garbage per ray).
             var scratch = new double[2 * (CompositeDepth + 1)][];
@@ -308,7 +322,12 @@ namespace NerfDatasetCreator
                     }
                     if (double.IsInfinity(first)) continue;
                     frame.Mask[p] = 255;
-                    if (frame.InstanceIds != null && scene.Trace(o, d, 0, out _, out _, out _, out _, out var id)) frame.InstanceIds[p] = (ushort)id;
+                    if ((frame.InstanceIds != null || options.Materials) && scene.Trace(o, d, 0, out _, out _, out var surface, out _, out var id))
+                    {
+                        if (frame.InstanceIds != null) frame.InstanceIds[p] = (ushort)id;
+                        // The material passes render the nearest surface's own parameters, unlit (AnalyticMaterials).
+                        if (options.Materials) AnalyticMaterials.Sample(frame, p, id, surface);
+                    }
                     // The ray's camera-space z component is −1, so its parameter is the z-depth (output units).
                     var depth = options.DepthAlongRay ? first * d.Length : first;
                     frame.Depth[p] = (float)(depth / scale);

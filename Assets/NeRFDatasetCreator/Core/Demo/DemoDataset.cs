@@ -116,6 +116,9 @@ namespace NerfDatasetCreator
                 case DemoPreset.Hdr:
                     options.Configure = s => s.Hdr.On = true;
                     break;
+                case DemoPreset.Materials:
+                    options.Materials = true;
+                    break;
                 case DemoPreset.Blur:
                     options.MotionBlur = new MotionBlurSettings { Enabled = true, Camera = ShutterCameraMotion.Shake, ShakeDistance = 0.1, ShakeDegrees = 1, SubFrames = BlurSubFrames };
                     break;

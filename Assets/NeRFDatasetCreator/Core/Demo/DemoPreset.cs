@@ -19,12 +19,15 @@ namespace NerfDatasetCreator
         /// <summary>One camera moving around the target over time (monocular dynamic, depth on): a SLAM sequence's source.</summary>
         Monocular,
         Hdr,
+
+        /// <summary>Every material pass (albedo, metallic, roughness, specular, emission) beside each view (<see cref="AnalyticMaterials"/>).</summary>
+        Materials,
     }
 
     /// <summary>The presets' command-line names, in <see cref="DemoPreset"/> order.</summary>
     public static class DemoPresets
     {
-        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur", "monocular", "hdr" };
+        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur", "monocular", "hdr", "materials" };
 
         public static string Name(DemoPreset preset) => Names[(int)preset];
 

@@ -13,5 +13,15 @@ namespace NerfDatasetCreator
         public const string SpecularPath = "specular_path";
         public const string EmissionPath = "emission_path";
         public const string CoveragePath = "material_coverage_path";
+
+        /// <summary>The keys of the passes <paramref name="v"/> writes, in <see cref="MaterialPassFiles.All"/>'s order, then the coverage's.</summary>
+        internal static void WriteFrameFiles(TransformsFramesText frame, PlannedView v)
+        {
+            foreach (var pass in MaterialPassFiles.All) frame.FileKey(v, pass.KeyFile, pass.Key);
+            frame.FileKey(v, DatasetFileKind.MaterialCoveragePng, CoveragePath);
+        }
+
+        /// <summary>The material files <paramref name="frame"/> names (<see cref="FrameMaterials"/>), resolved from its keys only.</summary>
+        public static FrameMaterials Read(DatasetFrame frame) => FrameMaterials.Of(frame);
     }
 }

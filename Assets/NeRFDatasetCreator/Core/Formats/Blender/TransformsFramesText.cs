@@ -111,6 +111,7 @@ namespace NerfDatasetCreator
             LabelFrameKeys.WriteFrameFiles(this, v);
             ExposureKeys.WriteFrameFiles(this, v);
             HdrKeys.WriteFrameFiles(this, v);
+            MaterialKeys.WriteFrameFiles(this, v);
             MotionBlurKeys.WriteFrameFiles(this, v);
             Raw("\n        }");
         }
