@@ -25,5 +25,12 @@ namespace NerfDatasetCreator
         SharpPng,
         /// <summary>Float32 RGBA EXR, linear colour with straight alpha before the clip to [0, 1] (settings <c>hdr</c>): <c>r_7_hdr.exr</c>.</summary>
         HdrExr,
+        /// <summary>
+        /// Relighting: the view under each lighting condition, like <see cref="Color"/>: <c>r_7_light_sunset_090.png</c>.
+        /// One file per condition key (<see cref="DatasetLayout.RelitRelativePath"/>); <see cref="DatasetLayout.Suffix"/> has none.
+        /// </summary>
+        RelitPng,
+        /// <summary>Relighting with <c>hdr</c>: each condition's linear colour, like <see cref="HdrExr"/>: <c>r_7_light_sunset_090_hdr.exr</c>.</summary>
+        RelitHdrExr,
     }
 }

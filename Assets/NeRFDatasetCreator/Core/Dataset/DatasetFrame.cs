@@ -46,6 +46,7 @@ namespace NerfDatasetCreator
         FrameIntrinsics _intrinsics;
         FrameShutter _shutter;
         FrameExposure _exposure;
+        FrameRelit _relit;
         IReadOnlyList<string> _distortionKeys;
 
         /// <summary>The frame's own camera keys (<c>fl_x</c>, <c>w</c>, …, which override the file's), <see cref="FrameIntrinsics.None"/> without.</summary>
@@ -59,6 +60,16 @@ namespace NerfDatasetCreator
 
         /// <summary>The exposure keys (<see cref="ExposureKeys.Read"/>).</summary>
         public FrameExposure Exposure => _exposure ?? (_exposure = ExposureKeys.Read(Json));
+
+        /// <summary>The relighting key <c>relit_paths</c> (<see cref="RelightingKeys.Read"/>).</summary>
+        public FrameRelit Relit => _relit ?? (_relit = RelightingKeys.Read(Json));
+
+        /// <summary>The relit image <c>relit_paths</c> names for <paramref name="key"/>, resolved inside the dataset or refused; null without it.</summary>
+        public DatasetFile RelitFile(string key)
+        {
+            var written = Relit.PathOf(key);
+            return written == null || File?.Root == null ? null : DatasetFile.Resolve(File.Root, RelightingKeys.RelitPaths + "." + key, written, false);
+        }
 
         /// <summary>The lens coefficients (k1…p2) the frame or its file gives a non-zero number (<see cref="TransformsLens.NonZeroCoefficients"/>).</summary>
         public IReadOnlyList<string> DistortionKeys => _distortionKeys ?? (_distortionKeys = Json == null ? Array.Empty<string>() : TransformsLens.NonZeroCoefficients(File?.Top, Json));

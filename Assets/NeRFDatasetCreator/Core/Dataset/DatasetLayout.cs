@@ -58,9 +58,22 @@ namespace NerfDatasetCreator
                 case DatasetFileKind.CleanColor: return "_clean.png";
                 case DatasetFileKind.SharpPng: return "_sharp_0000.png";
                 case DatasetFileKind.HdrExr: return "_hdr.exr";
+                case DatasetFileKind.RelitPng:
+                case DatasetFileKind.RelitHdrExr:
+                    throw new ArgumentOutOfRangeException(nameof(kind), kind, "a relit file is named by its condition key: use RelitRelativePath");
                 default: throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a dataset file kind");
             }
         }
+
+        /// <summary>
+        /// A relit view's suffix: <c>_light_sunset_090.png</c>, or <c>_light_sunset_090_hdr.exr</c> with <paramref name="hdr"/>
+        /// (the key is a lighting condition's, <see cref="LightingKeys"/>).
+        /// </summary>
+        public static string RelitSuffix(string key, bool hdr) => "_light_" + key + (hdr ? "_hdr.exr" : ".png");
+
+        /// <summary>The relit file's path relative to the dataset folder: <c>train/r_7_light_sunset_090.png</c>.</summary>
+        public static string RelitRelativePath(DatasetSplit split, int index, string key, bool hdr) =>
+            DatasetSplits.Name(split) + "/" + Stem(index) + RelitSuffix(key, hdr);
 
         /// <summary>The files every view of a split with these settings produces, colour first.</summary>
         public static IReadOnlyList<DatasetFileKind> FileKinds(SplitSettings split) => FileKinds(split, null);
@@ -89,6 +102,7 @@ namespace NerfDatasetCreator
             if (ExposurePlan.Of(settings)?.WritesClean(split) == true) kinds.Add(DatasetFileKind.CleanColor);
             if (ShutterPlanning.IsOn(settings)) kinds.Add(DatasetFileKind.SharpPng);
             if (settings.Hdr != null && settings.Hdr.Applies(split)) kinds.Add(DatasetFileKind.HdrExr);
+            LightingKeys.AddFileKinds(settings, split, kinds);
             return kinds;
         }
     }

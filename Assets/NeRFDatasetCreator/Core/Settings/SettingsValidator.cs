@@ -95,6 +95,7 @@ namespace NerfDatasetCreator
             problems.AddRange(LensSettingsValidator.Validate(settings));
             problems.AddRange(ExposureSettingsValidator.Validate(settings));
             problems.AddRange(HdrSettingsValidator.Validate(settings));
+            problems.AddRange(RelightingSettingsValidator.Validate(settings));
             problems.AddRange(MotionBlurSettingsValidator.Validate(settings));
             problems.AddRange(SparseViewsSettings.Validate(settings));
 
