@@ -116,12 +116,33 @@ namespace NerfDatasetCreator
                 case DemoPreset.Hdr:
                     options.Configure = s => s.Hdr.On = true;
                     break;
+                case DemoPreset.Relight:
+                    options.Configure = s =>
+                    {
+                        s.Relighting = RelightConditions();
+                        s.Hdr.On = true; // the relit views' linear colour too (r_<i>_light_<key>_hdr.exr)
+                    };
+                    break;
                 case DemoPreset.Blur:
                     options.MotionBlur = new MotionBlurSettings { Enabled = true, Camera = ShutterCameraMotion.Shake, ShakeDistance = 0.1, ShakeDegrees = 1, SubFrames = BlurSubFrames };
                     break;
             }
             return options;
         }
+
+        /// <summary>
+        /// The relight preset's conditions: the analytic sky (<see cref="AnalyticSky"/>, no project file: its source is named)
+        /// at three rotations, and one shadow-casting point light above the target (output world, +Z up).
+        /// </summary>
+        public static RelightingSettings RelightConditions() => new RelightingSettings
+        {
+            On = true,
+            Conditions = new List<LightingCondition>
+            {
+                new LightingCondition { Name = "sky", Kind = LightingKind.Environment, File = "analytic sky (AnalyticSky)", Rotations = new double[] { 0, 120, 240 } },
+                new LightingCondition { Name = "olat-00", Kind = LightingKind.Point, Position = new double[] { 2, -2, 3 }, Intensity = 25 },
+            },
+        };
 
         /// <summary>
         /// Why demo must not write into <paramref name="folder"/>, or null: it writes only into a new or empty folder, or

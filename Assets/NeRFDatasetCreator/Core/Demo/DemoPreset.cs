@@ -19,12 +19,15 @@ namespace NerfDatasetCreator
         /// <summary>One camera moving around the target over time (monocular dynamic, depth on): a SLAM sequence's source.</summary>
         Monocular,
         Hdr,
+
+        /// <summary>Relighting: the views under an analytic sky at three rotations and one point light, with lights/ (issue 38).</summary>
+        Relight,
     }
 
     /// <summary>The presets' command-line names, in <see cref="DemoPreset"/> order.</summary>
     public static class DemoPresets
     {
-        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur", "monocular", "hdr" };
+        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur", "monocular", "hdr", "relight" };
 
         public static string Name(DemoPreset preset) => Names[(int)preset];
 
