@@ -59,6 +59,7 @@ namespace NerfDatasetCreator
                 new ExposureCheck(root),
                 new HdrCheck(root),
                 new MotionBlurCheck(),
+                new RelightCheck(root, config.Config),
                 geometryPack,
             };
             var multiView = new MultiViewGeometryCheck();
