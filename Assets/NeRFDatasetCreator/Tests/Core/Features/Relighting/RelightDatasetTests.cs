@@ -134,6 +134,19 @@ namespace NerfDatasetCreator.Tests
             Assert.That(Directory.Exists(Path.Combine(plain, "lights")), Is.False);
         }
 
+        [Test]
+        public void ARelightDatasetIsProvablyOursAndAStrayFileInLightsIsNot()
+        {
+            // "overwrite": "replace" deletes only what the plugin provably wrote (OwnDataset): the relit images and lights/ are.
+            Assert.That(OwnDataset.WhyNotOurs(_dataset), Is.Null);
+            var copy = Copy();
+            File.WriteAllText(Path.Combine(copy, "lights", "notes.txt"), "mine");
+            Assert.That(OwnDataset.WhyNotOurs(copy), Does.Contain("notes.txt").And.Contain("was not written by this plugin"));
+            var other = Copy();
+            File.WriteAllText(Path.Combine(other, "train", "r_0_light_Sky.png"), "not a key");
+            Assert.That(OwnDataset.WhyNotOurs(other), Does.Contain("r_0_light_Sky.png"));
+        }
+
         string Copy() => DatasetFaults.Copy(_dataset, _temp.Combine("fault-" + ++_copies));
 
         void Fails(string folder, string message)
