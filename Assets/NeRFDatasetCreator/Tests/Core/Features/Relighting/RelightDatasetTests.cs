@@ -147,6 +147,28 @@ namespace NerfDatasetCreator.Tests
             Assert.That(OwnDataset.WhyNotOurs(other), Does.Contain("r_0_light_Sky.png"));
         }
 
+        [Test]
+        public void ThroughALensEachConditionIsResampledLikeTheView()
+        {
+            // The capture's lens path: a wide pinhole render resampled into the distorted frame (ViewPipeline); the relit
+            // renders go through the same resampler, so they keep the view's size and alpha.
+            var lens = AnalyticDataset.Write(_temp.Path, "relight-lens", new AnalyticDataset.Options
+            {
+                Train = 2, Val = 1, Test = 1, PointCloud = 0,
+                Lens = new LensSettings { Model = "opencv", K1 = -0.12, K2 = 0.02 }, ThroughWideRender = true, DataAtOutputSize = false,
+                Configure = s => s.Relighting = new RelightingSettings
+                {
+                    On = true, Conditions = { new LightingCondition { Name = "olat-00", Kind = LightingKind.Point, Position = new double[] { 2, -2, 3 }, Intensity = 25 } },
+                },
+            });
+            var own = PngReader.Read(Path.Combine(lens, "train", "r_1.png"));
+            var relit = PngReader.Read(Path.Combine(lens, "train", "r_1_light_olat-00.png"));
+            Assert.That((relit.Width, relit.Height), Is.EqualTo((own.Width, own.Height)));
+            var largest = Enumerable.Range(0, own.Width * own.Height).Max(i => Math.Abs(relit.Samples[i * 4 + 3] - own.Samples[i * 4 + 3]));
+            Assert.That(largest, Is.LessThanOrEqualTo(RelightCheck.ToleranceCodes));
+            Assert.That(Relight(lens, out _).Status, Is.EqualTo(DatasetCheckStatus.Passed));
+        }
+
         string Copy() => DatasetFaults.Copy(_dataset, _temp.Combine("fault-" + ++_copies));
 
         void Fails(string folder, string message)
