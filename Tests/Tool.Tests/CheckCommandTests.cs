@@ -13,13 +13,13 @@ namespace NerfDatasetCreator.Tool.Tests
         Scratch _scratch;
         string _clean;
 
-        static readonly string[] Checks = { "dataset", "alpha vs mask", "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry", "straight alpha", "instance vs mask", "exposure", "hdr", "materials", "motion blur", "geometry pack vs depth", "instance reprojection", "records" };
+        static readonly string[] Checks = { "dataset", "alpha vs mask", "depth vs mask", "depth vs normals", "multi-view geometry", "point cloud vs masks", "colour vs geometry", "straight alpha", "instance vs mask", "exposure", "hdr", "materials", "motion blur", "relight", "geometry pack vs depth", "instance reprojection", "records" };
 
         [OneTimeSetUp]
         public void Render()
         {
             _scratch = new Scratch();
-            // With labels, a geometry pack, exposure (train views modified, clean images beside them), hdr and materials on, so that every check has something to pass.
+            // With labels, a geometry pack, exposure (train views modified, clean images beside them), hdr, materials and relighting on, so that every check has something to pass.
             _clean = AnalyticDataset.Write(_scratch.Root, "clean", new AnalyticDataset.Options
             {
                 Train = 6, Val = 2, Test = 2, MeshesAt = AnalyticSceneMeshes.At, Labels = true, Materials = true,
@@ -27,6 +27,7 @@ namespace NerfDatasetCreator.Tool.Tests
                 {
                     s.Exposure.Mode = ExposureMode.Random;
                     s.Hdr.On = true;
+                    s.Relighting = DemoDataset.RelightConditions();
                 },
             });
         }

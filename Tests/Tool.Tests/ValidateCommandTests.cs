@@ -79,7 +79,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(lines[6], Does.StartWith("  check <dir> [--split S] [--json FILE] [--max-views N] [--model <dir>]"));
             Assert.That(lines[7], Does.StartWith("  evaluate <dir> --renders <dir> [--split test|sparse_<n>]"));
             Assert.That(lines[8], Does.StartWith("  splits <dir> [--views 8[,3,...]]"));
-            Assert.That(lines[9], Does.StartWith("  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular|hdr|materials]"));
+            Assert.That(lines[9], Does.StartWith("  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular|hdr|materials|relight]"));
             Assert.That(lines[10], Does.StartWith("  place-splat <dir> --model <trained output> [--trainer 3dgs|nerfstudio|gsplat]"));
             Assert.That(lines[11], Does.StartWith("exit codes:"));
             Assert.That(lines[12], Is.EqualTo("nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version."));

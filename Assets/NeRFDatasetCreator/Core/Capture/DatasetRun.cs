@@ -102,16 +102,19 @@ namespace NerfDatasetCreator
         /// The capture's label table when its settings write id maps (<c>labels</c>): writes <c>labels.json</c> and the
         /// splits' previews (<see cref="LabelFiles"/>). Every shard writes the whole table; merge checks they agree.
         /// </param>
+        /// <param name="environments">Relighting's environment maps by condition name, in the output world (<see cref="LightsFile"/>); needed when the settings relight with an environment.</param>
         /// <param name="geometryProgress">(steps done, steps) while the per-step geometry pack is written (<see cref="GeometryPackWriter.Write"/>); may be null.</param>
         public void Finish(DatasetWriteSession session, Provenance provenance, IReadOnlyList<CloudPoint> pointCloud = null,
             IReadOnlyList<SurfaceMesh> targetMeshes = null, LabelTable labels = null, Func<int, IReadOnlyList<SurfaceMesh>> targetMeshesAtStep = null,
-            Action<int, int> geometryProgress = null)
+            Action<int, int> geometryProgress = null, IReadOnlyDictionary<string, EnvironmentMap> environments = null)
         {
             if (FullPlan.Settings.Labels != null && FullPlan.Settings.Labels.Enabled)
             {
                 if (labels == null) throw new InvalidOperationException("This capture writes instance/semantic maps; pass its label table to Finish so labels.json is written.");
                 LabelFiles.Write(session, Plan, labels);
             }
+            // Relighting: lights/lights.json and each environment's equirect (every shard writes them, as labels.json).
+            LightsFile.Write(session, FullPlan.Settings, environments);
             var geometry = WritesGeometryPack ? GeometryPackWriter.Write(session, Plan, targetMeshes, targetMeshesAtStep, geometryProgress) : null;
             PointCloudRecord record = null;
             if (pointCloud != null && pointCloud.Count > 0)

@@ -122,6 +122,7 @@ namespace NerfDatasetCreator
             }
             else Save(view, DatasetFileKind.Color, Png(rgba, width, height, PngPixelFormat.Rgba8, ref encoding));
             if (wantsMask) Save(view, DatasetFileKind.MaskPng, Png(mask, width, height, PngPixelFormat.Gray8, ref encoding));
+            if (view.Writes(DatasetFileKind.RelitPng)) WriteRelit(view, colour, rgba, ref encoding);
 
             if (view.Writes(DatasetFileKind.DepthPng))
             {
@@ -155,6 +156,29 @@ namespace NerfDatasetCreator
             Interlocked.Add(ref _encodeTicks, encoding);
             Interlocked.Add(ref _writeTicks, Stopwatch.GetTimestamp() - started);
             Interlocked.Increment(ref _viewsWritten);
+        }
+
+        /// <summary>
+        /// Relighting: the view under each lighting condition (<see cref="RawFrame.Relit"/>), through the colour stages of
+        /// the view's own image — difference matting (or straight alpha from the view's mask), the linear HDR image — with
+        /// the view's geometry (<see cref="RelitFrames"/>), so its alpha is the view's. Exposure and white balance are not
+        /// applied: a relit image is ground truth for one light, compared across methods (Documentation~/maintainers/relighting.md).
+        /// <paramref name="rgba"/> is the thread's colour array, free again once the view's image is encoded.
+        /// </summary>
+        void WriteRelit(PlannedView view, RawFrame colour, byte[] rgba, ref long encoding)
+        {
+            int width = colour.OutputWidth, height = colour.OutputHeight;
+            foreach (var key in view.RelitKeys)
+            {
+                RawFrame relit = null;
+                colour.Relit?.TryGetValue(key, out relit);
+                var frame = RelitFrames.WithViewGeometry(key, relit, colour);
+                if (frame.ColorOverBlack != null) DifferenceMatting.Resolve(frame, rgba, _background, _backgroundIsClear);
+                else StraightAlpha.Resolve(frame, rgba, _background, null);
+                SaveAs(DatasetLayout.RelitRelativePath(view.Split, view.Index, key, false), Png(rgba, width, height, PngPixelFormat.Rgba8, ref encoding));
+                if (view.Writes(DatasetFileKind.RelitHdrExr))
+                    SaveAs(DatasetLayout.RelitRelativePath(view.Split, view.Index, key, true), Exr(HdrColour.Resolve(frame, _background), width, height, 4));
+            }
         }
 
         /// <summary>The instance and semantic maps (<see cref="IdMajority"/>) from whichever frame carries the id pass; returns the encoding ticks.</summary>
@@ -290,9 +314,11 @@ namespace NerfDatasetCreator
             return _encodeExr(pixels, width, height, channels);
         }
 
-        void Save(PlannedView view, DatasetFileKind kind, byte[] bytes)
+        void Save(PlannedView view, DatasetFileKind kind, byte[] bytes) => SaveAs(DatasetLayout.RelativePath(view.Split, view.Index, kind), bytes);
+
+        void SaveAs(string relativePath, byte[] bytes)
         {
-            var path = _session.PathOf(DatasetLayout.RelativePath(view.Split, view.Index, kind));
+            var path = _session.PathOf(relativePath);
             var folder = Path.GetDirectoryName(path);
             bool created;
             lock (_createdFolders) created = _createdFolders.Contains(folder);

@@ -76,6 +76,8 @@ namespace NerfDatasetCreator
                     blurred = distortedBlur;
                 }
                 else data = ReferenceEquals(data, colour) ? sharp : _lens.Resample(data, reuseThreadBuffers: data.Supersampling != colour.Supersampling);
+                // Relighting: each condition's wide colour into the distorted frame too, into arrays of its own.
+                sharp.Relit = RelitFrames.Resampled(colour, relit => _lens.Resample(relit));
                 colour = sharp;
             }
             // The material passes are of the colour render at the view's pose (the sharp one with motion blur), like depth and normals.

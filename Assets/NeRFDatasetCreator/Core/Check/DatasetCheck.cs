@@ -60,6 +60,7 @@ namespace NerfDatasetCreator
                 new HdrCheck(root),
                 new MaterialPassCheck(root, config.Config),
                 new MotionBlurCheck(),
+                new RelightCheck(root, config.Config),
                 geometryPack,
             };
             var multiView = new MultiViewGeometryCheck();

@@ -57,6 +57,9 @@ namespace NerfDatasetCreator
         /// <summary>The <c>pointCloud</c> record, or null when there is none or it is malformed.</summary>
         public PointCloudRecord PointCloud => PointCloudRecord.FromConfig(Json);
 
+        /// <summary>The <c>relighting</c> record (<see cref="RelightingRecord"/>), or null.</summary>
+        public RelightingRecord Relighting => RelightingRecord.Read(Json);
+
         /// <summary>The <c>geometry</c> record as written (<see cref="GeometryPackRecord"/>), or null.</summary>
         public JObject GeometryRecord => Json[GeometryPackRecord.Key] as JObject;
 

@@ -74,6 +74,7 @@ namespace NerfDatasetCreator
                         w.WritePropertyName(GeometryPackRecord.Key);
                         JsonNumbers.WriteToken(w, geometry);
                     }
+                    RelightingRecord.Write(w, plan.Settings);
                     if (provenance.Statistics.Count > 0)
                     {
                         w.WritePropertyName("statistics");

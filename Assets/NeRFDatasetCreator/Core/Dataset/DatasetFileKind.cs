@@ -41,5 +41,12 @@ namespace NerfDatasetCreator
         EmissionExr,
         /// <summary>8-bit grey PNG, 255 where the shader's parameters were read exactly, 0 elsewhere (edge coverage between): <c>r_7_material_coverage.png</c>.</summary>
         MaterialCoveragePng,
+        /// <summary>
+        /// Relighting: the view under each lighting condition, like <see cref="Color"/>: <c>r_7_light_sunset_090.png</c>.
+        /// One file per condition key (<see cref="DatasetLayout.RelitRelativePath"/>); <see cref="DatasetLayout.Suffix"/> has none.
+        /// </summary>
+        RelitPng,
+        /// <summary>Relighting with <c>hdr</c>: each condition's linear colour, like <see cref="HdrExr"/>: <c>r_7_light_sunset_090_hdr.exr</c>.</summary>
+        RelitHdrExr,
     }
 }

@@ -47,6 +47,7 @@ namespace NerfDatasetCreator
         FrameShutter _shutter;
         FrameExposure _exposure;
         FrameMaterials _materials;
+        FrameRelit _relit;
         IReadOnlyList<string> _distortionKeys;
 
         /// <summary>The frame's own camera keys (<c>fl_x</c>, <c>w</c>, …, which override the file's), <see cref="FrameIntrinsics.None"/> without.</summary>
@@ -63,6 +64,15 @@ namespace NerfDatasetCreator
 
         /// <summary>The material files the frame names (<see cref="MaterialKeys.Read"/>).</summary>
         public FrameMaterials Materials => _materials ?? (_materials = MaterialKeys.Read(this));
+        /// <summary>The relighting key <c>relit_paths</c> (<see cref="RelightingKeys.Read"/>).</summary>
+        public FrameRelit Relit => _relit ?? (_relit = RelightingKeys.Read(Json));
+
+        /// <summary>The relit image <c>relit_paths</c> names for <paramref name="key"/>, resolved inside the dataset or refused; null without it.</summary>
+        public DatasetFile RelitFile(string key)
+        {
+            var written = Relit.PathOf(key);
+            return written == null || File?.Root == null ? null : DatasetFile.Resolve(File.Root, RelightingKeys.RelitPaths + "." + key, written, false);
+        }
 
         /// <summary>The lens coefficients (k1…p2) the frame or its file gives a non-zero number (<see cref="TransformsLens.NonZeroCoefficients"/>).</summary>
         public IReadOnlyList<string> DistortionKeys => _distortionKeys ?? (_distortionKeys = Json == null ? Array.Empty<string>() : TransformsLens.NonZeroCoefficients(File?.Top, Json));

@@ -68,9 +68,22 @@ namespace NerfDatasetCreator
                 case DatasetFileKind.SpecularPng: return "_specular.png";
                 case DatasetFileKind.EmissionExr: return "_emission.exr";
                 case DatasetFileKind.MaterialCoveragePng: return "_material_coverage.png";
+                case DatasetFileKind.RelitPng:
+                case DatasetFileKind.RelitHdrExr:
+                    throw new ArgumentOutOfRangeException(nameof(kind), kind, "a relit file is named by its condition key: use RelitRelativePath");
                 default: throw new ArgumentOutOfRangeException(nameof(kind), kind, "not a dataset file kind");
             }
         }
+
+        /// <summary>
+        /// A relit view's suffix: <c>_light_sunset_090.png</c>, or <c>_light_sunset_090_hdr.exr</c> with <paramref name="hdr"/>
+        /// (the key is a lighting condition's, <see cref="LightingKeys"/>).
+        /// </summary>
+        public static string RelitSuffix(string key, bool hdr) => "_light_" + key + (hdr ? "_hdr.exr" : ".png");
+
+        /// <summary>The relit file's path relative to the dataset folder: <c>train/r_7_light_sunset_090.png</c>.</summary>
+        public static string RelitRelativePath(DatasetSplit split, int index, string key, bool hdr) =>
+            DatasetSplits.Name(split) + "/" + Stem(index) + RelitSuffix(key, hdr);
 
         /// <summary>The files every view of a split with these settings produces, colour first.</summary>
         public static IReadOnlyList<DatasetFileKind> FileKinds(SplitSettings split) => FileKinds(split, null);
@@ -100,6 +113,7 @@ namespace NerfDatasetCreator
             if (ShutterPlanning.IsOn(settings)) kinds.Add(DatasetFileKind.SharpPng);
             if (settings.Hdr != null && settings.Hdr.Applies(split)) kinds.Add(DatasetFileKind.HdrExr);
             MaterialPassFiles.AddKinds(settings.Materials, kinds);
+            LightingKeys.AddFileKinds(settings, split, kinds);
             return kinds;
         }
     }

@@ -90,6 +90,12 @@ namespace NerfDatasetCreator
             /// <summary><c>"geometryPack": "everyStep"</c>.</summary>
             public bool GeometryPackEveryStep { get; set; }
 
+            /// <summary>
+            /// Relighting's environment maps by condition name (output world, <see cref="EnvironmentMap"/>); an environment
+            /// condition without one is lit by <see cref="AnalyticSky"/>.
+            /// </summary>
+            public IReadOnlyDictionary<string, EnvironmentMap> Environments { get; set; }
+
             /// <summary>Called with the pipeline once every view is written (its statistics: <see cref="ViewFileWriter.Matting"/>).</summary>
             public Action<ViewPipeline> AfterViews { get; set; }
 
@@ -181,10 +187,14 @@ namespace NerfDatasetCreator
             var lens = settings.Lens.ToDistortion();
             var wide = pipeline.WideRender;
             var scenes = new Dictionary<double, AnalyticScene>();
+            var lightings = new Dictionary<double, Dictionary<string, SurfaceShading>>();
+            var environments = EnvironmentsOf(settings, options);
             foreach (var view in run.Plan.Views)
             {
                 var time = view.Time?.Normalised ?? 0;
-                if (!scenes.ContainsKey(time)) scenes[time] = AnalyticScene.Layout(run.Plan.Normalisation, Centre, time, options.Look);
+                if (scenes.ContainsKey(time)) continue;
+                scenes[time] = AnalyticScene.Layout(run.Plan.Normalisation, Centre, time, options.Look);
+                lightings[time] = AnalyticLighting.For(settings, scenes[time], environments);
             }
             void WriteView(PlannedView view)
             {
@@ -193,6 +203,13 @@ namespace NerfDatasetCreator
                 var rays = RaysAt(view.TransformMatrix);
                 int w = wide != null ? wide.Width : run.Plan.Intrinsics.Width, h = wide != null ? wide.Height : run.Plan.Intrinsics.Height;
                 var frame = Render(scene, rays, w, h, options, run.Plan.Normalisation.Scale, options.Supersampling);
+                // Relighting: the same samples under each condition (the views' own keys, in order).
+                var shadings = lightings[view.Time?.Normalised ?? 0];
+                if (view.RelitKeys.Count > 0)
+                {
+                    frame.Relit = new Dictionary<string, RawFrame>(StringComparer.Ordinal);
+                    foreach (var key in view.RelitKeys) frame.Relit[key] = RenderColour(scene, rays, w, h, options.Supersampling, shadings[key]);
+                }
                 var data = options.DataAtOutputSize && options.Supersampling > 1 ? Render(scene, rays, w, h, options, run.Plan.Normalisation.Scale, 1) : frame;
                 var blurred = view.Motion != null ? Blurred(scene, view, frame, run.Plan, options, RaysAt, w, h) : null;
                 pipeline.Write(view, frame, data, blurred);
@@ -207,8 +224,21 @@ namespace NerfDatasetCreator
             var meshesAt = options.MeshesAt;
             var provenance = new Provenance(options.Written) { Materials = options.Materials ? AnalyticMaterials.Facts() : null };
             run.Finish(session, provenance, cloud, meshesAt?.Invoke(0), labels,
-                meshesAt == null || run.Plan.Time == null ? (Func<int, IReadOnlyList<SurfaceMesh>>)null : k => meshesAt(run.Plan.Time.NormalisedOf(k)));
+                meshesAt == null || run.Plan.Time == null ? (Func<int, IReadOnlyList<SurfaceMesh>>)null : k => meshesAt(run.Plan.Time.NormalisedOf(k)),
+                environments: environments);
             return run.DatasetFolder;
+        }
+
+        /// <summary>Each environment condition's map: the options' own, else <see cref="AnalyticSky"/>.</summary>
+        static Dictionary<string, EnvironmentMap> EnvironmentsOf(DatasetSettings settings, Options options)
+        {
+            var maps = new Dictionary<string, EnvironmentMap>(StringComparer.Ordinal);
+            if (settings.Relighting == null || !settings.Relighting.Enabled) return maps;
+            EnvironmentMap sky = null;
+            foreach (var c in settings.Relighting.Conditions)
+                if (c.Kind == LightingKind.Environment)
+                    maps[c.Name] = options.Environments != null && options.Environments.TryGetValue(c.Name, out var given) ? given : sky ?? (sky = AnalyticSky.Map());
+            return maps;
         }
 
         /// <summary>The sub-frame average of the colour renders at the schedule's poses (<see cref="ViewPipeline.SubFrameAverage"/>); mask, depth, normals and ids of the mid pose.</summary>
@@ -314,7 +344,7 @@ namespace NerfDatasetCreator
                         black[c] = 0;
                         white[c] = 1;
                     }
-                    Composite(scene, o, d, 0, light, black, white, out var first, out var normal, CompositeDepth, scratch);
+                    Composite(scene, o, d, 0, light, black, white, out var first, out var normal, CompositeDepth, scratch, null);
                     for (var c = 0; c < 3; c++)
                     {
                         frame.ColorOverBlack[p * 4 + c] = Half(black[c]);
@@ -338,6 +368,46 @@ namespace NerfDatasetCreator
             return frame;
         }
 
+        /// <summary>
+        /// The outgoing colour of a surface point (output world) with unit normal and base colour (linear), into
+        /// <paramref name="result"/>: a relighting condition (<see cref="AnalyticLighting"/>).
+        /// </summary>
+        public delegate void SurfaceShading(Vector3d point, Vector3d normal, double[] albedo, double[] result);
+
+        /// <summary>
+        /// The colour pair (over black and over white, halves that may exceed 1) of one view lit by <paramref name="shading"/>,
+        /// sampled exactly as <see cref="Render(AnalyticScene, RayOf, int, int, Options, double, int)"/> samples the view: a relit frame
+        /// (<see cref="RawFrame.Relit"/>) with the same geometry, so the same alpha.
+        /// </summary>
+        public static RawFrame RenderColour(AnalyticScene scene, RayOf rays, int width, int height, int k, SurfaceShading shading)
+        {
+            int w = width * k, h = height * k;
+            var frame = new RawFrame(w, h, k) { ColorOverBlack = new ushort[w * h * 4], ColorOverWhite = new ushort[w * h * 4] };
+            var light = new Vector3d(0.3, -0.5, 0.8).Normalized();
+            var scratch = new double[2 * (CompositeDepth + 1) + 1][];
+            for (var n = 0; n < scratch.Length; n++) scratch[n] = new double[3];
+            double[] black = scratch[0], white = scratch[1];
+            for (var ys = 0; ys < h; ys++)
+                for (var xs = 0; xs < w; xs++)
+                {
+                    double i = (xs + 0.5) / k, j = (ys + 0.5) / k;
+                    rays(i, j, out var o, out var d);
+                    var p = (h - 1 - ys) * w + xs; // readbacks are bottom row first
+                    for (var c = 0; c < 3; c++)
+                    {
+                        black[c] = 0;
+                        white[c] = 1;
+                    }
+                    Composite(scene, o, d, 0, light, black, white, out _, out _, CompositeDepth, scratch, shading);
+                    for (var c = 0; c < 3; c++)
+                    {
+                        frame.ColorOverBlack[p * 4 + c] = HalfFloat.FromFloat((float)black[c]);
+                        frame.ColorOverWhite[p * 4 + c] = HalfFloat.FromFloat((float)white[c]);
+                    }
+                }
+            return frame;
+        }
+
         /// <summary>How many surfaces along a ray are blended at most (the glass sphere's two and what lies behind).</summary>
         const int CompositeDepth = 3;
 
@@ -346,7 +416,7 @@ namespace NerfDatasetCreator
         /// Lambert-shaded colour, glass at its alpha. Returns the first surface's t and normal (depth and normals are of it).
         /// </summary>
         static void Composite(AnalyticScene scene, Vector3d o, Vector3d d, double after, Vector3d light, double[] black, double[] white,
-            out double first, out Vector3d firstNormal, int depthLeft, double[][] scratch)
+            out double first, out Vector3d firstNormal, int depthLeft, double[][] scratch, SurfaceShading shading)
         {
             first = double.PositiveInfinity;
             firstNormal = Vector3d.Zero;
@@ -361,10 +431,13 @@ namespace NerfDatasetCreator
                 behindBlack[c] = 0;
                 behindWhite[c] = 1;
             }
-            if (alpha < 1) Composite(scene, o, d, t + 1e-9, light, behindBlack, behindWhite, out _, out _, depthLeft - 1, scratch);
+            if (alpha < 1) Composite(scene, o, d, t + 1e-9, light, behindBlack, behindWhite, out _, out _, depthLeft - 1, scratch, shading);
+            // A relighting condition's shading (AnalyticLighting) replaces the demo's fixed light; the demo's own stays as it was.
+            var shaded = shading == null ? null : scratch[scratch.Length - 1];
+            shading?.Invoke(o + d * t, normal, colour, shaded);
             for (var c = 0; c < 3; c++)
             {
-                var surface = colour[c] * shade;
+                var surface = shaded != null ? shaded[c] : colour[c] * shade;
                 black[c] = alpha * surface + (1 - alpha) * behindBlack[c];
                 white[c] = alpha * surface + (1 - alpha) * behindWhite[c];
             }

@@ -22,12 +22,14 @@ namespace NerfDatasetCreator
 
         /// <summary>Every material pass (albedo, metallic, roughness, specular, emission) beside each view (<see cref="AnalyticMaterials"/>).</summary>
         Materials,
+        /// <summary>Relighting: the views under an analytic sky at three rotations and one point light, with lights/ (issue 38).</summary>
+        Relight,
     }
 
     /// <summary>The presets' command-line names, in <see cref="DemoPreset"/> order.</summary>
     public static class DemoPresets
     {
-        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur", "monocular", "hdr", "materials" };
+        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur", "monocular", "hdr", "materials", "relight" };
 
         public static string Name(DemoPreset preset) => Names[(int)preset];
 

@@ -14,7 +14,7 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class OwnDataset
     {
-        static readonly Regex ViewFile = new Regex(@"^r_\d+(\.png|_depth_0000\.png|_depth_0000\.exr|_normal_0000\.png|_normal_0000\.exr|_mask_0000\.png|_instance_0000\.png|_semantic_0000\.png|_clean\.png|_sharp_0000\.png|_hdr\.exr)$", RegexOptions.CultureInvariant);
+        static readonly Regex ViewFile = new Regex(@"^r_\d+(\.png|_depth_0000\.png|_depth_0000\.exr|_normal_0000\.png|_normal_0000\.exr|_mask_0000\.png|_instance_0000\.png|_semantic_0000\.png|_clean\.png|_sharp_0000\.png|_hdr\.exr|_light_[a-z0-9][a-z0-9-]{0,31}(_\d{3})?(\.png|_hdr\.exr))$", RegexOptions.CultureInvariant);
         static readonly string[] RootFiles = new[]
         {
             DatasetLayout.ConfigFileName, DatasetLayout.RigPreviewFileName, RigPreviewPicture.FileName, TargetPointCloud.FileName, ShardManifest.FileName,
@@ -28,6 +28,8 @@ namespace NerfDatasetCreator
         static readonly Tree Png = new Tree(f => f.EndsWith(".png", StringComparison.OrdinalIgnoreCase));
         static readonly Tree GeometryPack = new Tree(GeometryPackSteps.IsPackFile);
         static readonly Tree Splits = new Tree(SparseSplit.IsFileName);
+        // Relighting's lights/: lights.json and one <name>.exr per environment (LightsFile).
+        static readonly Tree Lights = new Tree(f => f == "lights.json" || Regex.IsMatch(f, "^[a-z0-9][a-z0-9-]{0,31}\\.exr$", RegexOptions.CultureInvariant));
         static readonly Tree CameraPaths = new Tree(f => DatasetSplits.Names.Any(s => s + ".json" == f));
         static readonly Tree Ngp = new Tree(f => f == NgpWriter.FileName || f == EvalProtocolFile.FileName).With(CameraPathFiles.FolderName, CameraPaths);
         static readonly Tree Colmap = new Tree(f => f == EvalProtocolFile.FileName)
@@ -117,6 +119,7 @@ namespace NerfDatasetCreator
                 else if (name == TargetMeshPly.Folder) inside = GeometryPack.Foreign(entry.FullName);
                 else if (name == CameraPathFiles.FolderName) inside = CameraPaths.Foreign(entry.FullName);
                 else if (name == SparseSplit.FolderName) inside = Splits.Foreign(entry.FullName);
+                else if (name == RelightingKeys.LightsFolder) inside = Lights.Foreign(entry.FullName);
                 else if (WorkingFolders.KindOf(name) == "convert") continue;
                 else return Stray(entry) + " was not written by this plugin";
                 if (inside != null) return inside;

@@ -9,18 +9,18 @@ namespace NerfDatasetCreator
     /// "OpenEXR File Layout"): Core's own <see cref="ExrEncoder"/> for runs without Unity (analytic datasets, the demo),
     /// where the Unity layer passes ImageConversion.EncodeArrayToEXR. Rows arrive bottom-up (texture order) as the
     /// delegate says, and are written top row first (increasing y), as Unity's files are. 1 channel is written as Y,
-    /// 4 as R G B A (stored in the header's alphabetical order A B G R).
+    /// 3 as R G B (the relighting environments, lights/&lt;name&gt;.exr), 4 as R G B A (stored in the header's alphabetical order A B G R).
     /// </summary>
     public static class ExrWriter
     {
         public static byte[] Encode(float[] pixels, int width, int height, int channels)
         {
-            if (channels != 1 && channels != 4) throw new ArgumentOutOfRangeException(nameof(channels), channels, "1 (Y) or 4 (RGBA) channels are written.");
+            if (channels != 1 && channels != 3 && channels != 4) throw new ArgumentOutOfRangeException(nameof(channels), channels, "1 (Y), 3 (RGB) or 4 (RGBA) channels are written.");
             if (width < 1 || height < 1) throw new ArgumentOutOfRangeException(nameof(width), width + "×" + height, "An image has at least one pixel.");
             if (pixels == null || pixels.LongLength < (long)width * height * channels) throw new ArgumentException("Fewer than " + channels + " floats per pixel.", nameof(pixels));
             // Stored channel order (alphabetical) and each one's offset in an input pixel.
-            var names = channels == 1 ? new[] { "Y" } : new[] { "A", "B", "G", "R" };
-            var offsets = channels == 1 ? new[] { 0 } : new[] { 3, 2, 1, 0 };
+            var names = channels == 1 ? new[] { "Y" } : channels == 3 ? new[] { "B", "G", "R" } : new[] { "A", "B", "G", "R" };
+            var offsets = channels == 1 ? new[] { 0 } : channels == 3 ? new[] { 2, 1, 0 } : new[] { 3, 2, 1, 0 };
             using (var stream = new MemoryStream())
             using (var w = new BinaryWriter(stream, Encoding.ASCII))
             {

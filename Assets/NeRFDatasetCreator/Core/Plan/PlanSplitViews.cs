@@ -22,6 +22,7 @@ namespace NerfDatasetCreator
         readonly double _distance;
         readonly SceneNormalisation _normalisation;
         readonly DatasetFileKind[] _kinds; // shared by the split's views
+        readonly string[] _relitKeys; // relighting's condition keys, shared by the split's views
         readonly ShutterPlanning _shutter; // motion blur, or null
 
         public PlanSplitViews(DatasetSettings settings, DatasetSplit split, int offset, ImportedSplit imported, Vector3d centre, double distance,
@@ -36,6 +37,7 @@ namespace NerfDatasetCreator
             _distance = distance;
             _normalisation = normalisation;
             _kinds = DatasetLayout.FileKinds(settings, split).ToArray();
+            _relitKeys = LightingKeys.All(settings).ToArray();
             if (imported != null) _cameras = imported.Cameras.Count;
             else
             {
@@ -110,7 +112,7 @@ namespace NerfDatasetCreator
                 pose = CameraPose(slot.Camera);
                 matrix = _normalisation.CameraToWorld(pose);
             }
-            return new PlannedView(Split, slot.Index, pose, matrix, _kinds, slot.Time, _shutter?.Motion(slot.Camera, slot.Time, index));
+            return new PlannedView(Split, slot.Index, pose, matrix, _kinds, slot.Time, _shutter?.Motion(slot.Camera, slot.Time, index), _relitKeys);
         }
     }
 }

@@ -13,8 +13,9 @@ namespace NerfDatasetCreator
     {
         /// <param name="kinds">The kinds of file the view writes, colour first; one array is shared by a split's views.</param>
         public PlannedView(DatasetSplit split, int index, UnityPose pose, Matrix4x4d transformMatrix, IReadOnlyList<DatasetFileKind> kinds,
-            ViewTime? time = null, ShutterMotion motion = null)
+            ViewTime? time = null, ShutterMotion motion = null, IReadOnlyList<string> relitKeys = null)
         {
+            RelitKeys = relitKeys ?? Array.Empty<string>();
             Motion = motion;
             Split = split;
             Index = index;
@@ -45,13 +46,24 @@ namespace NerfDatasetCreator
         /// <summary>Motion blur: the shutter interval's start and end poses (and content times); null without blur.</summary>
         public ShutterMotion Motion { get; }
 
-        /// <summary>The files the view writes, colour first (made on each call).</summary>
+        /// <summary>
+        /// Relighting: the lighting conditions' keys (<see cref="LightingKeys"/>) whose files the view writes when its kinds
+        /// include <see cref="DatasetFileKind.RelitPng"/>; one list shared by a split's views; empty without relighting.
+        /// </summary>
+        public IReadOnlyList<string> RelitKeys { get; }
+
+        /// <summary>The files the view writes, colour first, one per relighting key for the relit kinds (made on each call).</summary>
         public IReadOnlyList<PlannedFile> Files
         {
             get
             {
-                var files = new PlannedFile[_kinds.Length];
-                for (var k = 0; k < files.Length; k++) files[k] = new PlannedFile(_kinds[k], DatasetLayout.RelativePath(Split, Index, _kinds[k]));
+                var files = new List<PlannedFile>(_kinds.Length);
+                foreach (var kind in _kinds)
+                {
+                    if (kind == DatasetFileKind.RelitPng || kind == DatasetFileKind.RelitHdrExr)
+                        foreach (var key in RelitKeys) files.Add(new PlannedFile(kind, DatasetLayout.RelitRelativePath(Split, Index, key, kind == DatasetFileKind.RelitHdrExr)));
+                    else files.Add(new PlannedFile(kind, DatasetLayout.RelativePath(Split, Index, kind)));
+                }
                 return files;
             }
         }

@@ -86,6 +86,7 @@ namespace NerfDatasetCreator
             SparseViewsSettings.Write(w, s);
             HdrSettingsJson.Write(w, s.Hdr);
             MaterialPassSettingsJson.Write(w, s.Materials);
+            RelightingSettingsJson.Write(w, s.Relighting);
             w.WritePropertyName("splits");
             w.WriteStartObject();
             foreach (var split in DatasetSplits.All)
@@ -290,6 +291,7 @@ namespace NerfDatasetCreator
                 [SparseViewsSettings.Key] = (t, p) => s.SparseViews = SparseViewsSettings.Read(t, p, reader.Int, reader.Error),
                 [HdrSettingsJson.Key] = (t, p) => HdrSettingsJson.Read(reader, t, p, s.Hdr),
                 [MaterialPassSettingsJson.Key] = (t, p) => MaterialPassSettingsJson.Read(reader, t, p, s.Materials),
+                [RelightingSettingsJson.Key] = (t, p) => RelightingSettingsJson.Read(reader, t, p, s.Relighting),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),

@@ -96,6 +96,7 @@ namespace NerfDatasetCreator
             problems.AddRange(ExposureSettingsValidator.Validate(settings));
             problems.AddRange(HdrSettingsValidator.Validate(settings));
             problems.AddRange(MaterialPassSettingsValidator.Validate(settings));
+            problems.AddRange(RelightingSettingsValidator.Validate(settings));
             problems.AddRange(MotionBlurSettingsValidator.Validate(settings));
             problems.AddRange(SparseViewsSettings.Validate(settings));
 

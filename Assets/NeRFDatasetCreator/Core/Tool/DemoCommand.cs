@@ -16,7 +16,7 @@ namespace NerfDatasetCreator
     public static class DemoCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("demo",
-            "demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular|hdr|materials] [--views N] [--size PX] [--renders-for <dataset>]",
+            "demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular|hdr|materials|relight] [--views N] [--size PX] [--renders-for <dataset>]",
             "write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)",
             Parse, Run);
 
@@ -128,6 +128,7 @@ namespace NerfDatasetCreator
                 : preset == DemoPreset.Monocular ? ", one camera moving around the target over time, " + ValidationProblem.Format(DemoDataset.MonocularFrameRate) + " views a second"
                 : preset == DemoPreset.Hdr ? ", linear HDR colour (r_<i>_hdr.exr) beside each PNG"
                 : preset == DemoPreset.Materials ? ", material passes (albedo, metallic, roughness, specular, emission: EXR + PNG) and material coverage"
+                : preset == DemoPreset.Relight ? ", each view under an analytic sky at 3 rotations and a point light (r_<i>_light_<key>.png, HDR beside), lights/"
                 : "";
             return "RGBA, depth, normals, masks" + extra + ", points3d.ply, the geometry pack";
         }

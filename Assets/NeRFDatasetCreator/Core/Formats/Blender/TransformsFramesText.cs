@@ -113,6 +113,7 @@ namespace NerfDatasetCreator
             HdrKeys.WriteFrameFiles(this, v);
             MaterialKeys.WriteFrameFiles(this, v);
             MotionBlurKeys.WriteFrameFiles(this, v);
+            RelightingKeys.WriteFrameFiles(this, v);
             Raw("\n        }");
         }
 
@@ -145,6 +146,31 @@ namespace NerfDatasetCreator
             Raw(",\n                ");
             Number(c);
             Raw("\n            ]");
+        }
+
+        /// <summary>
+        /// <c>"name": { "key": "value", … }</c> as Newtonsoft indents it; keys and values are the plugin's own ASCII text
+        /// (validated names and paths) without quotes, backslashes or control characters: nothing to escape.
+        /// </summary>
+        internal void StringObjectKey(string name, System.Collections.Generic.IReadOnlyList<string> keys, System.Collections.Generic.IReadOnlyList<string> values)
+        {
+            Key(name);
+            if (keys.Count == 0)
+            {
+                Raw("{}");
+                return;
+            }
+            Raw("{");
+            for (var k = 0; k < keys.Count; k++)
+            {
+                if (_at >= FlushAt) Flush();
+                Raw(k == 0 ? "\n                \"" : ",\n                \"");
+                Raw(keys[k]);
+                Raw("\": \"");
+                Raw(values[k]);
+                _buffer[_at++] = '"';
+            }
+            Raw("\n            }");
         }
 
         /// <summary><c>"name": value</c>.</summary>
