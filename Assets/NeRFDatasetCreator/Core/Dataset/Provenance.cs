@@ -28,6 +28,9 @@ namespace NerfDatasetCreator
         /// <summary>The Editor's facts about the target and project for <c>unity_frame</c>, or null outside Unity (set by the capture).</summary>
         public UnityFrameFacts UnityFrame { get; set; }
 
+        /// <summary>Issue 38: the shaders the material passes read exactly and the others (null without material passes).</summary>
+        public MaterialShaderReport Materials { get; set; }
+
         /// <summary>Measured figures (e.g. "viewsPerSecond"), written in name order.</summary>
         public SortedDictionary<string, double> Statistics { get; } = new SortedDictionary<string, double>(StringComparer.Ordinal);
     }
