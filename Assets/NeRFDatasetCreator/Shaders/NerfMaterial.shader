@@ -5,8 +5,8 @@
 // attribute on _Metallic, Color type for the colours), so Unity applies the same colour-space conversions and the
 // fragment sees the values the Standard shader sees. Sources (Unity built-in shaders as stored in
 // TwoTailsGames/Unity-Built-in-Shaders 09db4ee): Standard.shader:7-32 (properties), StandardSpecular.shader:15-16,
-// UnityStandardInput.cginc:72-78 TexCoords (every map uses uv0 through _MainTex_ST), :85-107 Albedo, :130-151
-// SpecularGloss, :153-175 MetallicGloss, :192-199 Emission. Detail and parallax maps are not reproduced: such materials
+// UnityStandardInput.cginc:72-78 TexCoords (every map uses uv0 through _MainTex_ST), :85-108 Albedo, :131-151
+// SpecularGloss, :153-174 MetallicGloss, :193-200 Emission. Detail and parallax maps are not reproduced: such materials
 // are reported unsupported (Core MaterialShaderSupport).
 // Pass 0 = base colour, 1 = metallic, 2 = smoothness, 3 = specular colour, 4 = emission, 5 = coverage
 // (R = supported, G = specular setup). Cull and alpha clip are the data passes' (_NerfCull, _NerfClip from Core's

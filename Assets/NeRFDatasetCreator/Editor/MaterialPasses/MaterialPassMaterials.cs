@@ -84,7 +84,7 @@ namespace NerfDatasetCreator.Editor
 
         /// <summary>
         /// Standard's values under the same property names (Standard.shader:7-32, StandardSpecular.shader:15-16); the
-        /// keywords that select its branches (Standard.shader:76-80 shader_feature lines) become 0/1 floats.
+        /// keywords that select its branches (Standard.shader:75-83 shader_feature lines) become 0/1 floats.
         /// Material.GetColor/GetFloat return the values as set in the inspector; Unity applies the colour-space
         /// conversion (Color properties, [Gamma] _Metallic) when it uploads them, to NerfMaterial.shader's identically
         /// declared properties exactly as to Standard's.
