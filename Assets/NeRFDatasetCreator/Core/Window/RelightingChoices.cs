@@ -19,7 +19,7 @@ namespace NerfDatasetCreator
 
         /// <summary>Rotations as the field shows them: "0, 90, 180".</summary>
         public static string FormatRotations(double[] rotations) =>
-            rotations == null ? "" : string.Join(", ", rotations.Select(r => r.ToString("0.###", CultureInfo.InvariantCulture)));
+            rotations == null ? "" : string.Join(", ", rotations.Select(r => r.ToString("R", CultureInfo.InvariantCulture)));
 
         /// <summary>
         /// The field's text as rotations: numbers separated by commas or spaces. Null (and the reason) when a part is not

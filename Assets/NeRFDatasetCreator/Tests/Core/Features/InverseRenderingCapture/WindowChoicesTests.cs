@@ -12,6 +12,9 @@ namespace NerfDatasetCreator.Tests
             Assert.That(RelightingChoices.FormatRotations(new double[] { 0, 90, 180, 270 }), Is.EqualTo("0, 90, 180, 270"));
             Assert.That(RelightingChoices.ParseRotations("0, 90 180;270", out var problem), Is.EqualTo(new double[] { 0, 90, 180, 270 }));
             Assert.That(problem, Is.Null);
+            // Shown and read back unchanged, so drawing the field is not an edit.
+            var odd = new double[] { 0.12345, 359.5 };
+            Assert.That(RelightingChoices.ParseRotations(RelightingChoices.FormatRotations(odd), out _), Is.EqualTo(odd));
         }
 
         [Test]
