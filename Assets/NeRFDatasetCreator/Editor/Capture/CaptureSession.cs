@@ -313,7 +313,7 @@ namespace NerfDatasetCreator.Editor
             if (targets.Labels != null) _dataPasses.Render(camera, targets.Labels, DataPassRenderer.LabelPass);
             // Issue 38: read back at once (synchronously), before the camera moves on; attached to the view in Hand.
             if (_materialPasses != null) _materialResults[index] = _materialPasses.Render(camera);
-            if (_relit != null) _relitResults[index] = _relit.Render(camera);
+            if (_relit != null) _relitResults[index] = _relit.Render(camera, _pools.Color);
 
             if (UsesAsyncReadback)
             {

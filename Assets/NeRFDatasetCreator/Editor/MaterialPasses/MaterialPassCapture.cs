@@ -24,6 +24,9 @@ namespace NerfDatasetCreator.Editor
         MaterialPassRenderer _renderer;
         RenderTexture _values, _coverage;
         Texture2D _valuesCpu, _coverageCpu;
+        // Reused per view: only the result arrays handed to the writers are new (they outlive the view's render).
+        ushort[] _valuesBuffer;
+        byte[] _coverageBuffer;
 
         /// <param name="renderers">The capture's copies (as the data passes get them).</param>
         /// <param name="passes">The passes to render: albedo, metallic, smoothness (→ roughness), specular, emission.</param>
@@ -71,7 +74,8 @@ namespace NerfDatasetCreator.Editor
             {
                 _renderer.PrepareView();
                 _renderer.Render(camera, _coverage, MaterialPassRenderer.CoveragePass);
-                var coverage = Read(_coverage, ref _coverageCpu).GetRawTextureData<byte>().ToArray();
+                var coverage = _coverageBuffer ?? (_coverageBuffer = new byte[4 * _width * _height]);
+                Read(_coverage, ref _coverageCpu).GetRawTextureData<byte>().CopyTo(coverage);
                 var result = new MaterialPassResult { Supported = new byte[_width * _height] };
                 for (var i = 0; i < result.Supported.Length; i++) result.Supported[i] = coverage[4 * i] >= 128 ? (byte)255 : (byte)0;
                 if (_pipeline == MaterialPipeline.Urp)
@@ -84,7 +88,7 @@ namespace NerfDatasetCreator.Editor
                     foreach (var pass in _passes)
                     {
                         _renderer.Render(camera, _values, (int)pass);
-                        Store(result, pass, Read(_values, ref _valuesCpu).GetRawTextureData<ushort>().ToArray(), coverage);
+                        Store(result, pass, ReadValues(), coverage);
                     }
                 }
                 return result;
@@ -115,7 +119,14 @@ namespace NerfDatasetCreator.Editor
                 camera.backgroundColor = background;
                 camera.targetTexture = target;
             }
-            return Read(_values, ref _valuesCpu).GetRawTextureData<ushort>().ToArray();
+            return ReadValues();
+        }
+
+        ushort[] ReadValues()
+        {
+            var values = _valuesBuffer ?? (_valuesBuffer = new ushort[4 * _width * _height]);
+            Read(_values, ref _valuesCpu).GetRawTextureData<ushort>().CopyTo(values);
+            return values;
         }
 
         /// <summary>The pass's half-float RGBA as the result's linear floats, 0 where unsupported (<see cref="MaterialValues"/>).</summary>

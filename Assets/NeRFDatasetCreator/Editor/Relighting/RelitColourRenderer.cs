@@ -16,13 +16,11 @@ namespace NerfDatasetCreator.Editor
         readonly IReadOnlyList<UnityLightingRender> _renders;
         RenderTargetSet _targets;
         SynchronousReadback _readback;
-        readonly int _samples;
 
         public RelitColourRenderer(CaptureStage stage, CaptureOptions options, IReadOnlyList<UnityLightingRender> renders)
         {
             _stage = stage;
             _renders = renders;
-            _samples = options.SupersampledWidth * options.SupersampledHeight;
             try
             {
                 _targets = new RenderTargetSet(options, CapturePasses.Color, 100);
@@ -35,16 +33,20 @@ namespace NerfDatasetCreator.Editor
             }
         }
 
-        /// <summary>The colour pair of the camera's current view under each render, by file key: [over black, over white], half-float RGBA.</summary>
-        public Dictionary<string, ushort[][]> Render(Camera camera)
+        /// <summary>
+        /// The colour pair of the camera's current view under each render, by file key: [over black, over white], half-float
+        /// RGBA, in arrays rented from <paramref name="pool"/> (the capture's colour pool: <see cref="CapturePools.Return"/>
+        /// gives them back with the view, so a relit capture makes no more garbage per view than a plain one).
+        /// </summary>
+        public Dictionary<string, ushort[][]> Render(Camera camera, ExactArrayPool<ushort> pool)
         {
             var result = new Dictionary<string, ushort[][]>(StringComparer.Ordinal);
             var lights = _stage.Lights;
             var range = RangeFor(_stage.DataPassRenderers);
             foreach (var render in _renders)
             {
-                var black = new ushort[4 * _samples];
-                var white = new ushort[4 * _samples];
+                var black = pool.Rent();
+                var white = pool.Rent();
                 _stage.PinLighting();
                 try
                 {
