@@ -101,6 +101,18 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         public System.Action<GameObject, SubFrame, Transform> BeforeSubFrame;
 
+        /// <summary>
+        /// Material passes (issue 38) rendered per view at the colour's supersampled size (<see cref="MaterialPassCapture"/>);
+        /// null or empty: none.
+        /// </summary>
+        public IReadOnlyList<MaterialPassKind> MaterialPasses;
+
+        /// <summary>
+        /// Relighting (issue 38): one more colour pair per view for each of these renders (<see cref="RelitColourRenderer"/>),
+        /// from Core's <see cref="RelightingInUnity.Resolve"/>; null or empty: none.
+        /// </summary>
+        public IReadOnlyList<UnityLightingRender> Relighting;
+
         public int SupersampledWidth => Width * Supersampling;
         public int SupersampledHeight => Height * Supersampling;
         public int DataWidth => DepthAndNormalAtOutputSize ? Width : SupersampledWidth;

@@ -11,7 +11,9 @@ namespace NerfDatasetCreator.Editor
             var data = options.DataWidth * options.DataHeight;
             // Two colour renders per view (over black, over white): twice the retained count; four with motion blur (the
             // averaged pair too).
-            Color = new ExactArrayPool<ushort>(samples * 4, Math.Min(1024, (options.SubFramesOf != null ? 4 : 2) * retained));
+            // Relighting adds one pair per lighting render (RelitColourRenderer).
+            var pairs = 1 + (options.SubFramesOf != null ? 1 : 0) + (options.Relighting?.Count ?? 0);
+            Color = new ExactArrayPool<ushort>(samples * 4, Math.Min(1024, 2 * pairs * retained));
             Mask = new ExactArrayPool<byte>(samples, retained);
             Depth = new ExactArrayPool<float>(data, retained);
             Normal = new ExactArrayPool<float>(data * 4, retained);
@@ -38,6 +40,12 @@ namespace NerfDatasetCreator.Editor
             Depth.Return(view.Depth);
             Normal.Return(view.Normal);
             Labels.Return(view.Labels);
+            if (view.Relit != null)
+                foreach (var pair in view.Relit.Values)
+                {
+                    Color.Return(pair[0]);
+                    Color.Return(pair[1]);
+                }
         }
 
         public Action<CapturedView> ReturnCallback => Return;

@@ -29,6 +29,11 @@ namespace NerfDatasetCreator.Editor
         ViewReadback[] _readbacks;
         SynchronousReadback _synchronous;
         SubFrameRenderer _subFrames;
+        MaterialPassCapture _materialPasses;
+        RelitColourRenderer _relit;
+        // Issue 38: each view's material passes and relit colour pairs, read back at render time, by view index.
+        readonly Dictionary<int, MaterialPassResult> _materialResults = new Dictionary<int, MaterialPassResult>();
+        readonly Dictionary<int, Dictionary<string, ushort[][]>> _relitResults = new Dictionary<int, Dictionary<string, ushort[][]>>();
         // Motion blur: the averaged sub-frames of views whose readback is still pending, by view index.
         readonly Dictionary<int, ushort[][]> _blurred = new Dictionary<int, ushort[][]>();
         CapturePools _pools;
@@ -190,6 +195,11 @@ namespace NerfDatasetCreator.Editor
             }
             if (!UsesAsyncReadback) _synchronous = new SynchronousReadback();
             if (_options.SubFramesOf != null) _subFrames = new SubFrameRenderer(_options, UsesAsyncReadback);
+            if (_options.MaterialPasses != null && _options.MaterialPasses.Count > 0)
+                _materialPasses = new MaterialPassCapture(_stage.DataPassRenderers, _stage.Camera.cullingMask, _options.MaterialPasses,
+                    _options.SupersampledWidth, _options.SupersampledHeight);
+            if (_options.Relighting != null && _options.Relighting.Count > 0 && (_passes & CapturePasses.Color) != 0)
+                _relit = new RelitColourRenderer(_stage, _options, _options.Relighting);
             // Enough arrays for the views in flight plus what a consumer's queue and workers typically hold.
             _pools = new CapturePools(_options, inFlight + 2 * Environment.ProcessorCount + 2);
             _clock.Start();
@@ -301,6 +311,9 @@ namespace NerfDatasetCreator.Editor
             if (targets.Depth != null) _dataPasses.Render(camera, targets.Depth, DataPassRenderer.DepthPass);
             if (targets.Normal != null) _dataPasses.Render(camera, targets.Normal, DataPassRenderer.NormalPass);
             if (targets.Labels != null) _dataPasses.Render(camera, targets.Labels, DataPassRenderer.LabelPass);
+            // Issue 38: read back at once (synchronously), before the camera moves on; attached to the view in Hand.
+            if (_materialPasses != null) _materialResults[index] = _materialPasses.Render(camera);
+            if (_relit != null) _relitResults[index] = _relit.Render(camera, _pools.Color);
 
             if (UsesAsyncReadback)
             {
@@ -404,6 +417,16 @@ namespace NerfDatasetCreator.Editor
                 view.BlurredOverBlack = blurred[0];
                 view.BlurredOverWhite = blurred[1];
             }
+            if (_materialResults.TryGetValue(view.ViewIndex, out var materials))
+            {
+                _materialResults.Remove(view.ViewIndex);
+                view.Materials = materials;
+            }
+            if (_relitResults.TryGetValue(view.ViewIndex, out var relit))
+            {
+                _relitResults.Remove(view.ViewIndex);
+                view.Relit = relit;
+            }
             _consumer.Consume(view);
             _delivered++;
         }
@@ -412,7 +435,11 @@ namespace NerfDatasetCreator.Editor
         public CaptureSummary Summary => new CaptureSummary(
             _delivered, _clock.Elapsed.TotalSeconds, Meter.ViewsPerSecond, VerticalFieldOfViewDegrees,
             CaptureEnvironment.RenderPipelineName, QualitySettings.activeColorSpace.ToString(), UsesAsyncReadback,
-            Application.unityVersion, SystemInfo.graphicsDeviceType.ToString(), UnsupportedRendererCount);
+            Application.unityVersion, SystemInfo.graphicsDeviceType.ToString(), UnsupportedRendererCount)
+        {
+            Materials = _materialPasses == null ? null
+                : new MaterialShaderReport(_materialPasses.Pipeline, _materialPasses.SupportedShaders, _materialPasses.UnsupportedShaders),
+        };
 
         /// <summary>Releases everything the run created and, unless it finished, aborts the consumer. Never throws.</summary>
         public void Dispose()
@@ -433,6 +460,8 @@ namespace NerfDatasetCreator.Editor
                     if (set != null) Try(set.Dispose);
             if (_synchronous != null) Try(_synchronous.Dispose);
             if (_subFrames != null) Try(_subFrames.Dispose);
+            if (_materialPasses != null) Try(_materialPasses.Dispose);
+            if (_relit != null) Try(_relit.Dispose);
             if (_stage != null) Try(_stage.Dispose);
             if (_dataPasses != null) Try(_dataPasses.Dispose);
             _editorState?.Restore();

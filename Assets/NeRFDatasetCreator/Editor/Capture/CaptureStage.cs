@@ -89,6 +89,9 @@ namespace NerfDatasetCreator.Editor
             }
         }
 
+        /// <summary>Every light among the capture's copies, enabled or not: what a relighting condition switches off.</summary>
+        public Light[] Lights => _root == null ? new Light[0] : _root.GetComponentsInChildren<Light>(true);
+
         /// <summary>Renders with the user's ambient, reflection and fog settings until <see cref="UnpinLighting"/> (<see cref="SceneLighting"/>).</summary>
         public void PinLighting() => _lighting?.Pin(_scene);
 

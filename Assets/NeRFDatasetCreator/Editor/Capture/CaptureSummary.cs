@@ -39,6 +39,9 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         public MattingDiagnostics Matting { get; internal set; }
 
+        /// <summary>Issue 38: the shaders the material passes read exactly and the others; null without material passes.</summary>
+        public MaterialShaderReport Materials { get; internal set; }
+
         public override string ToString() => string.Format(CultureInfo.InvariantCulture,
             "NeRF Dataset Creator: {0} views in {1:0.0} s ({2:0.00} views/s); {3}, {4} colour space, {5}, {6} readback, Unity {7}{8}",
             Views, Seconds, ViewsPerSecond, RenderPipeline, ColorSpace, GraphicsApi, AsyncReadback ? "async" : "ReadPixels",

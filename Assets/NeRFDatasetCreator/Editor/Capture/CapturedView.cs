@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Threading;
 
 namespace NerfDatasetCreator.Editor
@@ -88,6 +89,15 @@ namespace NerfDatasetCreator.Editor
         /// </summary>
         public byte[] Labels { get; internal set; }
 
+        /// <summary>The material passes (issue 38) at <see cref="Width"/> × <see cref="Height"/>; null when off. Not pooled.</summary>
+        public MaterialPassResult Materials { get; internal set; }
+
+        /// <summary>
+        /// Relighting (issue 38): the colour pair under each extra lighting render, by file key: [over black, over white],
+        /// each laid out like <see cref="ColorOverBlack"/>. Null when off. Not pooled.
+        /// </summary>
+        public Dictionary<string, ushort[][]> Relit { get; internal set; }
+
         /// <summary>Gives the arrays back to the capture's pools. Safe to call more than once and from any thread.</summary>
         public void Release()
         {
@@ -102,6 +112,8 @@ namespace NerfDatasetCreator.Editor
             Depth = null;
             Normal = null;
             Labels = null;
+            Materials = null;
+            Relit = null;
         }
     }
 }

@@ -103,12 +103,12 @@ namespace NerfDatasetCreator.Editor
         /// active, not shadows-only or forced off, on a layer the camera renders. Renderers beyond LOD 0 are
         /// disabled on the copies by <see cref="LodZero"/>, so this leaves them out too.
         /// </summary>
-        static bool DrawnByACamera(Renderer renderer, int cullingMask) =>
+        internal static bool DrawnByACamera(Renderer renderer, int cullingMask) =>
             renderer != null && renderer.enabled && renderer.gameObject.activeInHierarchy && !renderer.forceRenderingOff &&
             renderer.shadowCastingMode != ShadowCastingMode.ShadowsOnly &&
             (cullingMask & (1 << renderer.gameObject.layer)) != 0;
 
-        static Mesh MeshOf(Renderer renderer)
+        internal static Mesh MeshOf(Renderer renderer)
         {
             if (renderer is SkinnedMeshRenderer skinned) return skinned.sharedMesh;
             var filter = renderer.GetComponent<MeshFilter>();

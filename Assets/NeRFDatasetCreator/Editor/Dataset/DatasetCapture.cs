@@ -128,6 +128,12 @@ namespace NerfDatasetCreator.Editor
                     if (sub.Seconds.HasValue) clock.Show(root, sub.Seconds.Value);
                 };
             }
+            if (run.IsValid)
+            {
+                // Issue 38: material passes and relighting renders, in Unity's terms (MaterialPassSelection, RelightingInUnity).
+                options.MaterialPasses = MaterialPassSelection.Kinds(run.Plan.Settings.Materials);
+                options.Relighting = RelightingInUnity.Resolve(run.Plan.Settings.Relighting, run.Plan.Normalisation);
+            }
             if (run.IsValid && ShutterPlanning.IsOn(run.Plan.Settings))
             {
                 var blur = run.Plan.Settings.MotionBlur;
@@ -324,6 +330,9 @@ namespace NerfDatasetCreator.Editor
             provenance.Statistics["clampedDepthPixels"] = files.ClampedDepthPixels;
             files.Matting.WriteStatistics(provenance.Statistics);
             summary.Matting = files.Matting.Total;
+            // Issue 38: which shaders the material passes read, for dataset_config.json's materials record and the Console.
+            provenance.Materials = summary.Materials?.ToFacts();
+            if (summary.Materials?.Warning() is string unreadMaterials) Debug.LogWarning("NeRF Dataset Creator: " + unreadMaterials);
             IReadOnlyList<CloudPoint> cloud = null;
             try
             {

@@ -37,6 +37,27 @@ namespace NerfDatasetCreator.Editor
             // The normal pass writes Unity world normals; the encoders relabel them as they read them.
             data.NormalsInUnityWorld = true;
             if (view.Labels != null) colour.InstanceIds = LabelsPassIds.InstanceIds(view.Labels);
+            if (view.Materials != null)
+            {
+                colour.MaterialAlbedo = view.Materials.Albedo;
+                colour.MaterialMetallic = view.Materials.Metallic;
+                colour.MaterialRoughness = view.Materials.Roughness;
+                colour.MaterialSpecular = view.Materials.Specular;
+                colour.MaterialEmission = view.Materials.Emission;
+                colour.MaterialSupported = view.Materials.Supported;
+            }
+            if (view.Relit != null)
+            {
+                // Each condition's colour pair goes through the same colour pipeline as the plain image (RawFrame.Relit).
+                colour.Relit = new Dictionary<string, RawFrame>(System.StringComparer.Ordinal);
+                foreach (var pair in view.Relit)
+                    colour.Relit[pair.Key] = new RawFrame(view.Width, view.Height, view.Supersampling)
+                    {
+                        ColorOverBlack = pair.Value[0],
+                        ColorOverWhite = pair.Value[1],
+                        ColorIsGammaEncoded = view.ColorIsGammaEncoded,
+                    };
+            }
             // Motion blur: the sub-frame average beside the mid-pose render, with the same mask, ids and (at the colour's
             // size) depth and normals.
             RawFrame blurred = null;

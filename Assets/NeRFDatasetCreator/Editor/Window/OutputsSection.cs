@@ -34,6 +34,8 @@ namespace NerfDatasetCreator.Editor
             LabelsSection.Draw(c);
             ExposureSection.Draw(c);
             HdrSection.Draw(c);
+            MaterialsSection.Draw(c);
+            RelightingSection.Draw(c);
             LensSection.Draw(c);
             MotionBlurSection.Draw(c);
             SparseViewsSection.Draw(c);

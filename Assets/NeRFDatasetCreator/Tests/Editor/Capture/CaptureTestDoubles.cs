@@ -15,6 +15,8 @@ namespace NerfDatasetCreator.Editor.Tests
         public byte[] Mask;
         public float[] Depth, Normal;
         public byte[] Labels;
+        public MaterialPassResult Materials;
+        public Dictionary<string, ushort[][]> Relit;
 
         /// <summary>The instance id of a sample of the labels pass (<see cref="RendererLabelIds.InstanceAt"/>).</summary>
         public int InstanceAt(int x, int y) => RendererLabelIds.InstanceAt(Labels, y * Width + x);
@@ -78,6 +80,8 @@ namespace NerfDatasetCreator.Editor.Tests
                 Depth = (float[])view.Depth?.Clone(),
                 Normal = (float[])view.Normal?.Clone(),
                 Labels = (byte[])view.Labels?.Clone(),
+                Materials = view.Materials,
+                Relit = view.Relit,
             });
             view.Release();
         }
