@@ -85,6 +85,7 @@ namespace NerfDatasetCreator
             MotionBlurSettingsJson.Write(w, s.MotionBlur);
             SparseViewsSettings.Write(w, s);
             HdrSettingsJson.Write(w, s.Hdr);
+            FlowSettingsJson.Write(w, s.Flow);
             w.WritePropertyName("splits");
             w.WriteStartObject();
             foreach (var split in DatasetSplits.All)
@@ -288,6 +289,7 @@ namespace NerfDatasetCreator
                 [MotionBlurSettingsJson.Key] = (t, p) => MotionBlurSettingsJson.Read(reader, t, p, s.MotionBlur),
                 [SparseViewsSettings.Key] = (t, p) => s.SparseViews = SparseViewsSettings.Read(t, p, reader.Int, reader.Error),
                 [HdrSettingsJson.Key] = (t, p) => HdrSettingsJson.Read(reader, t, p, s.Hdr),
+                [FlowSettingsJson.Key] = (t, p) => FlowSettingsJson.Read(reader, t, p, s.Flow),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),
