@@ -5,7 +5,7 @@ namespace NerfDatasetCreator
 {
     /// <summary>
     /// What <c>nerf-dataset demo --preset</c> adds to the plain demo scene: nothing (a static object capture with RGBA,
-    /// depth, normals and masks), or one feature of the capture — moving content, labels, a lens, exposure, motion blur, one camera moving in time.
+    /// depth, normals and masks), or one feature of the capture — moving content, labels, a lens, exposure, motion blur, one camera moving in time, HDR, flow.
     /// </summary>
     public enum DemoPreset
     {
@@ -19,12 +19,15 @@ namespace NerfDatasetCreator
         /// <summary>One camera moving around the target over time (monocular dynamic, depth on): a SLAM sequence's source.</summary>
         Monocular,
         Hdr,
+
+        /// <summary>The monocular preset with the geometry pack at every step and flow/ (optical and scene flow, occlusion, tracks).</summary>
+        Flow,
     }
 
     /// <summary>The presets' command-line names, in <see cref="DemoPreset"/> order.</summary>
     public static class DemoPresets
     {
-        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur", "monocular", "hdr" };
+        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur", "monocular", "hdr", "flow" };
 
         public static string Name(DemoPreset preset) => Names[(int)preset];
 
