@@ -28,6 +28,7 @@ namespace NerfDatasetCreator
         static readonly Tree Png = new Tree(f => f.EndsWith(".png", StringComparison.OrdinalIgnoreCase));
         static readonly Tree GeometryPack = new Tree(GeometryPackSteps.IsPackFile);
         static readonly Tree Splits = new Tree(SparseSplit.IsFileName);
+        static readonly Tree Flow = new Tree(FlowLayout.IsFolderFile, new Tree(FlowLayout.IsVideoFile));
         static readonly Tree CameraPaths = new Tree(f => DatasetSplits.Names.Any(s => s + ".json" == f));
         static readonly Tree Ngp = new Tree(f => f == NgpWriter.FileName || f == EvalProtocolFile.FileName).With(CameraPathFiles.FolderName, CameraPaths);
         static readonly Tree Colmap = new Tree(f => f == EvalProtocolFile.FileName)
@@ -117,6 +118,7 @@ namespace NerfDatasetCreator
                 else if (name == TargetMeshPly.Folder) inside = GeometryPack.Foreign(entry.FullName);
                 else if (name == CameraPathFiles.FolderName) inside = CameraPaths.Foreign(entry.FullName);
                 else if (name == SparseSplit.FolderName) inside = Splits.Foreign(entry.FullName);
+                else if (name == FlowLayout.Folder) inside = Flow.Foreign(entry.FullName);
                 else if (WorkingFolders.KindOf(name) == "convert") continue;
                 else return Stray(entry) + " was not written by this plugin";
                 if (inside != null) return inside;

@@ -52,6 +52,21 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void ADatasetWithFlowIsStillProvablyOursAndAStrayFileInFlowIsNot()
+        {
+            using (var temp = new TempFolder())
+            {
+                var folder = AnalyticDataset.Write(temp.Path, "mono", Options(true, flow: true));
+                Assert.That(OwnDataset.WhyNotOurs(folder), Is.Null, "every file under flow/ is one the plugin writes");
+                Assert.That(OwnDataset.WhyNotReplaceable(folder, rendersImages: true), Is.Null, "a new capture may replace it");
+                File.WriteAllText(Path.Combine(folder, "flow", "train", "notes.txt"), "mine");
+                Assert.That(OwnDataset.WhyNotOurs(folder), Does.Contain("notes.txt"));
+            }
+            Assert.That(FlowLayout.IsVideoFile("flow_0000_0001.flo") && FlowLayout.IsVideoFile("scene_flow_0012_0010.exr") && FlowLayout.IsVideoFile("tracks_0000.npz"), Is.True);
+            Assert.That(FlowLayout.IsVideoFile("flow_0_1.flo") || FlowLayout.IsVideoFile("flow_0000_0001.png"), Is.False);
+        }
+
+        [Test]
         public void WithoutTheSectionNoFlowIsWrittenAndTheConfigHasNoRecord()
         {
             using (var temp = new TempFolder())
