@@ -8,7 +8,8 @@ namespace NerfDatasetCreator.Benchmarks
     /// Exact flow (issue 37, Core/Features/Flow): a 100k-triangle target — a UV sphere of radius 1 with a wavy surface —
     /// turning by 3° and moving between two steps, seen by one 800×800 camera at distance 3 with nerf_synthetic's field of
     /// view; one view's forward flow with occlusion (a cast per pixel into the mesh at t, a cast per visible point into
-    /// the mesh at t′), single thread, CPU time; the BVH build separately. A dataset's figure is views × this.
+    /// the mesh at t′), single thread, CPU time; the BVH build separately; then the same on 1 and 2 threads in wall time and
+    /// a pair's files, and the issue's figure — 300 views, forward and backward pairs — extrapolated from the one view.
     /// With --dump-flow DIR the mesh and the primary rays are written for flow_anchor.c (Embree 3's rtcIntersect1, the
     /// caster inside Open3D's RaycastingScene, on the same rays and mesh, one thread).
     /// </summary>
@@ -57,6 +58,41 @@ namespace NerfDatasetCreator.Benchmarks
                 view = Math.Min(view, t2 - t1);
                 primary = Math.Min(primary, t4 - t3);
             }
+            // The capture's figure: rows on 1 and 2 threads (wall time: CPU time cannot show threads), and a pair's files
+            // as FlowWriter writes them (.flo, two PNG masks, the scene-flow EXR) on one thread.
+            var wall = new double[3];
+            var cpu = new double[3];
+            var writeMs = double.MaxValue;
+            var same = true;
+            var bench = new SurfaceFlow(vertices, moved, triangles);
+            var folder = Path.Combine(Path.GetTempPath(), "nerf-flow-bench-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                wall[1] = wall[2] = cpu[1] = cpu[2] = double.MaxValue;
+                // Interleaved, so that a change in the machine's load falls on both thread counts alike.
+                for (var round = 0; round < rounds; round++)
+                    for (var threads = 1; threads <= 2; threads++)
+                    {
+                        var c0 = Cpu(process);
+                        var clock = Stopwatch.StartNew();
+                        var f = bench.Image(camera, camera, threads);
+                        wall[threads] = Math.Min(wall[threads], clock.Elapsed.TotalMilliseconds);
+                        cpu[threads] = Math.Min(cpu[threads], Cpu(process) - c0);
+                        if (threads == 2) same &= SameField(f, field);
+                    }
+                for (var round = 0; round < rounds; round++)
+                {
+                    var root = Path.Combine(folder, round.ToString(System.Globalization.CultureInfo.InvariantCulture));
+                    Directory.CreateDirectory(Path.Combine(root, "flow", "bench"));
+                    var t0 = Cpu(process);
+                    FlowWriter.WritePair(root, new FlowPair("bench", 0, 1), field, true);
+                    writeMs = Math.Min(writeMs, Cpu(process) - t0);
+                }
+            }
+            finally
+            {
+                if (Directory.Exists(folder)) Directory.Delete(folder, true);
+            }
             int surface = 0, visible = 0, hidden = 0;
             foreach (var s in field.State)
             {
@@ -70,7 +106,26 @@ namespace NerfDatasetCreator.Benchmarks
             Console.WriteLine($"  one view's flow:             {view,8:F0} ms  ({rays:N0} casts: {Size * Size:N0} primary, {visible + hidden:N0} occlusion; {view * 1e6 / rays:F0} ns a cast)");
             Console.WriteLine($"  the {Size * Size:N0} primary rays alone:  {primary,8:F0} ms  ({primary * 1e6 / (Size * Size):F0} ns a ray, {primaryHits:N0} hits)");
             Console.WriteLine($"  pixels on the target {surface:N0}: visible at t′ {visible:N0}, hidden {hidden:N0}; 300 views ≈ {300 * view / 1000:F0} s");
+            Console.WriteLine($"  one view's flow, CPU time:    {cpu[1],8:F0} ms on 1 thread, {cpu[2]:F0} ms on 2 (the same field: {same})");
+            Console.WriteLine($"  one view's flow, wall time:   {wall[1],8:F0} ms on 1 thread, {wall[2]:F0} ms on 2 ({wall[1] / wall[2]:F2}×; meaningful only on an idle machine)");
+            Console.WriteLine($"  one pair's files (.flo, 2 PNG, EXR): {writeMs,8:F0} ms CPU");
+            // 300 views of one video with the default settings: 299 forward + 299 backward pairs, a BVH per step.
+            const int Views = 300, Pairs = 2 * (Views - 1);
+            // From CPU time (wall time on a shared machine measures its load, not the code): on 1 thread the cast's CPU
+            // time; on 2 threads its CPU time (the same work plus the threads' overhead) shared by 2 idle cores.
+            for (var threads = 1; threads <= 2; threads++)
+                Console.WriteLine($"  300 views, 800×800, forward + backward ({Pairs} pairs), {threads} thread{(threads == 1 ? "" : "s")}: ≈ {Total(threads) / 1000:F0} s " +
+                                  $"(= {Views} × {build / 2:F0} ms BVH + {Pairs} × ({Cast(threads):F0} ms cast + {writeMs:F0} ms files); extrapolated from one view{(threads == 1 ? "" : ", 2 idle cores")})");
             Console.WriteLine();
+            double Cast(int threads) => threads == 1 ? cpu[1] : cpu[2] / 2;
+            double Total(int threads) => Views * build / 2 + Pairs * (Cast(threads) + writeMs);
+            record("flow.view.cpu1.ms", cpu[1]);
+            record("flow.view.cpu2.ms", cpu[2]);
+            record("flow.view.wall1.ms", wall[1]);
+            record("flow.view.wall2.ms", wall[2]);
+            record("flow.pair.write.ms", writeMs);
+            record("flow.video300.t1.s", Total(1) / 1000);
+            record("flow.video300.t2.s", Total(2) / 1000);
             record("flow.build.ms", build);
             record("flow.view.ms", view);
             record("flow.cast.ns", view * 1e6 / rays);
@@ -78,6 +133,15 @@ namespace NerfDatasetCreator.Benchmarks
             record("flow.surface", surface);
             record("flow.primary.ms", primary);
             record("flow.primary.ns", primary * 1e6 / (Size * Size));
+        }
+
+        static bool SameField(FlowField a, FlowField b)
+        {
+            for (var i = 0; i < a.Flow.Length; i++)
+                if (!a.Flow[i].Equals(b.Flow[i])) return false; // Equals: NaN equals NaN
+            for (var i = 0; i < a.State.Length; i++)
+                if (a.State[i] != b.State[i]) return false;
+            return true;
         }
 
         /// <summary>A wavy UV sphere (radius 1 ± 0.05): 2·Segments·(Rings − 1) triangles.</summary>

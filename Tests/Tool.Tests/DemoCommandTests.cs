@@ -68,9 +68,10 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(File.Exists(Path.Combine(train, "r_0_albedo.exr")) && File.Exists(Path.Combine(train, "r_0_emission.exr")), Is.EqualTo(preset == DemoPreset.Materials));
             Assert.That(File.Exists(Path.Combine(train, "r_0_light_sky_120.png")), Is.EqualTo(preset == DemoPreset.Relight));
             Assert.That(File.Exists(Path.Combine(folder, RelightingKeys.LightsFile)), Is.EqualTo(preset == DemoPreset.Relight));
+            Assert.That(File.Exists(Path.Combine(folder, "flow", "flow.json")), Is.EqualTo(preset == DemoPreset.Flow), "the flow preset computes flow/");
             var transforms = JObject.Parse(File.ReadAllText(Path.Combine(folder, "transforms_train.json")));
             Assert.That(transforms["k1"] != null, Is.EqualTo(preset == DemoPreset.Lens), "the lens preset records its distortion");
-            Assert.That(transforms["frames"][0]["time"] != null, Is.EqualTo(preset == DemoPreset.Dynamic || preset == DemoPreset.Monocular), "the dynamic and monocular presets record time");
+            Assert.That(transforms["frames"][0]["time"] != null, Is.EqualTo(preset == DemoPreset.Dynamic || preset == DemoPreset.Monocular || preset == DemoPreset.Flow), "the dynamic, monocular and flow presets record time");
 
             foreach (var target in DemoCommand.Targets(preset))
             {

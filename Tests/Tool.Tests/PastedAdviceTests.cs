@@ -67,6 +67,20 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(plan.Err, Is.Empty, plan.ToString());
         }
 
+        [Test]
+        public void TheFlowPagesExample_PastedIntoTheSampleConfig_PlansWithoutAWarning()
+        {
+            var config = SampleWith(FirstJsonBlock("flow.md"));
+            var read = DatasetSettingsJson.ReadFile(config);
+            Assert.That(read.Warnings, Is.Empty, "no unknown key");
+            Assert.That(read.Settings.Flow.Enabled, Is.True);
+            Assert.That(read.Settings.Flow.TrackQueryFrames, Is.EqualTo(new[] { 0 }));
+            Assert.That(SettingsValidator.Validate(read.Settings).Where(p => p.Field.StartsWith("flow") || p.Field == "geometryPack"), Is.Empty);
+            var plan = ToolRun.Of("plan", "--config", config, "--out", _scratch.PathOf("planned"));
+            Assert.That(plan.ExitCode, Is.EqualTo(0), plan.ToString());
+            Assert.That(plan.Err, Is.Empty, plan.ToString());
+        }
+
         /// <summary>
         /// Path blur with the defaults on the sample config: its random val split's views are far apart, so no
         /// sub-frame count covers the blur; the advice names the split and a shutter that 256 sub-frames cover, never

@@ -111,6 +111,8 @@ namespace NerfDatasetCreator.Tool.Tests
                         yield return Promise(DatasetLayout.TransformsFileName(split), File.Exists(Path.Combine(folder, DatasetLayout.TransformsFileName(split))));
                     var report = Path.Combine(folder, DatasetCheck.ReportFileName);
                     yield return Promise(DatasetCheck.ReportFileName + " that passed", File.Exists(report) && !(bool)JObject.Parse(File.ReadAllText(report))["failed"]);
+                    if (command.Contains("--preset") && Option("--preset") == "flow")
+                        yield return Promise(FlowLayout.RecordFile, File.Exists(Path.Combine(folder, FlowLayout.Folder, "flow.json")));
                     break;
                 case "check":
                     // check's last verdict line: "OK (n of m checks ran; …)".

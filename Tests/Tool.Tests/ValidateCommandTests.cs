@@ -71,7 +71,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(run.ExitCode, Is.EqualTo(0));
             var lines = run.Out.TrimEnd('\n').Split('\n');
             Assert.That(lines[0], Is.EqualTo("usage: nerf-dataset <command> [arguments]"));
-            Assert.That(lines.Skip(1).Take(10).Select(l => l.Trim().Split(' ')[0]), Is.EqualTo(new[] { "plan", "validate", "merge", "convert", "clean", "check", "evaluate", "splits", "demo", "place-splat" }), "one line per command");
+            Assert.That(lines.Skip(1).Take(11).Select(l => l.Trim().Split(' ')[0]), Is.EqualTo(new[] { "plan", "validate", "merge", "convert", "clean", "check", "evaluate", "splits", "demo", "place-splat", "flow" }), "one line per command");
             Assert.That(lines[1], Does.StartWith("  plan --config <settings.json> --out <dir>"));
             Assert.That(lines[3], Does.StartWith("  merge --out <dir> [--files copy|move] <shard-dir>..."));
             Assert.That(lines[4], Does.StartWith("  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping|nerfies|dycheck|llff|dynerf|neus|replica|tum|multiscale|hdr-nerf [--out <dir>]"));
@@ -79,11 +79,12 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(lines[6], Does.StartWith("  check <dir> [--split S] [--json FILE] [--max-views N] [--model <dir>]"));
             Assert.That(lines[7], Does.StartWith("  evaluate <dir> --renders <dir> [--split test|sparse_<n>]"));
             Assert.That(lines[8], Does.StartWith("  splits <dir> [--views 8[,3,...]]"));
-            Assert.That(lines[9], Does.StartWith("  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular|hdr|materials|relight]"));
+            Assert.That(lines[9], Does.StartWith("  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular|hdr|materials|relight|flow]"));
             Assert.That(lines[10], Does.StartWith("  place-splat <dir> --model <trained output> [--trainer 3dgs|nerfstudio|gsplat]"));
-            Assert.That(lines[11], Does.StartWith("exit codes:"));
-            Assert.That(lines[12], Is.EqualTo("nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version."));
-            Assert.That(lines, Has.Length.EqualTo(13));
+            Assert.That(lines[11], Does.StartWith("  flow <dir> [--spans 1[,2,...]] [--no-backward] [--no-scene-flow] [--tracks Q[,Q,...]]"));
+            Assert.That(lines[12], Does.StartWith("exit codes:"));
+            Assert.That(lines[13], Is.EqualTo("nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version."));
+            Assert.That(lines, Has.Length.EqualTo(14));
             Assert.That(ToolRun.Of("help").Out, Is.EqualTo(run.Out));
         }
     }

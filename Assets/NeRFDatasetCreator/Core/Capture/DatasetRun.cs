@@ -87,6 +87,20 @@ namespace NerfDatasetCreator
         public bool WritesGeometryPack => IsValid && Shard.Index == 0 && FullPlan.Settings.GeometryPack;
 
         /// <summary>
+        /// Whether <see cref="Finish"/> computes <c>flow/</c> (the settings' <c>flow</c> section, Documentation~/flow.md) after
+        /// the geometry pack: a whole dataset only, since a shard holds only its share of each video (after merge,
+        /// <c>nerf-dataset flow</c> adds it).
+        /// </summary>
+        public bool WritesFlow => WritesGeometryPack && Shard.Count == 1 && FullPlan.Settings.GeometryPackEveryStep
+            && FullPlan.Settings.Flow != null && FullPlan.Settings.Flow.Enabled;
+
+        /// <summary>The threads flow is computed on (<see cref="FlowWriter.Write"/>): every core by default.</summary>
+        public int FlowThreads { get; set; } = Math.Max(1, Environment.ProcessorCount);
+
+        /// <summary>After <see cref="Finish"/>: the capture summary's sentence about flow/ (<see cref="FlowConfigRecord.Summary"/>), or null without flow.</summary>
+        public string FlowSummary { get; private set; }
+
+        /// <summary>
         /// Writes <c>points3d.ply</c> when <paramref name="pointCloud"/> has points (output world, e.g. from
         /// <see cref="TargetPointCloud.Sample"/>; its SHA-256 goes into dataset_config.json's <c>pointCloud</c> record), the
         /// transforms files, dataset_config.json, <c>rig_preview.png</c> (<see cref="RigPreviewPicture"/>: the only picture
@@ -104,9 +118,10 @@ namespace NerfDatasetCreator
         /// </param>
         /// <param name="environments">Relighting's environment maps by condition name, in the output world (<see cref="LightsFile"/>); needed when the settings relight with an environment.</param>
         /// <param name="geometryProgress">(steps done, steps) while the per-step geometry pack is written (<see cref="GeometryPackWriter.Write"/>); may be null.</param>
+        /// <param name="flowProgress">(pairs and query frames done, all of them) while flow is computed (<see cref="WritesFlow"/>); may be null.</param>
         public void Finish(DatasetWriteSession session, Provenance provenance, IReadOnlyList<CloudPoint> pointCloud = null,
             IReadOnlyList<SurfaceMesh> targetMeshes = null, LabelTable labels = null, Func<int, IReadOnlyList<SurfaceMesh>> targetMeshesAtStep = null,
-            Action<int, int> geometryProgress = null, IReadOnlyDictionary<string, EnvironmentMap> environments = null)
+            Action<int, int> geometryProgress = null, Action<int, int> flowProgress = null, IReadOnlyDictionary<string, EnvironmentMap> environments = null)
         {
             if (FullPlan.Settings.Labels != null && FullPlan.Settings.Labels.Enabled)
             {
@@ -124,6 +139,18 @@ namespace NerfDatasetCreator
                 record = PointCloudRecord.Of(path, TargetPointCloud.FileName, pointCloud.Count);
             }
             DatasetMetadataFiles.Write(session, Plan, provenance, record, geometry, wholeDataset: Shard.Count == 1);
+            FlowSummary = null;
+            if (WritesFlow)
+            {
+                // Flow reads what was just written (the transforms, the per-step geometry pack and its record), so it
+                // comes after them; dataset_config.json is then written again with its flow record. Both are this run's
+                // files in its own working folder, before anything is moved into place.
+                var flow = FlowWriter.Write(session.WorkingFolder, FullPlan.Settings.Flow, flowProgress, FlowThreads);
+                session.WriteText(DatasetLayout.ConfigFileName, DatasetConfig.Write(Plan, provenance, record, geometry, FlowConfigRecord.Of(flow)));
+                FlowSummary = FlowConfigRecord.Summary(flow);
+            }
+            else if (IsValid && FullPlan.Settings.Flow != null && FullPlan.Settings.Flow.Enabled && Shard.Count > 1)
+                FlowSummary = "No flow/ in a shard: run nerf-dataset flow on the merged dataset.";
             if (Shard.Count == 1) File.WriteAllBytes(session.PathOf(RigPreviewPicture.FileName), RigPreviewPicture.Encode(FullPlan));
             if (Shard.Count > 1)
                 ShardManifest.ForShard(Shard, CountsOf(FullPlan)).Write(session.WorkingFolder);

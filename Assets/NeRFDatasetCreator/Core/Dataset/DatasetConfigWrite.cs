@@ -13,7 +13,9 @@ namespace NerfDatasetCreator
     {
         /// <param name="pointCloud">The record of the <c>points3d.ply</c> this run wrote, or null when it wrote none.</param>
         /// <param name="geometry">The geometry pack's record (<see cref="GeometryPackRecord"/>), or null when the run wrote none.</param>
-        public static string Write(CapturePlan plan, Provenance provenance, PointCloudRecord pointCloud = null, Newtonsoft.Json.Linq.JObject geometry = null)
+        /// <param name="flow">The flow record (<see cref="FlowConfigRecord"/>), or null when the run computed no flow.</param>
+        public static string Write(CapturePlan plan, Provenance provenance, PointCloudRecord pointCloud = null, Newtonsoft.Json.Linq.JObject geometry = null,
+            Newtonsoft.Json.Linq.JObject flow = null)
         {
             using (var text = JsonNumbers.CreateText())
             {
@@ -75,6 +77,11 @@ namespace NerfDatasetCreator
                         JsonNumbers.WriteToken(w, geometry);
                     }
                     RelightingRecord.Write(w, plan.Settings);
+                    if (flow != null)
+                    {
+                        w.WritePropertyName(FlowConfigRecord.Key);
+                        JsonNumbers.WriteToken(w, flow);
+                    }
                     if (provenance.Statistics.Count > 0)
                     {
                         w.WritePropertyName("statistics");

@@ -120,6 +120,18 @@ namespace NerfDatasetCreator
                     options.Monocular = true;
                     options.Configure = s => s.Time.EndSeconds = (perStep - 1) / MonocularFrameRate;
                     break;
+                case DemoPreset.Flow:
+                    // The monocular preset's camera path, with the per-step meshes flow is computed from and tracks of frame 0.
+                    options.TimeSteps = perStep;
+                    options.Monocular = true;
+                    options.GeometryPackEveryStep = true;
+                    options.Configure = s =>
+                    {
+                        s.Time.EndSeconds = (perStep - 1) / MonocularFrameRate;
+                        s.Flow.On = true;
+                        s.Flow.TrackQueryFrames = new[] { 0 };
+                    };
+                    break;
                 case DemoPreset.Hdr:
                     options.Configure = s => s.Hdr.On = true;
                     break;

@@ -5,7 +5,7 @@ namespace NerfDatasetCreator
 {
     /// <summary>
     /// What <c>nerf-dataset demo --preset</c> adds to the plain demo scene: nothing (a static object capture with RGBA,
-    /// depth, normals and masks), or one feature of the capture — moving content, labels, a lens, exposure, motion blur, one camera moving in time.
+    /// depth, normals and masks), or one feature of the capture — moving content, labels, a lens, exposure, motion blur, one camera moving in time, HDR, flow.
     /// </summary>
     public enum DemoPreset
     {
@@ -24,12 +24,14 @@ namespace NerfDatasetCreator
         Materials,
         /// <summary>Relighting: the views under an analytic sky at three rotations and one point light, with lights/ (issue 38).</summary>
         Relight,
+        /// <summary>The monocular preset with the geometry pack at every step and flow/ (optical and scene flow, occlusion, tracks).</summary>
+        Flow,
     }
 
     /// <summary>The presets' command-line names, in <see cref="DemoPreset"/> order.</summary>
     public static class DemoPresets
     {
-        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur", "monocular", "hdr", "materials", "relight" };
+        public static readonly string[] Names = { "static", "dynamic", "labels", "lens", "exposure", "blur", "monocular", "hdr", "materials", "relight", "flow" };
 
         public static string Name(DemoPreset preset) => Names[(int)preset];
 

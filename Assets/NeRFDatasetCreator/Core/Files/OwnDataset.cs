@@ -30,6 +30,7 @@ namespace NerfDatasetCreator
         static readonly Tree Splits = new Tree(SparseSplit.IsFileName);
         // Relighting's lights/: lights.json and one <name>.exr per environment (LightsFile).
         static readonly Tree Lights = new Tree(f => f == "lights.json" || Regex.IsMatch(f, "^[a-z0-9][a-z0-9-]{0,31}\\.exr$", RegexOptions.CultureInvariant));
+        static readonly Tree Flow = new Tree(FlowLayout.IsFolderFile, new Tree(FlowLayout.IsVideoFile));
         static readonly Tree CameraPaths = new Tree(f => DatasetSplits.Names.Any(s => s + ".json" == f));
         static readonly Tree Ngp = new Tree(f => f == NgpWriter.FileName || f == EvalProtocolFile.FileName).With(CameraPathFiles.FolderName, CameraPaths);
         static readonly Tree Colmap = new Tree(f => f == EvalProtocolFile.FileName)
@@ -120,6 +121,7 @@ namespace NerfDatasetCreator
                 else if (name == CameraPathFiles.FolderName) inside = CameraPaths.Foreign(entry.FullName);
                 else if (name == SparseSplit.FolderName) inside = Splits.Foreign(entry.FullName);
                 else if (name == RelightingKeys.LightsFolder) inside = Lights.Foreign(entry.FullName);
+                else if (name == FlowLayout.Folder) inside = Flow.Foreign(entry.FullName);
                 else if (WorkingFolders.KindOf(name) == "convert") continue;
                 else return Stray(entry) + " was not written by this plugin";
                 if (inside != null) return inside;

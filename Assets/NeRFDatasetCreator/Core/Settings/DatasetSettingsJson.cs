@@ -87,6 +87,7 @@ namespace NerfDatasetCreator
             HdrSettingsJson.Write(w, s.Hdr);
             MaterialPassSettingsJson.Write(w, s.Materials);
             RelightingSettingsJson.Write(w, s.Relighting);
+            FlowSettingsJson.Write(w, s.Flow);
             w.WritePropertyName("splits");
             w.WriteStartObject();
             foreach (var split in DatasetSplits.All)
@@ -292,6 +293,7 @@ namespace NerfDatasetCreator
                 [HdrSettingsJson.Key] = (t, p) => HdrSettingsJson.Read(reader, t, p, s.Hdr),
                 [MaterialPassSettingsJson.Key] = (t, p) => MaterialPassSettingsJson.Read(reader, t, p, s.Materials),
                 [RelightingSettingsJson.Key] = (t, p) => RelightingSettingsJson.Read(reader, t, p, s.Relighting),
+                [FlowSettingsJson.Key] = (t, p) => FlowSettingsJson.Read(reader, t, p, s.Flow),
                 ["splits"] = (t, p) => reader.Object(t, p, DatasetSplits.All.ToDictionary(
                     split => DatasetSplits.Name(split),
                     split => (Action<JToken, string>)((t2, p2) => ReadSplit(reader, t2, p2, s.Split(split))))),

@@ -99,6 +99,7 @@ namespace NerfDatasetCreator
             problems.AddRange(RelightingSettingsValidator.Validate(settings));
             problems.AddRange(MotionBlurSettingsValidator.Validate(settings));
             problems.AddRange(SparseViewsSettings.Validate(settings));
+            problems.AddRange(FlowSettingsValidator.Validate(settings));
 
             if (settings.Loaders == TargetLoaders.None)
                 Add(new ValidationProblem("loaders", "[]", "is empty, so nothing checks that the splits suit any loader.",

@@ -16,7 +16,7 @@ namespace NerfDatasetCreator
     public static class DemoCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("demo",
-            "demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular|hdr|materials|relight] [--views N] [--size PX] [--renders-for <dataset>]",
+            "demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular|hdr|materials|relight|flow] [--views N] [--size PX] [--renders-for <dataset>]",
             "write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)",
             Parse, Run);
 
@@ -129,6 +129,7 @@ namespace NerfDatasetCreator
                 : preset == DemoPreset.Hdr ? ", linear HDR colour (r_<i>_hdr.exr) beside each PNG"
                 : preset == DemoPreset.Materials ? ", material passes (albedo, metallic, roughness, specular, emission: EXR + PNG) and material coverage"
                 : preset == DemoPreset.Relight ? ", each view under an analytic sky at 3 rotations and a point light (r_<i>_light_<key>.png, HDR beside), lights/"
+                : preset == DemoPreset.Flow ? ", one camera moving over time, the target's mesh at every step and its exact flow, occlusion and tracks (flow/)"
                 : "";
             return "RGBA, depth, normals, masks" + extra + ", points3d.ply, the geometry pack";
         }
@@ -141,7 +142,7 @@ namespace NerfDatasetCreator
         public static IReadOnlyList<ExportTarget> Targets(DemoPreset preset)
         {
             if (preset == DemoPreset.Dynamic) return new[] { ExportTarget.Dynamic3dgs, ExportTarget.Nerfies, ExportTarget.Dycheck, ExportTarget.Dynerf };
-            if (preset == DemoPreset.Monocular) return new[] { ExportTarget.Replica, ExportTarget.Tum };
+            if (preset == DemoPreset.Monocular || preset == DemoPreset.Flow) return new[] { ExportTarget.Replica, ExportTarget.Tum };
             if (preset == DemoPreset.Hdr) return new[] { ExportTarget.HdrNerf };
             var targets = new List<ExportTarget> { ExportTarget.Nerfstudio, ExportTarget.Colmap, ExportTarget.Ngp };
             if (preset == DemoPreset.Labels) targets.Add(ExportTarget.GaussianGrouping);
@@ -168,7 +169,7 @@ namespace NerfDatasetCreator
                 trains.Add("# " + TrainLine(target, output, targetReach));
             }
             lines.AddRange(trains);
-            if (preset != DemoPreset.Dynamic && preset != DemoPreset.Monocular)
+            if (preset != DemoPreset.Dynamic && preset != DemoPreset.Monocular && preset != DemoPreset.Flow)
             {
                 var renders = folder.TrimEnd('/', '\\') + "-renders";
                 lines.Add(Line("demo", renders, "--renders-for", folder) + "   # stand-in renders: evaluate without a model");

@@ -26,6 +26,7 @@ namespace NerfDatasetCreator
             SplitsCommand.Command,
             DemoCommand.Command,
             PlaceSplatCommand.Command,
+            FlowCommand.Command,
         };
 
         /// <summary>The last line of every usage text.</summary>

@@ -391,6 +391,7 @@ namespace NerfDatasetCreator.Editor
                     " {0} depth pixels lay beyond 65.535 output units and were clamped in the 16-bit depth PNGs (the EXR files keep them).",
                     files.ClampedDepthPixels);
             if (files.Matting.ViewsCounted > 0) message += " Matting: " + files.Matting.Total + ".";
+            if (prepared.Run.FlowSummary != null) message += " " + prepared.Run.FlowSummary;
             var mattingWarning = files.Matting.Warning();
             if (mattingWarning != null) Debug.LogWarning(mattingWarning);
             return new DatasetCaptureResult(true, false, session.FinalFolder, null, message, summary.Views, summary.ViewsPerSecond);

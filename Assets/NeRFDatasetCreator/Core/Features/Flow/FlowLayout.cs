@@ -27,6 +27,15 @@ namespace NerfDatasetCreator
         public static string OccludedFile(string video, int a, int b) => VideoFolder(video) + "/occluded_" + Pair(a, b) + ".png";
         public static string OutsideFile(string video, int a, int b) => VideoFolder(video) + "/outside_" + Pair(a, b) + ".png";
         public static string SceneFlowFile(string video, int a, int b) => VideoFolder(video) + "/scene_flow_" + Pair(a, b) + ".exr";
+        static readonly System.Text.RegularExpressions.Regex VideoFileName = new System.Text.RegularExpressions.Regex(
+            @"^(flow_\d{4,}_\d{4,}\.flo|(occluded|outside)_\d{4,}_\d{4,}\.png|scene_flow_\d{4,}_\d{4,}\.exr|tracks_\d{4,}\.npz)$", System.Text.RegularExpressions.RegexOptions.CultureInvariant);
+
+        /// <summary>Whether <paramref name="name"/> is a file name this layout writes in a video's folder (for OwnDataset's proof).</summary>
+        public static bool IsVideoFile(string name) => VideoFileName.IsMatch(name ?? "");
+
+        /// <summary>flow.json, the one file of the flow folder itself.</summary>
+        public static bool IsFolderFile(string name) => name == "flow.json";
+
         public static string TracksFile(string video, int q) => VideoFolder(video) + "/tracks_" + q.ToString("0000", CultureInfo.InvariantCulture) + ".npz";
     }
 }

@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using System.IO;
 
@@ -43,12 +44,40 @@ namespace NerfDatasetCreator
                         firstFile = frame.MeshFile;
                     }
                     else if (!SameTopology(meshes, triangles, vertices))
-                        throw Refuse(frame.MeshFile, "does not have the topology of " + firstFile + " (" + ply.Vertices.Count + " vertices, " + triangles.Length / 3 + " triangles, or other triangles): the target's mesh changes between steps, so a surface point at one step has no identity at the other.",
-                            "Flow needs deforming meshes of one topology (skinned or animated transforms); leave particles and meshes rebuilt per frame out of the target.");
+                        throw Refuse(frame.MeshFile, ChangedObject(root, firstFile, frame.MeshFile, meshes.Triangles, triangles) + "the target's mesh changes between steps, so a surface point at one step has no identity at the other.",
+                            "Flow needs deforming meshes of one topology (skinned or animated transforms): leave objects whose mesh is rebuilt per frame out of the target. Particles are not in the geometry pack and get no flow.");
                     meshes._vertices[frame.Step] = vertices;
                     meshes._trees[frame.Step] = TriangleBvh.Build(vertices, triangles);
                 }
             return meshes;
+        }
+
+        /// <summary>
+        /// Which object's mesh differs, read from the two PLYs' <c>comment object</c> lines (<see cref="TargetMeshObjects"/>):
+        /// "object "Cloth" has 120 triangles here and 96 in …: ". The first object that is missing, extra or of another
+        /// face count, else the one holding the first differing triangle; the counts alone when the PLYs name none.
+        /// </summary>
+        static string ChangedObject(string root, string firstFile, string file, int[] firstTriangles, int[] triangles)
+        {
+            var before = TargetMeshObjects.Read(Path.Combine(root, firstFile.Replace('/', Path.DirectorySeparatorChar)));
+            var after = TargetMeshObjects.Read(Path.Combine(root, file.Replace('/', Path.DirectorySeparatorChar)));
+            var counts = "(" + triangles.Length / 3 + " triangles here, " + firstTriangles.Length / 3 + " in " + firstFile + "): ";
+            if (before.Count == 0 || after.Count == 0) return "does not have the topology of " + firstFile + " " + counts;
+            for (var i = 0; i < Math.Max(before.Count, after.Count); i++)
+            {
+                if (i >= after.Count) return "has no object \"" + before[i].Name + "\", which " + firstFile + " has: ";
+                if (i >= before.Count) return "has object \"" + after[i].Name + "\", which " + firstFile + " does not: ";
+                if (before[i].Name != after[i].Name) return "has object \"" + after[i].Name + "\" where " + firstFile + " has \"" + before[i].Name + "\": ";
+                if (before[i].Faces != after[i].Faces)
+                    return "has object \"" + after[i].Name + "\" with " + after[i].Faces + " triangles, " + before[i].Faces + " in " + firstFile + ": ";
+            }
+            for (var k = 0; k < Math.Min(firstTriangles.Length, triangles.Length); k++)
+                if (firstTriangles[k] != triangles[k])
+                {
+                    var holder = TargetMeshObjects.Holding(after, k / 3);
+                    if (holder != null) return "has object \"" + holder.Name + "\" with other triangles than in " + firstFile + " (triangle " + (k / 3 - holder.First) + " of it differs): ";
+                }
+            return "does not have the vertex count of " + firstFile + " " + counts;
         }
 
         static bool SameTopology(FlowMeshes meshes, int[] triangles, double[] vertices)

@@ -14,8 +14,11 @@ namespace NerfDatasetCreator
     /// </summary>
     public static class FlowWriter
     {
+        /// <param name="progress">(pairs and query frames done, all of them); may be null.</param>
+        /// <param name="threads">Each image's rows and each track's frames are shared out among up to this many threads;
+        /// the files are the same for any count (every pixel and point is computed alone).</param>
         /// <returns>flow.json's content (also written).</returns>
-        public static JObject Write(string root, FlowSettings settings, Action<int, int> progress = null)
+        public static JObject Write(string root, FlowSettings settings, Action<int, int> progress = null, int threads = 1)
         {
             var scene = BlenderDatasetLoader.Load(root);
             var config = DatasetConfig.Read(root).ThrowIfUnreadable().Config;
@@ -43,14 +46,14 @@ namespace NerfDatasetCreator
                 {
                     int sa = video.Frames[pair.From].Step, sb = video.Frames[pair.To].Step;
                     var flow = new SurfaceFlow(meshes.Vertices(sa), meshes.Tree(sa), meshes.Vertices(sb), meshes.Tree(sb), meshes.Triangles);
-                    var field = flow.Image(cameras[pair.From], cameras[pair.To]);
+                    var field = flow.Image(cameras[pair.From], cameras[pair.To], threads);
                     WritePair(root, pair, field, settings.SceneFlow);
                     pairRecords.Add(FlowRecord.PairJson(pair, settings.SceneFlow));
                     progress?.Invoke(++done, total);
                 }
                 foreach (var q in queries)
                 {
-                    var tracks = SurfaceTracks.Of(meshes, video, cameras, q, settings.TrackStride);
+                    var tracks = SurfaceTracks.Of(meshes, video, cameras, q, settings.TrackStride, threads);
                     var file = FlowLayout.TracksFile(video.Name, q);
                     FileOps.WriteNewBytes(Full(root, file), TracksNpz(tracks));
                     trackRecords.Add(FlowRecord.TracksJson(video.Name, tracks, file));

@@ -1,4 +1,5 @@
 using System;
+using System.Threading.Tasks;
 
 namespace NerfDatasetCreator
 {
@@ -54,12 +55,19 @@ namespace NerfDatasetCreator
         /// The flow of continuous pixel (x, y) of <paramref name="from"/> into <paramref name="to"/>: false (and
         /// <see cref="FlowState.NoSurface"/>) when its ray meets no surface. Not thread-safe (the trees' stacks).
         /// </summary>
-        public FlowState At(FlowCamera from, FlowCamera to, double x, double y, out FlowSample sample)
+        public FlowState At(FlowCamera from, FlowCamera to, double x, double y, out FlowSample sample) =>
+            At(from, to, x, y, null, null, out sample);
+
+        /// <summary>
+        /// The same with the caller's traversal stacks for the trees at t and t′ (<see cref="TriangleBvh.NewStack"/>; null
+        /// = the trees' own): a thread with stacks of its own may call this while others do.
+        /// </summary>
+        public FlowState At(FlowCamera from, FlowCamera to, double x, double y, int[] stackFrom, int[] stackTo, out FlowSample sample)
         {
             sample = default;
             from.Ray(x, y, out var dx, out var dy, out var dz);
             var o = from.Centre;
-            if (!_atFrom.Intersect(o.X, o.Y, o.Z, dx, dy, dz, 0, double.PositiveInfinity, out var hit)) return FlowState.NoSurface;
+            if (!_atFrom.Intersect(o.X, o.Y, o.Z, dx, dy, dz, 0, double.PositiveInfinity, stackFrom, out var hit)) return FlowState.NoSurface;
             int a = 3 * _triangles[3 * hit.Triangle], b = 3 * _triangles[3 * hit.Triangle + 1], c = 3 * _triangles[3 * hit.Triangle + 2];
             double w0 = 1 - hit.U - hit.V, w1 = hit.U, w2 = hit.V;
             sample.Px = w0 * _from[a] + w1 * _from[b] + w2 * _from[c];
@@ -80,33 +88,53 @@ namespace NerfDatasetCreator
             // Occlusion: the ray from the camera at t′ to the point, t in (0, 1); a hit before 1 − tolerance hides it.
             var c2 = to.Centre;
             double rx = sample.Qx - c2.X, ry = sample.Qy - c2.Y, rz = sample.Qz - c2.Z;
-            return _atTo.Intersect(c2.X, c2.Y, c2.Z, rx, ry, rz, 0, 1 - HiddenTolerance, out _) ? FlowState.Hidden : FlowState.Visible;
+            return _atTo.Intersect(c2.X, c2.Y, c2.Z, rx, ry, rz, 0, 1 - HiddenTolerance, stackTo, out _) ? FlowState.Hidden : FlowState.Visible;
         }
 
-        /// <summary>Flow for every pixel centre of <paramref name="from"/>'s image into <paramref name="to"/>.</summary>
-        public FlowField Image(FlowCamera from, FlowCamera to)
+        /// <summary>Flow for every pixel centre of <paramref name="from"/>'s image into <paramref name="to"/>, on one thread.</summary>
+        public FlowField Image(FlowCamera from, FlowCamera to) => Image(from, to, 1);
+
+        /// <summary>
+        /// The same on up to <paramref name="threads"/> threads, rows shared out among them, each with its own traversal
+        /// stacks (the trees are only read). Every pixel is computed alone, so the field is the same for any thread count.
+        /// </summary>
+        public FlowField Image(FlowCamera from, FlowCamera to, int threads)
         {
             int w = from.Width, h = from.Height;
             var field = new FlowField(w, h);
-            for (var v = 0; v < h; v++)
-                for (var u = 0; u < w; u++)
-                {
-                    var p = v * w + u;
-                    var state = At(from, to, u + 0.5, v + 0.5, out var s);
-                    field.State[p] = (byte)state;
-                    if (state == FlowState.NoSurface)
-                    {
-                        field.Flow[2 * p] = field.Flow[2 * p + 1] = float.NaN;
-                        field.SceneFlow[3 * p] = field.SceneFlow[3 * p + 1] = field.SceneFlow[3 * p + 2] = float.NaN;
-                        continue;
-                    }
-                    field.Flow[2 * p] = (float)s.Dx;
-                    field.Flow[2 * p + 1] = (float)s.Dy;
-                    field.SceneFlow[3 * p] = (float)(s.Qx - s.Px);
-                    field.SceneFlow[3 * p + 1] = (float)(s.Qy - s.Py);
-                    field.SceneFlow[3 * p + 2] = (float)(s.Qz - s.Pz);
-                }
+            if (threads <= 1)
+            {
+                int[] stackFrom = _atFrom.NewStack(), stackTo = _atTo.NewStack();
+                for (var v = 0; v < h; v++) Row(from, to, field, v, stackFrom, stackTo);
+                return field;
+            }
+            Parallel.For(0, h, new ParallelOptions { MaxDegreeOfParallelism = threads },
+                () => new[] { _atFrom.NewStack(), _atTo.NewStack() },
+                (v, _, stacks) => { Row(from, to, field, v, stacks[0], stacks[1]); return stacks; },
+                _ => { });
             return field;
+        }
+
+        void Row(FlowCamera from, FlowCamera to, FlowField field, int v, int[] stackFrom, int[] stackTo)
+        {
+            var w = field.Width;
+            for (var u = 0; u < w; u++)
+            {
+                var p = v * w + u;
+                var state = At(from, to, u + 0.5, v + 0.5, stackFrom, stackTo, out var s);
+                field.State[p] = (byte)state;
+                if (state == FlowState.NoSurface)
+                {
+                    field.Flow[2 * p] = field.Flow[2 * p + 1] = float.NaN;
+                    field.SceneFlow[3 * p] = field.SceneFlow[3 * p + 1] = field.SceneFlow[3 * p + 2] = float.NaN;
+                    continue;
+                }
+                field.Flow[2 * p] = (float)s.Dx;
+                field.Flow[2 * p + 1] = (float)s.Dy;
+                field.SceneFlow[3 * p] = (float)(s.Qx - s.Px);
+                field.SceneFlow[3 * p + 1] = (float)(s.Qy - s.Py);
+                field.SceneFlow[3 * p + 2] = (float)(s.Qz - s.Pz);
+            }
         }
     }
 }

@@ -1,4 +1,5 @@
 using System.Collections.Generic;
+using System.Threading.Tasks;
 
 namespace NerfDatasetCreator
 {
@@ -27,7 +28,8 @@ namespace NerfDatasetCreator
         /// <summary>The surface point per frame and point, output frame and units.</summary>
         public float[] Positions { get; private set; }
 
-        public static SurfaceTracks Of(FlowMeshes meshes, FlowVideo video, IReadOnlyList<FlowCamera> cameras, int queryFrame, int stride)
+        /// <param name="threads">Frames shared out among up to this many threads (a stack each): the same arrays for any count.</param>
+        public static SurfaceTracks Of(FlowMeshes meshes, FlowVideo video, IReadOnlyList<FlowCamera> cameras, int queryFrame, int stride, int threads = 1)
         {
             var q = cameras[queryFrame];
             var queryStep = video.Frames[queryFrame].Step;
@@ -53,11 +55,13 @@ namespace NerfDatasetCreator
                 result.QueryXy[2 * p] = (float)hits[p].x;
                 result.QueryXy[2 * p + 1] = (float)hits[p].y;
             }
-            for (var t = 0; t < frames; t++)
+            // Each frame writes only its own slots (t·N …), so the frames may run on several threads.
+            void Frame(int t)
             {
                 var vertices = meshes.Vertices(video.Frames[t].Step);
                 var atT = meshes.Tree(video.Frames[t].Step);
                 var camera = cameras[t];
+                var stack = atT.NewStack();
                 var c = camera.Centre;
                 for (var p = 0; p < n; p++)
                 {
@@ -81,13 +85,15 @@ namespace NerfDatasetCreator
                     else
                     {
                         double rx = px - c.X, ry = py - c.Y, rz = pz - c.Z;
-                        state = atT.Intersect(c.X, c.Y, c.Z, rx, ry, rz, 0, 1 - SurfaceFlow.HiddenTolerance, out _) ? FlowState.Hidden : FlowState.Visible;
+                        state = atT.Intersect(c.X, c.Y, c.Z, rx, ry, rz, 0, 1 - SurfaceFlow.HiddenTolerance, stack, out _) ? FlowState.Hidden : FlowState.Visible;
                     }
                     result.Xy[2 * k] = (float)x;
                     result.Xy[2 * k + 1] = (float)y;
                     result.State[k] = (byte)state;
                 }
             }
+            if (threads > 1) Parallel.For(0, frames, new ParallelOptions { MaxDegreeOfParallelism = threads }, Frame);
+            else for (var t = 0; t < frames; t++) Frame(t);
             return result;
         }
     }

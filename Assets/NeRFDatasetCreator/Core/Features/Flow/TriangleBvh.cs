@@ -77,16 +77,31 @@ namespace NerfDatasetCreator
             return new TriangleBvh(ordered, builder.Order, builder.Bounds.ToArray(), builder.First.ToArray(), builder.Count.ToArray(), builder.Depth);
         }
 
+        /// <summary>The length of the traversal stack a cast needs (<see cref="NewStack"/>).</summary>
+        public int StackSize => _stack.Length;
+
+        /// <summary>A traversal stack for one thread's casts through <see cref="Intersect(double, double, double, double, double, double, double, double, int[], out RayHit)"/>.</summary>
+        public int[] NewStack() => new int[_stack.Length];
+
         /// <summary>
         /// The nearest hit of the ray o + t·d with t in (<paramref name="tMin"/>, <paramref name="tMax"/>); false when there is
-        /// none. Not thread-safe (one stack per tree): give each thread its own tree or lock.
+        /// none. Not thread-safe (one stack per tree): a thread of its own passes its own stack to the overload below.
         /// </summary>
-        public bool Intersect(double ox, double oy, double oz, double dx, double dy, double dz, double tMin, double tMax, out RayHit hit)
+        public bool Intersect(double ox, double oy, double oz, double dx, double dy, double dz, double tMin, double tMax, out RayHit hit) =>
+            Intersect(ox, oy, oz, dx, dy, dz, tMin, tMax, null, out hit);
+
+        /// <summary>
+        /// The same cast with the caller's traversal <paramref name="stack"/> (<see cref="NewStack"/>; at least
+        /// <see cref="StackSize"/> long; null = the tree's own): the tree itself is only read, so threads with a stack
+        /// each may cast at once.
+        /// </summary>
+        public bool Intersect(double ox, double oy, double oz, double dx, double dy, double dz, double tMin, double tMax, int[] stack, out RayHit hit)
         {
             hit = new RayHit { T = tMax, Triangle = -1 };
             if (_original.Length == 0) return false;
+            stack = stack ?? _stack;
+            if (stack.Length < _stack.Length) throw new ArgumentException("The stack holds " + stack.Length + " entries; this tree needs " + _stack.Length + " (NewStack).", nameof(stack));
             double ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
-            var stack = _stack;
             var top = 0;
             stack[top++] = 0;
             var best = tMax;

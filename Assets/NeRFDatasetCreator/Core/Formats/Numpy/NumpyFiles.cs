@@ -129,6 +129,8 @@ namespace NerfDatasetCreator
                 foreach (var pair in arrays)
                 {
                     var entry = zip.CreateEntry(pair.Key + ".npy", CompressionLevel.NoCompression);
+                    // A fixed date (the zip format's first, 1980-01-01) instead of the clock's: the same arrays give the same bytes.
+                    entry.LastWriteTime = new DateTimeOffset(new DateTime(1980, 1, 1, 0, 0, 0, DateTimeKind.Unspecified), TimeSpan.Zero);
                     using (var stream = entry.Open()) stream.Write(pair.Value, 0, pair.Value.Length);
                 }
             return buffer.ToArray();

@@ -137,8 +137,9 @@ namespace NerfDatasetCreator.Tests
             "  check <dir> [--split S] [--json FILE] [--max-views N] [--model <dir>]  decode the images and check that alpha, masks, depth, normals, poses and point cloud agree\n" +
             "  evaluate <dir> --renders <dir> [--split test|sparse_<n>] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset [--override-protocol]] [--trainer-metrics <json>] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]  score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html\n" +
             "  splits <dir> [--views 8[,3,...]]                        write sparse-view split files (splits/sparse_<n>.json: nerf_synthetic's paper lists, else farthest-point views) for evaluate --split\n" +
-            "  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular|hdr|materials|relight] [--views N] [--size PX] [--renders-for <dataset>]  write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)\n" +
+            "  demo <dir> [--preset static|dynamic|labels|lens|exposure|blur|monocular|hdr|materials|relight|flow] [--views N] [--size PX] [--renders-for <dataset>]  write a small trainable dataset of a built-in scene, no Unity needed (--renders-for: stand-in renders of a demo's test split, to try evaluate)\n" +
             "  place-splat <dir> --model <trained output> [--trainer 3dgs|nerfstudio|gsplat] [--ply <file>] [--json <file>]  where a trained Gaussian splat goes in the Unity scene: Transform, object-to-world, cameras.json\n" +
+            "  flow <dir> [--spans 1[,2,...]] [--no-backward] [--no-scene-flow] [--tracks Q[,Q,...]] [--stride N] [--threads N]  add exact optical flow, scene flow, occlusion and tracks (flow/) to a dynamic dataset with \"geometryPack\": \"everyStep\"\n" +
             "exit codes: 0 success; 1 problems found, refused or failed; 2 usage, config or settings error\n" +
             "nerf-dataset <command> --help prints that command's options; nerf-dataset --version its version.";
 
@@ -146,7 +147,7 @@ namespace NerfDatasetCreator.Tests
         public void TheHelpTextIsBuiltFromTheCommandTableAsReleased()
         {
             Assert.That(ToolCommands.Usage, Is.EqualTo(ReleasedUsage));
-            Assert.That(ToolCommands.All.Select(c => c.Name), Is.EqualTo(new[] { "plan", "validate", "merge", "convert", "clean", "check", "evaluate", "splits", "demo", "place-splat" }));
+            Assert.That(ToolCommands.All.Select(c => c.Name), Is.EqualTo(new[] { "plan", "validate", "merge", "convert", "clean", "check", "evaluate", "splits", "demo", "place-splat", "flow" }));
         }
 
         [Test]
