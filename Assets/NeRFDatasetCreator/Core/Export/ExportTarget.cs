@@ -43,6 +43,15 @@ namespace NerfDatasetCreator
 
         /// <summary>HDR-NeRF's synthetic layout: five exposure brackets per view from the linear HDR colour (<see cref="HdrNerfExport"/>).</summary>
         HdrNerf,
+
+        /// <summary>TensoIR-Synthetic's per-view layout, which NeRFactor reads too: albedo, normals, relit views (<see cref="TensoIRExport"/>).</summary>
+        Tensoir,
+
+        /// <summary>GS-IR: TensoIR's layout through its Blender reader (<see cref="GsIr"/>).</summary>
+        GsIr,
+
+        /// <summary>Relightable 3D Gaussians' Synthetic4Relight layout (<see cref="R3dgExport"/>).</summary>
+        R3dg,
     }
 
     public static class ExportTargets
@@ -51,6 +60,7 @@ namespace NerfDatasetCreator
         {
             "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping", "nerfies", "dycheck", "llff", "dynerf", "neus",
             "replica", "tum", "multiscale", "hdr-nerf",
+            "tensoir", "gs-ir", "r3dg",
         };
 
         /// <summary>
