@@ -80,6 +80,12 @@ namespace NerfDatasetCreator
         /// <summary>The names of the format the dataset is already in: the Blender loaders read the folder as it is.</summary>
         static readonly string[] AlreadyNames = { "nerf", "blender" };
 
+        /// <summary>
+        /// <see cref="Accepted"/> with the trainers' names first: a tie goes to the earlier name, and "3dg" is one edit from
+        /// both "3dgs" and "r3dg" — the 3DGS user is the likelier writer.
+        /// </summary>
+        static IEnumerable<string> SuggestionOrder => LoaderNames.Select(p => p.Key).Concat(Names);
+
         /// <summary>Every name <c>--to</c> accepts (a suggestion may be any of them).</summary>
         public static IEnumerable<string> Accepted => Names.Concat(LoaderNames.Select(p => p.Key));
 
@@ -101,7 +107,7 @@ namespace NerfDatasetCreator
                 return null;
             }
             problem = new ValidationProblem("--to", value ?? "", "is not an export format.",
-                "Use one of: " + string.Join(", ", Names) + " (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp)." + SpellingSuggestion.Sentence(written, Accepted));
+                "Use one of: " + string.Join(", ", Names) + " (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp)." + SpellingSuggestion.Sentence(written, SuggestionOrder));
             return null;
         }
     }
