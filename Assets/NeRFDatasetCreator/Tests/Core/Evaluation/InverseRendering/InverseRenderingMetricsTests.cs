@@ -153,6 +153,17 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void InverseAloneIsAnEvaluateInvocationAndNeitherIsAnError()
+        {
+            var alone = ToolCommandLine.Parse(new[] { "evaluate", "d", "--inverse", "m" });
+            Assert.That(alone.Errors, Is.Empty);
+            Assert.That(((EvaluationOptions)alone.Options).InverseFolder, Does.EndWith("m"));
+            Assert.That(((EvaluationOptions)alone.Options).RendersFolder, Is.Null);
+            var neither = ToolCommandLine.Parse(new[] { "evaluate", "d" });
+            Assert.That(neither.Errors, Has.Some.StartWith("evaluate needs --renders <folder>"));
+        }
+
+        [Test]
         public void AMissingPredictionIsRefusedNamingItAndNothingIsWritten()
         {
             var folder = _temp.Combine("partial");
