@@ -168,6 +168,15 @@ namespace NerfDatasetCreator.Tool.Tests
                             yield return Promise(HdrNerf.ExposureFileName("test"), File.Exists(Path.Combine(output, HdrNerf.ExposureFileName("test"))));
                             yield return Promise("test/r_0_4.png", File.Exists(Path.Combine(output, "test", "r_0_4.png")));
                             break;
+                        case "tensoir":
+                        case "gs-ir":
+                            yield return Promise("test_000/" + TensoIR.Metadata, File.Exists(Path.Combine(output, TensoIR.ViewFolder("test", 0), TensoIR.Metadata)));
+                            yield return Promise("transforms_test.json", File.Exists(Path.Combine(output, "transforms_test.json")));
+                            break;
+                        case "r3dg":
+                            yield return Promise("train/r_0_rgb.exr", File.Exists(Path.Combine(output, "train", R3dg.TrainImage("r_0"))));
+                            yield return Promise("test/r_0_rgba.png", File.Exists(Path.Combine(output, "test", R3dg.TestImage("r_0"))));
+                            break;
                         case "multiscale":
                             yield return Promise("colmap/images_4", Directory.Exists(Path.Combine(output, MultiscaleExport.ColmapFolder, "images_4")));
                             yield return Promise("mipnerf/metadata.json", File.Exists(Path.Combine(output, MipNerfMultiscale.FolderName, MipNerfMultiscale.MetadataFileName)));

@@ -139,6 +139,7 @@ namespace NerfDatasetCreator
                     options.Materials = true;
                     break;
                 case DemoPreset.Relight:
+                    options.Materials = true; // the inverse-rendering layouts' albedo, roughness and metallic
                     options.Configure = s =>
                     {
                         s.Relighting = RelightConditions();

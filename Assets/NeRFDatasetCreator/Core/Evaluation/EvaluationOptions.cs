@@ -7,6 +7,9 @@ namespace NerfDatasetCreator
     {
         public string DatasetFolder;
         public string RendersFolder;
+
+        /// <summary><c>--inverse</c>: a relightable model's albedo/, normal/, roughness/, relit/&lt;key&gt;/ outputs (<see cref="InverseRenderingEvaluator"/>); null: none.</summary>
+        public string InverseFolder;
         /// <summary>Null: the protocol's evaluation split (eval_protocol.json), else test.</summary>
         public string Split;
 

@@ -119,6 +119,9 @@ namespace NerfDatasetCreator
                     case ExportTarget.Tum: result = TumRgbdExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.Multiscale: result = MultiscaleExport.Write(scene, output, points, warnings, staged); break;
                     case ExportTarget.HdrNerf: result = HdrNerfExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.Tensoir: result = TensoIRExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.GsIr: result = TensoIRExport.Write(scene, output, warnings, staged, gsIr: true); break;
+                    case ExportTarget.R3dg: result = R3dgExport.Write(scene, output, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 EvalProtocolCarry.Copy(scene.RootDirectory, output, staged, warnings);
@@ -153,6 +156,9 @@ namespace NerfDatasetCreator
                 case ExportTarget.Tum: return Path.GetFullPath(Path.Combine(root, TumRgbd.FolderName));
                 case ExportTarget.Multiscale: return Path.GetFullPath(Path.Combine(root, MultiscaleExport.FolderName));
                 case ExportTarget.HdrNerf: return Path.GetFullPath(Path.Combine(root, HdrNerf.FolderName));
+                case ExportTarget.Tensoir: return Path.GetFullPath(Path.Combine(root, TensoIR.FolderName));
+                case ExportTarget.GsIr: return Path.GetFullPath(Path.Combine(root, GsIr.FolderName));
+                case ExportTarget.R3dg: return Path.GetFullPath(Path.Combine(root, R3dg.FolderName));
                 default: return Path.GetFullPath(root);
             }
         }

@@ -43,6 +43,15 @@ namespace NerfDatasetCreator
 
         /// <summary>HDR-NeRF's synthetic layout: five exposure brackets per view from the linear HDR colour (<see cref="HdrNerfExport"/>).</summary>
         HdrNerf,
+
+        /// <summary>TensoIR-Synthetic's per-view layout, which NeRFactor reads too: albedo, normals, relit views (<see cref="TensoIRExport"/>).</summary>
+        Tensoir,
+
+        /// <summary>GS-IR: TensoIR's layout through its Blender reader (<see cref="GsIr"/>).</summary>
+        GsIr,
+
+        /// <summary>Relightable 3D Gaussians' Synthetic4Relight layout (<see cref="R3dgExport"/>).</summary>
+        R3dg,
     }
 
     public static class ExportTargets
@@ -51,6 +60,7 @@ namespace NerfDatasetCreator
         {
             "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping", "nerfies", "dycheck", "llff", "dynerf", "neus",
             "replica", "tum", "multiscale", "hdr-nerf",
+            "tensoir", "gs-ir", "r3dg",
         };
 
         /// <summary>
@@ -69,6 +79,12 @@ namespace NerfDatasetCreator
 
         /// <summary>The names of the format the dataset is already in: the Blender loaders read the folder as it is.</summary>
         static readonly string[] AlreadyNames = { "nerf", "blender" };
+
+        /// <summary>
+        /// <see cref="Accepted"/> with the trainers' names first: a tie goes to the earlier name, and "3dg" is one edit from
+        /// both "3dgs" and "r3dg" — the 3DGS user is the likelier writer.
+        /// </summary>
+        static IEnumerable<string> SuggestionOrder => LoaderNames.Select(p => p.Key).Concat(Names);
 
         /// <summary>Every name <c>--to</c> accepts (a suggestion may be any of them).</summary>
         public static IEnumerable<string> Accepted => Names.Concat(LoaderNames.Select(p => p.Key));
@@ -91,7 +107,7 @@ namespace NerfDatasetCreator
                 return null;
             }
             problem = new ValidationProblem("--to", value ?? "", "is not an export format.",
-                "Use one of: " + string.Join(", ", Names) + " (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp)." + SpellingSuggestion.Sentence(written, Accepted));
+                "Use one of: " + string.Join(", ", Names) + " (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp)." + SpellingSuggestion.Sentence(written, SuggestionOrder));
             return null;
         }
     }

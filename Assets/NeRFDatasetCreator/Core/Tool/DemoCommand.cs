@@ -144,6 +144,8 @@ namespace NerfDatasetCreator
             if (preset == DemoPreset.Dynamic) return new[] { ExportTarget.Dynamic3dgs, ExportTarget.Nerfies, ExportTarget.Dycheck, ExportTarget.Dynerf };
             if (preset == DemoPreset.Monocular || preset == DemoPreset.Flow) return new[] { ExportTarget.Replica, ExportTarget.Tum };
             if (preset == DemoPreset.Hdr) return new[] { ExportTarget.HdrNerf };
+            // The inverse-rendering layouts read the material passes and relit views; R3DG also the linear HDR colour the preset writes.
+            if (preset == DemoPreset.Relight) return new[] { ExportTarget.Tensoir, ExportTarget.GsIr, ExportTarget.R3dg };
             var targets = new List<ExportTarget> { ExportTarget.Nerfstudio, ExportTarget.Colmap, ExportTarget.Ngp };
             if (preset == DemoPreset.Labels) targets.Add(ExportTarget.GaussianGrouping);
             // LLFF, NeuS and multiscale hold no lens (mip-NeRF's metadata is a pinhole): the plain static preset only.
@@ -195,6 +197,9 @@ namespace NerfDatasetCreator
                 case ExportTarget.Replica:
                 case ExportTarget.Tum: return "python slam.py --config " + Quote(output + "/" + Replica.MonoGsConfigFileName) + "   (MonoGS, from its folder; convert prints SplaTAM's and Gaussian-SLAM's)";
                 case ExportTarget.Multiscale: return "python simple_trainer.py default --data_dir " + Quote(output + "/" + MultiscaleExport.ColmapFolder) + " --data_factor 4   (gsplat; mip-NeRF layout in " + Quote(output + "/" + MipNerfMultiscale.FolderName) + ")";
+                case ExportTarget.Tensoir: return "export PYTHONPATH=. && python train_tensoIR_rotated_multi_lights.py --config configs/multi_light_rotated/lego.txt --datadir " + Quote(output) + "   (TensoIR; NeRFactor reads it too)";
+                case ExportTarget.GsIr: return "python train.py -m outputs/scene/ -s " + Quote(output) + " --iterations 30000 --eval   (GS-IR stage 1)";
+                case ExportTarget.R3dg: return "python train.py --eval -s " + Quote(output) + " -m output/scene/3dgs   (R3DG stage 1)";
                 case ExportTarget.HdrNerf: return "python3 run_nerf.py --config configs/demo.txt --dataset_type syn_llff --datadir " + Quote(output) + " --white_bkgd   (HDR-NeRF)";
                 default: return "python train.py   (Dynamic 3D Gaussians: copy " + Quote(output) + " to its data/ folder first, as convert says)";
             }

@@ -11,9 +11,10 @@ namespace NerfDatasetCreator
     public static class EvaluateCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("evaluate",
-            "evaluate <dir> --renders <dir> [--split test|sparse_<n>] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset [--override-protocol]] [--trainer-metrics <json>] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
+            "evaluate <dir> --renders <dir> [--inverse <dir>] [--split test|sparse_<n>] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset [--override-protocol]] [--trainer-metrics <json>] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
             "score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html", Parse, Run, "override-protocol").WithOptions(
             "--renders <dir>               the trainer's renders of the split (3DGS model folder, ns-render --output-path, instant-ngp --screenshot_dir, or r_<i>.png)",
+            "--inverse <dir>               a relightable model's albedo/, normal/, roughness/, relit/<key>/ (r_<i>.png|.exr): TensoIR's albedo PSNR, normal MAE, relit PSNR/SSIM, R3DG's roughness MSE (--renders may then be left out)",
             "--split test|val|train        the split the renders show (default: eval_protocol.json's, else test)",
             "--split sparse_<n>            score only the test views splits/sparse_<n>.json lists (nerf-dataset splits)",
             "--out <dir>                   where metrics.json, report.html and the error maps go (default <renders>/evaluation-<split>)",
@@ -30,10 +31,11 @@ namespace NerfDatasetCreator
         /// <summary><c>evaluate &lt;dataset&gt; --renders &lt;dir&gt; [options]</c> → <see cref="EvaluationOptions"/>.</summary>
         static EvaluationOptions Parse(ToolArguments arguments)
         {
-            arguments.RefuseUnknownOptions("renders", "split", "out", "layout", "background", "override-protocol", "trainer-metrics", "render-depth", "geometry", "gt-mesh", "threshold", "step");
+            arguments.RefuseUnknownOptions("renders", "inverse", "split", "out", "layout", "background", "override-protocol", "trainer-metrics", "render-depth", "geometry", "gt-mesh", "threshold", "step");
             var e = new EvaluationOptions();
             e.DatasetFolder = arguments.OnePositional("evaluate needs exactly one dataset folder, e.g. evaluate NeRFDatasets/lego --renders output/lego.");
-            if (!arguments.TryGet("renders", out var renders) || string.IsNullOrWhiteSpace(renders))
+            e.InverseFolder = arguments.OptionalPath("inverse", "--inverse is empty; name the folder with albedo/, normal/, roughness/ or relit/<key>/, or leave it out.");
+            if ((!arguments.TryGet("renders", out var renders) || string.IsNullOrWhiteSpace(renders)) && e.InverseFolder == null)
                 arguments.Error("evaluate needs --renders <folder>: the trainer's renders of the split (3DGS model folder, ns-render dataset's --output-path, instant-ngp --screenshot_dir, or r_<i>.png files).");
             e.RendersFolder = renders;
             // sparse_<n>: a split file (splits/sparse_<n>.json), checked against the dataset when it is read; anything else
@@ -84,6 +86,11 @@ namespace NerfDatasetCreator
 
         public static int Run(EvaluationOptions options, TextWriter stdout, TextWriter stderr)
         {
+            if (options.InverseFolder != null)
+            {
+                var code = RunInverse(options, stdout, stderr);
+                if (code != ToolExitCodes.Success || options.RendersFolder == null) return code;
+            }
             EvaluationResult result;
             try
             {
@@ -137,6 +144,43 @@ namespace NerfDatasetCreator
             if (result.Trainer?.Lpips == null) stdout.WriteLine("  LPIPS is not computed (it needs network weights): 3DGS python metrics.py -m <model>, nerfstudio ns-eval; evaluate shows their figures (--trainer-metrics).");
             stdout.WriteLine("wrote " + Path.Combine(result.OutFolder, MetricsJson.FileName) + ", " + Path.Combine(result.OutFolder, ReportHtml.FileName) + " and " + result.Views.Count + " error maps in " +
                              Path.Combine(result.OutFolder, EvaluationOutput.ErrorFolder));
+            return ToolExitCodes.Success;
+        }
+
+        /// <summary><c>--inverse</c>: <see cref="InverseRenderingEvaluator"/>, then its figures.</summary>
+        static int RunInverse(EvaluationOptions options, TextWriter stdout, TextWriter stderr)
+        {
+            var split = options.Split ?? "test";
+            var outFolder = options.ResolvedOutFolder(options.InverseFolder, split);
+            Newtonsoft.Json.Linq.JObject json;
+            try
+            {
+                json = InverseRenderingEvaluator.Run(options.DatasetFolder, options.InverseFolder, split, outFolder);
+            }
+            catch (InvalidParameterException e)
+            {
+                foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
+                stderr.WriteLine("evaluate refused: nothing was written.");
+                return ToolExitCodes.Failure;
+            }
+            catch (InvalidDataException e)
+            {
+                stderr.WriteLine("error: " + e.Message);
+                stderr.WriteLine("evaluate stopped on a file it cannot read.");
+                return ToolExitCodes.Failure;
+            }
+            stdout.WriteLine("inverse rendering, " + json["views"] + " " + split + " views:");
+            if (json["albedo"] is Newtonsoft.Json.Linq.JObject albedo)
+                stdout.WriteLine("  albedo PSNR " + Show(albedo["psnr_tensoir_three_channel_global"], "0.00") + " dB (TensoIR's three-channel global median scaling; single-channel " + Show(albedo["psnr_single_channel_global"], "0.00") +
+                                 ", per view " + Show(albedo["psnr_three_channel_per_view"], "0.00") + " / " + Show(albedo["psnr_single_channel_per_view"], "0.00") + " dB)");
+            if (json["normals"] is Newtonsoft.Json.Linq.JObject normals)
+                stdout.WriteLine("  normals " + Show(normals["mae_degrees_all_pixels"], "0.00") + "° mean angular error over all pixels (TensoIR's), " + Show(normals["mae_degrees_target"], "0.00") + "° over the target");
+            if (json["roughness"] is Newtonsoft.Json.Linq.JObject roughness)
+                stdout.WriteLine("  roughness MSE " + Show(roughness["mse"], "0.00000") + " (R3DG's, alpha-masked)");
+            if (json["relit"] is Newtonsoft.Json.Linq.JObject relit)
+                foreach (var pair in relit)
+                    stdout.WriteLine("  relit " + pair.Key + ": PSNR " + Show(pair.Value["psnr"], "0.00") + " dB, SSIM " + Show(pair.Value["ssim"], "0.0000"));
+            stdout.WriteLine("wrote " + Path.Combine(outFolder, InverseRenderingEvaluator.FileName));
             return ToolExitCodes.Success;
         }
 

@@ -37,6 +37,12 @@ namespace NerfDatasetCreator
                     return new ValidationProblem("--to", "hdr-nerf",
                         "cannot hold lens distortion: HDR-NeRF's synthetic loader takes a pinhole focal from camera_angle_x only (load_syn_llff.py:133–134), and this dataset's images were taken through " + lens.Describe() + ".",
                         "Capture without a lens (the Camera step's lens \"none\") for exposure brackets.");
+                case ExportTarget.Tensoir:
+                case ExportTarget.GsIr:
+                case ExportTarget.R3dg:
+                    return new ValidationProblem("--to", ExportTargets.Name(target),
+                        "cannot hold lens distortion: TensoIR, NeRFactor, GS-IR and R3DG take a pinhole focal from cam_angle_x / camera_angle_x only (tensoIR_rotation_setting.py:103, nerf.py:188, dataset_readers.py:232, 557), and this dataset's images were taken through " + lens.Describe() + ".",
+                        "Capture without a lens (the Camera step's lens \"none\") for inverse-rendering layouts.");
                 case ExportTarget.Colmap when depths:
                     return new ValidationProblem("--depths", lens.ColmapModelName,
                         "writes depth maps for 3DGS, whose COLMAP reader accepts only PINHOLE and SIMPLE_PINHOLE cameras, and this dataset's lens is " + lens.Describe() + ".",
