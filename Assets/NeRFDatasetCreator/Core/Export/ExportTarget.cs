@@ -43,6 +43,12 @@ namespace NerfDatasetCreator
 
         /// <summary>HDR-NeRF's synthetic layout: five exposure brackets per view from the linear HDR colour (<see cref="HdrNerfExport"/>).</summary>
         HdrNerf,
+
+        /// <summary>Kubric / MOVi scene folders with 16-bit forward and backward flow from flow/ (<see cref="KubricExport"/>).</summary>
+        Kubric,
+
+        /// <summary>Neural Scene Flow Fields' scene folders with flow_i1/ npz, disp/ and motion_masks/ from flow/ (<see cref="NsffExport"/>).</summary>
+        Nsff,
     }
 
     public static class ExportTargets
@@ -51,6 +57,8 @@ namespace NerfDatasetCreator
         {
             "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping", "nerfies", "dycheck", "llff", "dynerf", "neus",
             "replica", "tum", "multiscale", "hdr-nerf",
+            "kubric",
+            "nsff",
         };
 
         /// <summary>
