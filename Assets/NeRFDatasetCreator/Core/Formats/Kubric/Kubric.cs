@@ -5,11 +5,11 @@ namespace NerfDatasetCreator
 {
     /// <summary>
     /// The names and conventions of a Kubric scene folder as its MOVi loader reads it (google-research/kubric 0ee21e2,
-    /// challenges/movi/movi_e.py <c>load_scene_directory</c>, lines 346–418; citations in
+    /// challenges/movi/movi_e.py <c>load_scene_directory</c>, lines 346–434; citations in
     /// Documentation~/maintainers/layouts-flow.md):
     /// <list type="bullet">
     /// <item><c>rgba_%05d.png</c>, <c>forward_flow_%05d.png</c>, <c>backward_flow_%05d.png</c> per frame
-    /// (movi_e.py:381–384, <c>f"{key}_{f:05d}.png"</c> for f in range(num_frames)).</item>
+    /// (movi_e.py:382–385, <c>f"{key}_{f:05d}.png"</c> for f in range(num_frames)).</item>
     /// <item>Flow channels (Δrow, Δcol) in pixels: Blender's vector pass is (−Δcol, Δrow) and Kubric swaps it
     /// (kubric/renderer/blender_utils.py:237–245).</item>
     /// <item>Backward flow keeps the forward direction of time: <c>backward_flow[t] = p(t) − p(t − 1)</c> at frame t's

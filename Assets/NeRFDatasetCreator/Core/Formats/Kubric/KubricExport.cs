@@ -10,11 +10,11 @@ namespace NerfDatasetCreator
     /// <summary>
     /// <c>convert --to kubric</c>: each video of the dataset's <c>flow/</c> as a Kubric / MOVi scene folder
     /// (<see cref="Kubric"/>) under <c>kubric/scenes/&lt;video&gt;/</c>: <c>rgba_%05d.png</c> (RGB over the protocol
-    /// background, alpha 255: the loader keeps <c>[..., :3]</c>, movi_e.py:415–418), <c>forward_flow_%05d.png</c> and
+    /// background, alpha 255: the loader keeps <c>[..., :3]</c>, movi_e.py:428–431), <c>forward_flow_%05d.png</c> and
     /// <c>backward_flow_%05d.png</c> (16-bit, <see cref="KubricFlowPng"/>), <c>data_ranges.json</c>, <c>metadata.json</c>
     /// and <c>events.json</c> (no collisions). What the edge frames and empty pixels hold: the last frame's forward flow
     /// and the first frame's backward flow are 0 (Kubric renders a frame before and after the video instead,
-    /// movi_def_worker.py:185–187; a capture has no such frames); a pixel without target surface, or whose point is
+    /// movi_def_worker.py:187–188; a capture has no such frames); a pixel without target surface, or whose point is
     /// behind the other camera, is 0; a pixel whose point is hidden or outside the image at the other frame keeps its
     /// exact motion (Blender's vector pass is a motion field too). No depth, segmentation, normal or
     /// object_coordinates layers: read the scenes with <c>layers=("rgba", "forward_flow", "backward_flow")</c>.
@@ -83,7 +83,7 @@ namespace NerfDatasetCreator
             });
         }
 
-        /// <summary>The (min, max) of a layer's (Δrow, Δcol) over every frame of the video, the zero frames and pixels included (Kubric's np.min / np.max of the whole batch, file_io.py:288–289).</summary>
+        /// <summary>The (min, max) of a layer's (Δrow, Δcol) over every frame of the video, the zero frames and pixels included (Kubric's np.min / np.max of the whole batch, file_io.py:289–290).</summary>
         static (double Min, double Max) Range(string root, FlowExportVideo video, CameraIntrinsics k, bool forward)
         {
             double min = 0, max = 0; // the edge frame is all 0

@@ -7,8 +7,8 @@ namespace NerfDatasetCreator
     /// <summary>
     /// Kubric's flow PNG: 16-bit RGB, R = Δrow, G = Δcol quantised over the video's range, B = 0. Kubric's
     /// <c>write_png</c> pads a two-channel image with a zero channel and writes it with pypng as 16-bit RGB
-    /// (google-research/kubric 0ee21e2 kubric/file_io.py:103–113), and its readers take <c>[..., :2]</c>
-    /// (challenges/movi/movi_e.py:400–403). The plugin's PNG writer has no 16-bit RGB, so this encodes one: signature,
+    /// (google-research/kubric 0ee21e2 kubric/file_io.py:107–117), and its readers take <c>[..., :2]</c>
+    /// (challenges/movi/movi_e.py:401, 410). The plugin's PNG writer has no 16-bit RGB, so this encodes one: signature,
     /// IHDR (bit depth 16, colour type 2), one zlib IDAT of unfiltered rows (filter byte 0), IEND (PNG spec §11.2).
     /// </summary>
     public static class KubricFlowPng
@@ -17,7 +17,7 @@ namespace NerfDatasetCreator
 
         /// <summary>
         /// The quantised value of <paramref name="value"/> in [<paramref name="min"/>, <paramref name="max"/>]: Kubric's
-        /// <c>(data − min) · 65535 / (max − min)</c> (file_io.py:290), rounded to the nearest code where Kubric truncates
+        /// <c>(data − min) · 65535 / (max − min)</c> (file_io.py:292), rounded to the nearest code where Kubric truncates
         /// (<c>astype(np.uint16)</c>), so a decoded value is within half a step, (max − min) / 131070, of the flow.
         /// </summary>
         public static ushort Quantise(double value, double min, double max)

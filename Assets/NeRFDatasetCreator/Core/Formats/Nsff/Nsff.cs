@@ -20,7 +20,7 @@ namespace NerfDatasetCreator
         public const string MotionMasksFolder = "motion_masks";
         public const string FlowFolder = "flow_i1";
 
-        /// <summary>run_nerf.py:114, <c>--target_idx</c> default 10: load_llff.py:349 indexes <c>poses[target_idx]</c>, so a shorter video needs a smaller one.</summary>
+        /// <summary>run_nerf.py:114, <c>--target_idx</c> default 10: load_llff.py:348 indexes <c>poses[target_idx]</c>, so a shorter video needs a smaller one.</summary>
         public const int DefaultTargetIdx = 10;
 
         /// <summary>The folder NSFF reads images from with <c>--final_height H</c>: <c>images_{W}x{H}</c> (load_llff.py:30–34).</summary>

@@ -9,8 +9,8 @@ namespace NerfDatasetCreator.Tests
 {
     /// <summary>
     /// <c>convert --to kubric</c> read back as Kubric's MOVi builder reads a scene folder — a re-implementation of
-    /// <c>load_scene_directory</c> and <c>read_png</c> (google-research/kubric 0ee21e2 challenges/movi/movi_e.py:346–418,
-    /// 596–612), decoded as its docstring says (movi_e.py:72–83) — and compared with our flow (Δrow = dy, Δcol = dx
+    /// <c>load_scene_directory</c> and <c>read_png</c> (google-research/kubric 0ee21e2 challenges/movi/movi_e.py:346–434,
+    /// 591–611), decoded as its docstring says (movi_e.py:72–83) — and compared with our flow (Δrow = dy, Δcol = dx
     /// within Kubric's 16-bit quantisation step), with the camera-induced motion of static pixels computed from the
     /// depth EXRs and poses alone (pins sign, axis order and Kubric's backward direction of time), and with the dataset.
     /// </summary>
@@ -54,9 +54,9 @@ namespace NerfDatasetCreator.Tests
             Assert.That(scene.Metadata["metadata"]["num_instances"], Is.Not.Null);
             Assert.That(scene.Metadata["metadata"]["background"], Is.Not.Null);
             Assert.That(scene.Metadata["instances"], Is.InstanceOf<JArray>());
-            foreach (var key in new[] { "focal_length", "sensor_width", "field_of_view", "positions", "quaternions" }) // format_camera_information :446–453
+            foreach (var key in new[] { "focal_length", "sensor_width", "field_of_view", "positions", "quaternions" }) // format_camera_information :449–456
                 Assert.That(scene.Metadata["camera"][key], Is.Not.Null, key);
-            Assert.That(scene.Events["collisions"], Is.InstanceOf<JArray>()); // format_events_information :473–483
+            Assert.That(scene.Events["collisions"], Is.InstanceOf<JArray>()); // format_events_information :472–482
             // :376–380: resolution = metadata["metadata"]["resolution"]; the asserts; scale = resolution[1] / target_size[0].
             var resolution = (JArray)scene.Metadata["metadata"]["resolution"];
             Assert.That((double)resolution[1] / targetSize.H, Is.EqualTo((double)resolution[0] / targetSize.W));
@@ -64,14 +64,14 @@ namespace NerfDatasetCreator.Tests
             Assert.That(scale, Is.EqualTo((int)resolution[1] / targetSize.H));
             // :382–385: paths[key] = [scene_dir / f"{key}_{f:05d}.png" for f in range(num_frames)]
             string PathOf(string key, int f) => Path.Combine(sceneDir, key + "_" + f.ToString("00000") + ".png");
-            // :396–412: the ranges divided by scale; each frame read_png(...)[..., :2] (subsample_nearest_neighbor at scale 1 is the identity, :525–537).
+            // :396–412: the ranges divided by scale; each frame read_png(...)[..., :2] (subsample_nearest_neighbor at scale 1 is the identity, :529–541).
             scene.ForwardRange = new[] { (double)dataRanges["forward_flow"]["min"] / scale, (double)dataRanges["forward_flow"]["max"] / scale };
             scene.BackwardRange = new[] { (double)dataRanges["backward_flow"]["min"] / scale, (double)dataRanges["backward_flow"]["max"] / scale };
             for (var f = 0; f < scene.NumFrames; f++)
             {
                 scene.Forward.Add(FirstTwo(ReadPng16(PathOf("forward_flow", f))));
                 scene.Backward.Add(FirstTwo(ReadPng16(PathOf("backward_flow", f))));
-                // :414–418: subsample_avg(read_png(frame_path), target_size)[..., :3] — an 8-bit image.
+                // :428–431: subsample_avg(read_png(frame_path), target_size)[..., :3] — an 8-bit image.
                 var rgba = PngReader.Read(PathOf("rgba", f));
                 Assert.That(rgba.BitDepth, Is.EqualTo(8));
                 var video = new byte[rgba.Height, rgba.Width, 3];
@@ -83,7 +83,7 @@ namespace NerfDatasetCreator.Tests
             return scene;
         }
 
-        /// <summary>read_png (:596–612): bitdepth 16 → uint16, rows stacked, reshape (height, width, planes).</summary>
+        /// <summary>read_png (:591–611): bitdepth 16 → uint16, rows stacked, reshape (height, width, planes).</summary>
         static ushort[,,] ReadPng16(string path)
         {
             var png = PngReader.Read(path);

@@ -99,7 +99,7 @@ namespace NerfDatasetCreator.Tests
             {
                 var p = new double[3, 5];
                 for (var r = 0; r < 3; r++) for (var c = 0; c < 5; c++) p[r, c] = arr.Values[17 * (startFrame + i) + 5 * r + c];
-                // load_llff_data :327–330: np.concatenate([poses[:, 1:2], -poses[:, 0:1], poses[:, 2:]], 1).
+                // load_llff_data :328–330: np.concatenate([poses[:, 1:2], -poses[:, 0:1], poses[:, 2:]], 1).
                 var reordered = new double[3, 5];
                 for (var r = 0; r < 3; r++)
                 {
