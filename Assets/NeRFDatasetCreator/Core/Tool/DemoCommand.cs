@@ -193,6 +193,8 @@ namespace NerfDatasetCreator
                 case ExportTarget.Tum: return "python slam.py --config " + Quote(output + "/" + Replica.MonoGsConfigFileName) + "   (MonoGS, from its folder; convert prints SplaTAM's and Gaussian-SLAM's)";
                 case ExportTarget.Multiscale: return "python simple_trainer.py default --data_dir " + Quote(output + "/" + MultiscaleExport.ColmapFolder) + " --data_factor 4   (gsplat; mip-NeRF layout in " + Quote(output + "/" + MipNerfMultiscale.FolderName) + ")";
                 case ExportTarget.HdrNerf: return "python3 run_nerf.py --config configs/demo.txt --dataset_type syn_llff --datadir " + Quote(output) + " --white_bkgd   (HDR-NeRF)";
+                case ExportTarget.Kubric: return "load_scene_directory(\"" + output + "/" + Kubric.ScenesFolder + "/train\", (H, W), layers=(\"rgba\", \"forward_flow\", \"backward_flow\"))   (Kubric / MOVi, challenges/movi/movi_e.py)";
+                case ExportTarget.Nsff: return "python run_nerf.py --config configs/config_kid-running.txt --datadir " + Quote(output + "/train") + " --final_height <H> --end_frame <N> --target_idx <N-1>   (NSFF: convert prints the exact line)";
                 default: return "python train.py   (Dynamic 3D Gaussians: copy " + Quote(output) + " to its data/ folder first, as convert says)";
             }
         }
