@@ -177,6 +177,14 @@ namespace NerfDatasetCreator.Tool.Tests
                             yield return Promise("train/r_0_rgb.exr", File.Exists(Path.Combine(output, "train", R3dg.TrainImage("r_0"))));
                             yield return Promise("test/r_0_rgba.png", File.Exists(Path.Combine(output, "test", R3dg.TestImage("r_0"))));
                             break;
+                        case "kubric":
+                            yield return Promise("scenes/train/" + Kubric.DataRangesFileName, File.Exists(Path.Combine(output, Kubric.ScenesFolder, "train", Kubric.DataRangesFileName)));
+                            yield return Promise("scenes/train/forward_flow_00000.png", File.Exists(Path.Combine(output, Kubric.ScenesFolder, "train", Kubric.FrameFile(Kubric.ForwardFlowLayer, 0))));
+                            break;
+                        case "nsff":
+                            yield return Promise("train/flow_i1/00000_fwd.npz", File.Exists(Path.Combine(output, "train", Nsff.FlowFile(0, true))));
+                            yield return Promise("train/disp/00000.npy", File.Exists(Path.Combine(output, "train", Nsff.DispFolder, "00000.npy")));
+                            break;
                         case "multiscale":
                             yield return Promise("colmap/images_4", Directory.Exists(Path.Combine(output, MultiscaleExport.ColmapFolder, "images_4")));
                             yield return Promise("mipnerf/metadata.json", File.Exists(Path.Combine(output, MipNerfMultiscale.FolderName, MipNerfMultiscale.MetadataFileName)));

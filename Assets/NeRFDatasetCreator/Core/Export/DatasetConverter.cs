@@ -31,7 +31,8 @@ namespace NerfDatasetCreator
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             background = background?.Resolve(scene.RootDirectory);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
-            var time = target == ExportTarget.Dynamic3dgs || target == ExportTarget.Nerfies || target == ExportTarget.Dycheck || target == ExportTarget.Dynerf || target == ExportTarget.Replica || target == ExportTarget.Tum ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
+            var time = target == ExportTarget.Dynamic3dgs || target == ExportTarget.Nerfies || target == ExportTarget.Dycheck || target == ExportTarget.Dynerf || target == ExportTarget.Replica || target == ExportTarget.Tum
+                || target == ExportTarget.Kubric || target == ExportTarget.Nsff ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
             if (time != null) warnings.Add(time);
             if (objectNameOrId != null && background != null)
                 throw new InvalidParameterException(new[] { new ValidationProblem("--background", background.Name, "cannot be combined with --object, whose masks already name the pixels to train.", "Drop one of them.") });
@@ -122,6 +123,8 @@ namespace NerfDatasetCreator
                     case ExportTarget.Tensoir: result = TensoIRExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.GsIr: result = TensoIRExport.Write(scene, output, warnings, staged, gsIr: true); break;
                     case ExportTarget.R3dg: result = R3dgExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.Kubric: result = KubricExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.Nsff: result = NsffExport.Write(scene, output, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 EvalProtocolCarry.Copy(scene.RootDirectory, output, staged, warnings);
@@ -159,6 +162,8 @@ namespace NerfDatasetCreator
                 case ExportTarget.Tensoir: return Path.GetFullPath(Path.Combine(root, TensoIR.FolderName));
                 case ExportTarget.GsIr: return Path.GetFullPath(Path.Combine(root, GsIr.FolderName));
                 case ExportTarget.R3dg: return Path.GetFullPath(Path.Combine(root, R3dg.FolderName));
+                case ExportTarget.Kubric: return Path.GetFullPath(Path.Combine(root, Kubric.FolderName));
+                case ExportTarget.Nsff: return Path.GetFullPath(Path.Combine(root, Nsff.FolderName));
                 default: return Path.GetFullPath(root);
             }
         }

@@ -52,6 +52,12 @@ namespace NerfDatasetCreator
 
         /// <summary>Relightable 3D Gaussians' Synthetic4Relight layout (<see cref="R3dgExport"/>).</summary>
         R3dg,
+
+        /// <summary>Kubric / MOVi scene folders with 16-bit forward and backward flow from flow/ (<see cref="KubricExport"/>).</summary>
+        Kubric,
+
+        /// <summary>Neural Scene Flow Fields' scene folders with flow_i1/ npz, disp/ and motion_masks/ from flow/ (<see cref="NsffExport"/>).</summary>
+        Nsff,
     }
 
     public static class ExportTargets
@@ -60,7 +66,7 @@ namespace NerfDatasetCreator
         {
             "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping", "nerfies", "dycheck", "llff", "dynerf", "neus",
             "replica", "tum", "multiscale", "hdr-nerf",
-            "tensoir", "gs-ir", "r3dg",
+            "tensoir", "gs-ir", "r3dg", "kubric", "nsff",
         };
 
         /// <summary>
