@@ -31,7 +31,7 @@ namespace NerfDatasetCreator
             var scene = BlenderDatasetLoader.Load(datasetDir, warnings);
             background = background?.Resolve(scene.RootDirectory);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
-            var time = target == ExportTarget.Dynamic3dgs || target == ExportTarget.Nerfies || target == ExportTarget.Dycheck || target == ExportTarget.Dynerf || target == ExportTarget.Replica || target == ExportTarget.Tum ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
+            var time = target == ExportTarget.Dynamic3dgs || target == ExportTarget.Nerfies || target == ExportTarget.Dycheck || target == ExportTarget.Dynerf || target == ExportTarget.Replica || target == ExportTarget.Tum || target == ExportTarget.ShapeOfMotion ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
             if (time != null) warnings.Add(time);
             if (objectNameOrId != null && background != null)
                 throw new InvalidParameterException(new[] { new ValidationProblem("--background", background.Name, "cannot be combined with --object, whose masks already name the pixels to train.", "Drop one of them.") });
@@ -119,6 +119,7 @@ namespace NerfDatasetCreator
                     case ExportTarget.Tum: result = TumRgbdExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.Multiscale: result = MultiscaleExport.Write(scene, output, points, warnings, staged); break;
                     case ExportTarget.HdrNerf: result = HdrNerfExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.ShapeOfMotion: result = ShapeOfMotionExport.Write(scene, output, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 EvalProtocolCarry.Copy(scene.RootDirectory, output, staged, warnings);
@@ -153,6 +154,7 @@ namespace NerfDatasetCreator
                 case ExportTarget.Tum: return Path.GetFullPath(Path.Combine(root, TumRgbd.FolderName));
                 case ExportTarget.Multiscale: return Path.GetFullPath(Path.Combine(root, MultiscaleExport.FolderName));
                 case ExportTarget.HdrNerf: return Path.GetFullPath(Path.Combine(root, HdrNerf.FolderName));
+                case ExportTarget.ShapeOfMotion: return Path.GetFullPath(Path.Combine(root, ShapeOfMotion.FolderName));
                 default: return Path.GetFullPath(root);
             }
         }

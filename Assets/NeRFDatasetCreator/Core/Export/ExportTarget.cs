@@ -43,6 +43,9 @@ namespace NerfDatasetCreator
 
         /// <summary>HDR-NeRF's synthetic layout: five exposure brackets per view from the linear HDR colour (<see cref="HdrNerfExport"/>).</summary>
         HdrNerf,
+
+        /// <summary>Shape of Motion's iPhone layout with exact tracks from flow/ (<see cref="ShapeOfMotionExport"/>).</summary>
+        ShapeOfMotion,
     }
 
     public static class ExportTargets
@@ -51,6 +54,7 @@ namespace NerfDatasetCreator
         {
             "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping", "nerfies", "dycheck", "llff", "dynerf", "neus",
             "replica", "tum", "multiscale", "hdr-nerf",
+            "shape-of-motion",
         };
 
         /// <summary>

@@ -45,11 +45,29 @@ namespace NerfDatasetCreator
                 warnings.Add(new ValidationProblem("val", valFrames + " frames",
                     "are not exported: the layout has a train split and a val split (here the test split).",
                     "Nothing to do, or capture the views to evaluate as the test split."));
-            var sceneInfo = NerfiesScene.Of(scene, views, "dycheck", warnings);
+            outDir = Path.GetFullPath(outDir);
+            var written = WriteLayout(scene, views, "dycheck", outDir, staged, warnings, grid, out var datasetFile);
+            written.AddRange(DyCheckFlowFiles.Write(scene, views, outDir, staged, warnings));
+            var name = ExportPaths.RunName(outDir, DyCheck.FolderName);
+            return new ConversionResult(outDir, datasetFile, written, warnings, new[]
+            {
+                "copy " + outDir + " to dycheck/datasets/iphone/" + name + ", then: python tools/launch.py --gin_configs configs/iphone/tnerf/randbkgd_depth_dist.gin --gin_bindings 'Config.engine_cls=@Trainer' --gin_bindings 'SEQUENCE=\"" + name + "\"'   (DyCheck)",
+            });
+        }
+
+        /// <summary>
+        /// The iPhone layout's files for <paramref name="views"/> (train → splits/train.json, the others → splits/val.json):
+        /// camera/, rgb/1x/, depth/1x/, splits/, scene.json, dataset.json, metadata.json, extra.json — each destination
+        /// checked absent first. Shape of Motion's export writes the same files for its chosen frames.
+        /// </summary>
+        internal static List<string> WriteLayout(ExportScene scene, IReadOnlyList<NerfiesView> views, string target, string outDir, StagedOutput staged,
+            List<ValidationProblem> warnings, int grid, out string datasetFile)
+        {
+            var train = views.Where(v => v.Train).ToList();
+            var val = views.Where(v => !v.Train).ToList();
+            var sceneInfo = NerfiesScene.Of(scene, views, target, warnings);
             var background = ProtocolBackground.For(scene.RootDirectory);
             var k = scene.Intrinsics;
-
-            outDir = Path.GetFullPath(outDir);
             var files = new
             {
                 Scene = Path.Combine(outDir, Nerfies.SceneFileName),
@@ -87,11 +105,8 @@ namespace NerfDatasetCreator
             staged.WriteNewText(files.Metadata, ExportJson.Serialise(Nerfies.MetadataJson(views)));
             staged.WriteNewText(files.Extra, ExportJson.Serialise(Extra(sceneInfo, Fps(train, grid, warnings))));
             written.AddRange(new[] { trainSplit, valSplit, files.Scene, files.Dataset, files.Metadata, files.Extra });
-            var name = ExportPaths.RunName(outDir, DyCheck.FolderName);
-            return new ConversionResult(outDir, files.Dataset, written, warnings, new[]
-            {
-                "copy " + outDir + " to dycheck/datasets/iphone/" + name + ", then: python tools/launch.py --gin_configs configs/iphone/tnerf/randbkgd_depth_dist.gin --gin_bindings 'Config.engine_cls=@Trainer' --gin_bindings 'SEQUENCE=\"" + name + "\"'   (DyCheck)",
-            });
+            datasetFile = files.Dataset;
+            return written;
         }
 
         /// <summary>
