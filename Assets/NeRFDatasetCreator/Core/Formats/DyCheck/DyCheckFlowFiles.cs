@@ -64,7 +64,13 @@ namespace NerfDatasetCreator
             foreach (var v in record.Videos)
                 foreach (var f in v.Frames)
                     steps[f.Image] = f.Step;
+            // A val view shares its time id with train views (DyCheck indexes frames by time id and camera id), so it is at
+            // their step; a monocular capture's test views are in no video of flow/ but sit at a train view's time.
+            var trainStep = new Dictionary<int, int>();
+            foreach (var t in train)
+                if (steps.TryGetValue(t.Frame.ImagePath.Replace('\\', '/'), out var s)) trainStep[t.TimeId] = s;
             int StepOf(NerfiesView v) => steps.TryGetValue(v.Frame.ImagePath.Replace('\\', '/'), out var s) ? s
+                : trainStep.TryGetValue(v.TimeId, out s) ? s
                 : throw NerfiesViews.Refuse("flow", v.Frame.ImagePath, "is in no video of " + FlowLayout.RecordFile + ", so its co-visibility cannot be followed.", "Compute flow again for this dataset (nerf-dataset flow).");
             var k = scene.Intrinsics;
             FlowCamera Camera(NerfiesView v) => new FlowCamera(v.Frame.CameraToWorld, k.FlX, k.FlY, k.Cx, k.Cy, k.Width, k.Height);
