@@ -111,6 +111,8 @@ namespace NerfDatasetCreator
                     // (TUM's keep only frames more than 1/32 s apart, TumRgbd.ReaderFrameRate).
                     options.TimeSteps = perStep;
                     options.Monocular = true;
+                    // The meshes of every step, for the exact flow and tracks written after rendering (DemoFlow).
+                    options.GeometryPackEveryStep = true;
                     options.Configure = s => s.Time.EndSeconds = (perStep - 1) / MonocularFrameRate;
                     break;
                 case DemoPreset.Hdr:
@@ -121,6 +123,16 @@ namespace NerfDatasetCreator
                     break;
             }
             return options;
+        }
+
+        /// <summary>
+        /// The monocular demo's flow/: next-step flow both ways, and tracks from every k-th step (about 10 query frames,
+        /// the fewest Shape of Motion's reader takes: ShapeOfMotion.MinFrames), so that --to shape-of-motion writes 10² track files.
+        /// </summary>
+        public static FlowSettings DemoFlow(int steps)
+        {
+            var every = Math.Max(1, steps / ShapeOfMotion.MinFrames);
+            return new FlowSettings { On = true, TrackQueryFrames = Enumerable.Range(0, steps).Where(t => t % every == 0).Take(ShapeOfMotion.MinFrames).ToArray(), TrackStride = 8 };
         }
 
         /// <summary>
@@ -185,6 +197,11 @@ namespace NerfDatasetCreator
             var started = DateTime.UtcNow;
             progress?.Invoke("rendering " + run.Plan.Views.Count + " views of " + options.Width + " × " + options.Height + " px (" + DemoPresets.Name(preset) + ")");
             AnalyticDataset.Render(run, options);
+            if (preset == DemoPreset.Monocular)
+            {
+                progress?.Invoke("computing its exact flow and tracks (flow/)");
+                FlowWriter.Write(full, DemoFlow(options.TimeSteps));
+            }
             var rendered = (DateTime.UtcNow - started).TotalSeconds;
             progress?.Invoke("checking them (nerf-dataset check)");
             var report = DatasetCheck.Run(full, new DatasetCheckOptions());

@@ -27,6 +27,9 @@ namespace NerfDatasetCreator
         static readonly Tree SplitFolder = new Tree(f => ViewFile.IsMatch(f));
         static readonly Tree Png = new Tree(f => f.EndsWith(".png", StringComparison.OrdinalIgnoreCase));
         static readonly Tree GeometryPack = new Tree(GeometryPackSteps.IsPackFile);
+        // flow/ (FlowLayout): the record, and per video the pair files and the tracks.
+        static readonly Regex FlowFile = new Regex(@"^((flow|occluded|outside|scene_flow)_\d{4}_\d{4}\.(flo|png|exr)|tracks_\d{4}\.npz)$", RegexOptions.CultureInvariant);
+        static readonly Tree Flow = new Tree(f => f == "flow.json", new Tree(f => FlowFile.IsMatch(f)));
         static readonly Tree Splits = new Tree(SparseSplit.IsFileName);
         static readonly Tree CameraPaths = new Tree(f => DatasetSplits.Names.Any(s => s + ".json" == f));
         static readonly Tree Ngp = new Tree(f => f == NgpWriter.FileName || f == EvalProtocolFile.FileName).With(CameraPathFiles.FolderName, CameraPaths);
@@ -115,6 +118,7 @@ namespace NerfDatasetCreator
                 else if (name == DatasetConverter.ColmapFolderName) inside = Colmap.Foreign(entry.FullName);
                 else if (name == Dynamic3DGaussians.FolderName) inside = Dynamic3dgs.Foreign(entry.FullName);
                 else if (name == TargetMeshPly.Folder) inside = GeometryPack.Foreign(entry.FullName);
+                else if (name == FlowLayout.Folder) inside = Flow.Foreign(entry.FullName);
                 else if (name == CameraPathFiles.FolderName) inside = CameraPaths.Foreign(entry.FullName);
                 else if (name == SparseSplit.FolderName) inside = Splits.Foreign(entry.FullName);
                 else if (WorkingFolders.KindOf(name) == "convert") continue;

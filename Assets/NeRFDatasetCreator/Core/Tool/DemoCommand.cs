@@ -139,7 +139,7 @@ namespace NerfDatasetCreator
         public static IReadOnlyList<ExportTarget> Targets(DemoPreset preset)
         {
             if (preset == DemoPreset.Dynamic) return new[] { ExportTarget.Dynamic3dgs, ExportTarget.Nerfies, ExportTarget.Dycheck, ExportTarget.Dynerf };
-            if (preset == DemoPreset.Monocular) return new[] { ExportTarget.Replica, ExportTarget.Tum };
+            if (preset == DemoPreset.Monocular) return new[] { ExportTarget.Replica, ExportTarget.Tum, ExportTarget.ShapeOfMotion };
             if (preset == DemoPreset.Hdr) return new[] { ExportTarget.HdrNerf };
             var targets = new List<ExportTarget> { ExportTarget.Nerfstudio, ExportTarget.Colmap, ExportTarget.Ngp };
             if (preset == DemoPreset.Labels) targets.Add(ExportTarget.GaussianGrouping);
@@ -192,6 +192,7 @@ namespace NerfDatasetCreator
                 case ExportTarget.Replica:
                 case ExportTarget.Tum: return "python slam.py --config " + Quote(output + "/" + Replica.MonoGsConfigFileName) + "   (MonoGS, from its folder; convert prints SplaTAM's and Gaussian-SLAM's)";
                 case ExportTarget.Multiscale: return "python simple_trainer.py default --data_dir " + Quote(output + "/" + MultiscaleExport.ColmapFolder) + " --data_factor 4   (gsplat; mip-NeRF layout in " + Quote(output + "/" + MipNerfMultiscale.FolderName) + ")";
+                case ExportTarget.ShapeOfMotion: return "python run_training.py --work-dir " + Quote(output + "-run") + " data:iphone --data.data-dir " + Quote(output) + " --data.depth-type lidar --data.camera-type original   (Shape of Motion)";
                 case ExportTarget.HdrNerf: return "python3 run_nerf.py --config configs/demo.txt --dataset_type syn_llff --datadir " + Quote(output) + " --white_bkgd   (HDR-NeRF)";
                 default: return "python train.py   (Dynamic 3D Gaussians: copy " + Quote(output) + " to its data/ folder first, as convert says)";
             }
