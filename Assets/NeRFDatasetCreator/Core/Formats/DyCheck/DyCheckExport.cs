@@ -10,10 +10,8 @@ namespace NerfDatasetCreator
     /// <c>camera/</c>, <c>rgb/1x/</c> (RGB over the protocol background, alpha 255: every rendered pixel is valid),
     /// <c>depth/1x/*.npy</c> (exact), <c>splits/</c>, <c>dataset.json</c>, <c>metadata.json</c>, <c>scene.json</c>,
     /// <c>extra.json</c> (factor 1). Train → split "train", test → split "val" (iPhone's validation cameras).
-    /// No <c>covisible/</c>: DyCheck marks a test pixel co-visible when at least max(5, train/10) training images see it
-    /// (docs/DATASETS.md), found by its own correspondence tool (tools/process_covisible.py) across times; the capture
-    /// records each time's geometry but not which surface point is which across times, so there is no exact mask to
-    /// write, and both readers run without it (datasets/nerfies.py:575–581; 4DGaussians hyper_loader.py:102–105).
+    /// With flow/, also <c>covisible/</c> and <c>keypoint/</c>, exact (<see cref="DyCheckFlowFiles"/>); without, both readers
+    /// run without them (datasets/nerfies.py:575–581; 4DGaussians hyper_loader.py:102–105).
     /// </summary>
     public static class DyCheckExport
     {
