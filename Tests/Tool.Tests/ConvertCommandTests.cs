@@ -218,7 +218,7 @@ namespace NerfDatasetCreator.Tool.Tests
 
         [TestCase(new[] { "convert", "ds", "--to", "blender" }, "--to = blender: is the format the dataset is already in (nerf_synthetic / Blender)")]
         [TestCase(new[] { "convert", "ds", "--to", "gaussian-splatting" }, "--to = gaussian-splatting: is not an export format.")]
-        [TestCase(new[] { "convert", "ds", "--to", "instantngp" }, "--to = instantngp: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, nerfies, dycheck, llff, dynerf, neus, replica, tum, multiscale, hdr-nerf, tensoir, gs-ir, r3dg, kubric, nsff (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp). Did you mean \"instant-ngp\"?")]
+        [TestCase(new[] { "convert", "ds", "--to", "instantngp" }, "--to = instantngp: is not an export format. Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, nerfies, dycheck, llff, dynerf, neus, replica, tum, multiscale, hdr-nerf, tensoir, gs-ir, r3dg, kubric, nsff, shape-of-motion (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp). Did you mean \"instant-ngp\"?")]
         [TestCase(new[] { "convert", "ds" }, "convert needs --to nerfstudio|colmap|ngp")]
         [TestCase(new[] { "convert", "--to", "ngp" }, "convert needs exactly one dataset folder")]
         public void UsageErrorsExitTwo(string[] args, string error)

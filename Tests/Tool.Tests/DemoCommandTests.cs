@@ -27,7 +27,7 @@ namespace NerfDatasetCreator.Tool.Tests
         /// <summary>The smallest sizes that show each preset (the lens needs <see cref="DemoDataset.MinLensSize"/>).</summary>
         static string[] Small(DemoPreset preset) => new[]
         {
-            "--preset", DemoPresets.Name(preset), "--views", preset == DemoPreset.Dynamic ? "10" : "8",
+            "--preset", DemoPresets.Name(preset), "--views", preset == DemoPreset.Dynamic || preset == DemoPreset.Flow ? "10" : "8", // flow: the 10 frames shape-of-motion needs
             "--size", preset == DemoPreset.Lens ? DemoDataset.MinLensSize.ToString(System.Globalization.CultureInfo.InvariantCulture) : "64",
         };
 
@@ -152,6 +152,19 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(run.ExitCode, Is.EqualTo(1), run.ToString());
             Assert.That(run.Err, Does.Contain("is an export made with nerf-dataset convert"));
             Assert.That(File.Exists(Path.Combine(folder, "train", "r_4.png")), Is.True, "untouched");
+        }
+
+        [Test]
+        public void TheFlowDemoWritesExactFlowAndTracksAndItsReplaceKnowsThem()
+        {
+            var folder = Demo("mono-flow", "--preset", "flow", "--views", "12", "--size", "32");
+            var record = FlowRecord.Read(folder);
+            Assert.That(record.Tracks.Select(t => t.QueryFrame), Is.EqualTo(Enumerable.Range(0, 10)), "12 steps: tracks from the first 10 (every step)");
+            Assert.That(record.Pairs.Count, Is.EqualTo(22), "11 forward and 11 backward pairs");
+            // flow/ is the plugin's (OwnDataset): a second demo replaces the first.
+            Demo("mono-flow", "--preset", "flow", "--views", "12", "--size", "32");
+            Assert.That(File.Exists(Path.Combine(folder, FlowLayout.RecordFile)), Is.True);
+            Assert.That(ToolRun.Of("convert", folder, "--to", "shape-of-motion", "--out", _scratch.PathOf("mono-flow-som")).ExitCode, Is.EqualTo(0));
         }
 
         [Test]

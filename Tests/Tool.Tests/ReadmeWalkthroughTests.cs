@@ -189,6 +189,12 @@ namespace NerfDatasetCreator.Tool.Tests
                             yield return Promise("colmap/images_4", Directory.Exists(Path.Combine(output, MultiscaleExport.ColmapFolder, "images_4")));
                             yield return Promise("mipnerf/metadata.json", File.Exists(Path.Combine(output, MipNerfMultiscale.FolderName, MipNerfMultiscale.MetadataFileName)));
                             break;
+                        case "shape-of-motion":
+                            // Every ordered pair of the demo's 10 track query frames, and their foreground masks.
+                            yield return Promise("100 track files", Directory.Exists(Path.Combine(output, "flow3d_preprocessed", "2d_tracks", "1x")) &&
+                                Directory.GetFiles(Path.Combine(output, "flow3d_preprocessed", "2d_tracks", "1x"), "*.npy").Length == 100);
+                            yield return Promise("track_anything/1x/0_00000.png", File.Exists(Path.Combine(output, "flow3d_preprocessed", "track_anything", "1x", "0_00000.png")));
+                            break;
                         default:
                             yield return Promise("a known export target (teach this test what it writes)", false);
                             break;

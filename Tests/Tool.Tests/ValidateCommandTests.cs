@@ -74,7 +74,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(lines.Skip(1).Take(11).Select(l => l.Trim().Split(' ')[0]), Is.EqualTo(new[] { "plan", "validate", "merge", "convert", "clean", "check", "evaluate", "splits", "demo", "place-splat", "flow" }), "one line per command");
             Assert.That(lines[1], Does.StartWith("  plan --config <settings.json> --out <dir>"));
             Assert.That(lines[3], Does.StartWith("  merge --out <dir> [--files copy|move] <shard-dir>..."));
-            Assert.That(lines[4], Does.StartWith("  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping|nerfies|dycheck|llff|dynerf|neus|replica|tum|multiscale|hdr-nerf|tensoir|gs-ir|r3dg|kubric|nsff [--out <dir>]"));
+            Assert.That(lines[4], Does.StartWith("  convert <dir> --to nerfstudio|colmap|ngp|dynamic3dgs|gaussian-grouping|nerfies|dycheck|llff|dynerf|neus|replica|tum|multiscale|hdr-nerf|tensoir|gs-ir|r3dg|kubric|nsff|shape-of-motion [--out <dir>]"));
             Assert.That(lines[5], Does.StartWith("  clean <dir> [--dry-run]"));
             Assert.That(lines[6], Does.StartWith("  check <dir> [--split S] [--json FILE] [--max-views N] [--model <dir>]"));
             Assert.That(lines[7], Does.StartWith("  evaluate <dir> --renders <dir> [--inverse <dir>] [--split test|sparse_<n>]"));

@@ -121,15 +121,15 @@ namespace NerfDatasetCreator
                     options.Configure = s => s.Time.EndSeconds = (perStep - 1) / MonocularFrameRate;
                     break;
                 case DemoPreset.Flow:
-                    // The monocular preset's camera path, with the per-step meshes flow is computed from and tracks of frame 0.
+                    // The monocular preset's camera path, with the per-step meshes flow is computed from (by the capture) and
+                    // tracks from about 10 query frames (DemoFlow), so --to shape-of-motion has what its reader needs.
                     options.TimeSteps = perStep;
                     options.Monocular = true;
                     options.GeometryPackEveryStep = true;
                     options.Configure = s =>
                     {
                         s.Time.EndSeconds = (perStep - 1) / MonocularFrameRate;
-                        s.Flow.On = true;
-                        s.Flow.TrackQueryFrames = new[] { 0 };
+                        s.Flow = DemoFlow(perStep);
                     };
                     break;
                 case DemoPreset.Hdr:
@@ -166,6 +166,16 @@ namespace NerfDatasetCreator
                 new LightingCondition { Name = "olat-00", Kind = LightingKind.Point, Position = new double[] { 2, -2, 3 }, Intensity = 25 },
             },
         };
+
+        /// <summary>
+        /// The flow demo's flow/: next-step flow both ways, and tracks from every k-th step (about 10 query frames,
+        /// the fewest Shape of Motion's reader takes: ShapeOfMotion.MinFrames), so that --to shape-of-motion writes 10² track files.
+        /// </summary>
+        public static FlowSettings DemoFlow(int steps)
+        {
+            var every = Math.Max(1, steps / ShapeOfMotion.MinFrames);
+            return new FlowSettings { On = true, TrackQueryFrames = Enumerable.Range(0, steps).Where(t => t % every == 0).Take(ShapeOfMotion.MinFrames).ToArray(), TrackStride = 8 };
+        }
 
         /// <summary>
         /// Why demo must not write into <paramref name="folder"/>, or null: it writes only into a new or empty folder, or

@@ -32,7 +32,7 @@ namespace NerfDatasetCreator
             background = background?.Resolve(scene.RootDirectory);
             warnings.AddRange(LoaderRangeCheck.Check(scene.Frames.Select(f => f.Centre), 0));
             var time = target == ExportTarget.Dynamic3dgs || target == ExportTarget.Nerfies || target == ExportTarget.Dycheck || target == ExportTarget.Dynerf || target == ExportTarget.Replica || target == ExportTarget.Tum
-                || target == ExportTarget.Kubric || target == ExportTarget.Nsff ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
+                || target == ExportTarget.Kubric || target == ExportTarget.Nsff || target == ExportTarget.ShapeOfMotion ? null : TimeDatasetChecks.ConversionWarning(scene.Frames.Where(f => f.Split == "train").Select(f => f.Timing));
             if (time != null) warnings.Add(time);
             if (objectNameOrId != null && background != null)
                 throw new InvalidParameterException(new[] { new ValidationProblem("--background", background.Name, "cannot be combined with --object, whose masks already name the pixels to train.", "Drop one of them.") });
@@ -125,6 +125,7 @@ namespace NerfDatasetCreator
                     case ExportTarget.R3dg: result = R3dgExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.Kubric: result = KubricExport.Write(scene, output, warnings, staged); break;
                     case ExportTarget.Nsff: result = NsffExport.Write(scene, output, warnings, staged); break;
+                    case ExportTarget.ShapeOfMotion: result = ShapeOfMotionExport.Write(scene, output, warnings, staged); break;
                     default: throw new ArgumentOutOfRangeException(nameof(target), target, "Unknown export target.");
                 }
                 EvalProtocolCarry.Copy(scene.RootDirectory, output, staged, warnings);
@@ -164,6 +165,7 @@ namespace NerfDatasetCreator
                 case ExportTarget.R3dg: return Path.GetFullPath(Path.Combine(root, R3dg.FolderName));
                 case ExportTarget.Kubric: return Path.GetFullPath(Path.Combine(root, Kubric.FolderName));
                 case ExportTarget.Nsff: return Path.GetFullPath(Path.Combine(root, Nsff.FolderName));
+                case ExportTarget.ShapeOfMotion: return Path.GetFullPath(Path.Combine(root, ShapeOfMotion.FolderName));
                 default: return Path.GetFullPath(root);
             }
         }

@@ -58,6 +58,9 @@ namespace NerfDatasetCreator
 
         /// <summary>Neural Scene Flow Fields' scene folders with flow_i1/ npz, disp/ and motion_masks/ from flow/ (<see cref="NsffExport"/>).</summary>
         Nsff,
+
+        /// <summary>Shape of Motion's iPhone layout with exact tracks from flow/ (<see cref="ShapeOfMotionExport"/>).</summary>
+        ShapeOfMotion,
     }
 
     public static class ExportTargets
@@ -66,7 +69,7 @@ namespace NerfDatasetCreator
         {
             "nerfstudio", "colmap", "ngp", "dynamic3dgs", "gaussian-grouping", "nerfies", "dycheck", "llff", "dynerf", "neus",
             "replica", "tum", "multiscale", "hdr-nerf",
-            "tensoir", "gs-ir", "r3dg", "kubric", "nsff",
+            "tensoir", "gs-ir", "r3dg", "kubric", "nsff", "shape-of-motion",
         };
 
         /// <summary>

@@ -143,7 +143,7 @@ namespace NerfDatasetCreator
         {
             if (preset == DemoPreset.Dynamic) return new[] { ExportTarget.Dynamic3dgs, ExportTarget.Nerfies, ExportTarget.Dycheck, ExportTarget.Dynerf };
             if (preset == DemoPreset.Monocular) return new[] { ExportTarget.Replica, ExportTarget.Tum };
-            if (preset == DemoPreset.Flow) return new[] { ExportTarget.Replica, ExportTarget.Tum, ExportTarget.Kubric, ExportTarget.Nsff };
+            if (preset == DemoPreset.Flow) return new[] { ExportTarget.Replica, ExportTarget.Tum, ExportTarget.Kubric, ExportTarget.Nsff, ExportTarget.ShapeOfMotion };
             if (preset == DemoPreset.Hdr) return new[] { ExportTarget.HdrNerf };
             // The inverse-rendering layouts read the material passes and relit views; R3DG also the linear HDR colour the preset writes.
             if (preset == DemoPreset.Relight) return new[] { ExportTarget.Tensoir, ExportTarget.GsIr, ExportTarget.R3dg };
@@ -201,6 +201,7 @@ namespace NerfDatasetCreator
                 case ExportTarget.Tensoir: return "export PYTHONPATH=. && python train_tensoIR_rotated_multi_lights.py --config configs/multi_light_rotated/lego.txt --datadir " + Quote(output) + "   (TensoIR; NeRFactor reads it too)";
                 case ExportTarget.GsIr: return "python train.py -m outputs/scene/ -s " + Quote(output) + " --iterations 30000 --eval   (GS-IR stage 1)";
                 case ExportTarget.R3dg: return "python train.py --eval -s " + Quote(output) + " -m output/scene/3dgs   (R3DG stage 1)";
+                case ExportTarget.ShapeOfMotion: return "python run_training.py --work-dir " + Quote(output + "-run") + " data:iphone --data.data-dir " + Quote(output) + " --data.depth-type lidar --data.camera-type original   (Shape of Motion)";
                 case ExportTarget.HdrNerf: return "python3 run_nerf.py --config configs/demo.txt --dataset_type syn_llff --datadir " + Quote(output) + " --white_bkgd   (HDR-NeRF)";
                 case ExportTarget.Kubric: return "load_scene_directory(\"" + output + "/" + Kubric.ScenesFolder + "/train\", (H, W), layers=(\"rgba\", \"forward_flow\", \"backward_flow\"))   (Kubric / MOVi, challenges/movi/movi_e.py)";
                 case ExportTarget.Nsff: return "python run_nerf.py --config configs/config_kid-running.txt --datadir " + Quote(output + "/train") + " --final_height <H> --end_frame <N> --target_idx <N-1>   (NSFF: convert prints the exact line)";

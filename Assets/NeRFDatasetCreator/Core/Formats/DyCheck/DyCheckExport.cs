@@ -10,10 +10,8 @@ namespace NerfDatasetCreator
     /// <c>camera/</c>, <c>rgb/1x/</c> (RGB over the protocol background, alpha 255: every rendered pixel is valid),
     /// <c>depth/1x/*.npy</c> (exact), <c>splits/</c>, <c>dataset.json</c>, <c>metadata.json</c>, <c>scene.json</c>,
     /// <c>extra.json</c> (factor 1). Train → split "train", test → split "val" (iPhone's validation cameras).
-    /// No <c>covisible/</c>: DyCheck marks a test pixel co-visible when at least max(5, train/10) training images see it
-    /// (docs/DATASETS.md), found by its own correspondence tool (tools/process_covisible.py) across times; the capture
-    /// records each time's geometry but not which surface point is which across times, so there is no exact mask to
-    /// write, and both readers run without it (datasets/nerfies.py:575–581; 4DGaussians hyper_loader.py:102–105).
+    /// With flow/, also <c>covisible/</c> and <c>keypoint/</c>, exact (<see cref="DyCheckFlowFiles"/>); without, both readers
+    /// run without them (datasets/nerfies.py:575–581; 4DGaussians hyper_loader.py:102–105).
     /// </summary>
     public static class DyCheckExport
     {
@@ -45,11 +43,29 @@ namespace NerfDatasetCreator
                 warnings.Add(new ValidationProblem("val", valFrames + " frames",
                     "are not exported: the layout has a train split and a val split (here the test split).",
                     "Nothing to do, or capture the views to evaluate as the test split."));
-            var sceneInfo = NerfiesScene.Of(scene, views, "dycheck", warnings);
+            outDir = Path.GetFullPath(outDir);
+            var written = WriteLayout(scene, views, "dycheck", outDir, staged, warnings, grid, out var datasetFile);
+            written.AddRange(DyCheckFlowFiles.Write(scene, views, outDir, staged, warnings));
+            var name = ExportPaths.RunName(outDir, DyCheck.FolderName);
+            return new ConversionResult(outDir, datasetFile, written, warnings, new[]
+            {
+                "copy " + outDir + " to dycheck/datasets/iphone/" + name + ", then: python tools/launch.py --gin_configs configs/iphone/tnerf/randbkgd_depth_dist.gin --gin_bindings 'Config.engine_cls=@Trainer' --gin_bindings 'SEQUENCE=\"" + name + "\"'   (DyCheck)",
+            });
+        }
+
+        /// <summary>
+        /// The iPhone layout's files for <paramref name="views"/> (train → splits/train.json, the others → splits/val.json):
+        /// camera/, rgb/1x/, depth/1x/, splits/, scene.json, dataset.json, metadata.json, extra.json — each destination
+        /// checked absent first. Shape of Motion's export writes the same files for its chosen frames.
+        /// </summary>
+        internal static List<string> WriteLayout(ExportScene scene, IReadOnlyList<NerfiesView> views, string target, string outDir, StagedOutput staged,
+            List<ValidationProblem> warnings, int grid, out string datasetFile)
+        {
+            var train = views.Where(v => v.Train).ToList();
+            var val = views.Where(v => !v.Train).ToList();
+            var sceneInfo = NerfiesScene.Of(scene, views, target, warnings);
             var background = ProtocolBackground.For(scene.RootDirectory);
             var k = scene.Intrinsics;
-
-            outDir = Path.GetFullPath(outDir);
             var files = new
             {
                 Scene = Path.Combine(outDir, Nerfies.SceneFileName),
@@ -87,11 +103,8 @@ namespace NerfDatasetCreator
             staged.WriteNewText(files.Metadata, ExportJson.Serialise(Nerfies.MetadataJson(views)));
             staged.WriteNewText(files.Extra, ExportJson.Serialise(Extra(sceneInfo, Fps(train, grid, warnings))));
             written.AddRange(new[] { trainSplit, valSplit, files.Scene, files.Dataset, files.Metadata, files.Extra });
-            var name = ExportPaths.RunName(outDir, DyCheck.FolderName);
-            return new ConversionResult(outDir, files.Dataset, written, warnings, new[]
-            {
-                "copy " + outDir + " to dycheck/datasets/iphone/" + name + ", then: python tools/launch.py --gin_configs configs/iphone/tnerf/randbkgd_depth_dist.gin --gin_bindings 'Config.engine_cls=@Trainer' --gin_bindings 'SEQUENCE=\"" + name + "\"'   (DyCheck)",
-            });
+            datasetFile = files.Dataset;
+            return written;
         }
 
         /// <summary>

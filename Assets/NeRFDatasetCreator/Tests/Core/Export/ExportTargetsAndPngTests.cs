@@ -25,7 +25,7 @@ namespace NerfDatasetCreator.Tests
         {
             Assert.That(ExportTargets.Parse("obj", out var problem), Is.Null);
             Assert.That(problem.Field, Is.EqualTo("--to"));
-            Assert.That(problem.Fix, Is.EqualTo("Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, nerfies, dycheck, llff, dynerf, neus, replica, tum, multiscale, hdr-nerf, tensoir, gs-ir, r3dg, kubric, nsff (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp)."));
+            Assert.That(problem.Fix, Is.EqualTo("Use one of: nerfstudio, colmap, ngp, dynamic3dgs, gaussian-grouping, nerfies, dycheck, llff, dynerf, neus, replica, tum, multiscale, hdr-nerf, tensoir, gs-ir, r3dg, kubric, nsff, shape-of-motion (or the trainers' names 3dgs = gsplat = colmap, instant-ngp = ngp)."));
         }
 
         [TestCase("3dsg", "3dgs")]
