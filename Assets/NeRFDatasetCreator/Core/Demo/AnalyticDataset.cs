@@ -384,7 +384,7 @@ namespace NerfDatasetCreator
             int w = width * k, h = height * k;
             var frame = new RawFrame(w, h, k) { ColorOverBlack = new ushort[w * h * 4], ColorOverWhite = new ushort[w * h * 4] };
             var light = new Vector3d(0.3, -0.5, 0.8).Normalized();
-            var scratch = new double[2 * (CompositeDepth + 1) + 1][];
+            var scratch = new double[2 * (CompositeDepth + 1) + 2][]; // + the diffuse colour and the shaded colour (Composite)
             for (var n = 0; n < scratch.Length; n++) scratch[n] = new double[3];
             double[] black = scratch[0], white = scratch[1];
             for (var ys = 0; ys < h; ys++)
@@ -420,7 +420,7 @@ namespace NerfDatasetCreator
         {
             first = double.PositiveInfinity;
             firstNormal = Vector3d.Zero;
-            if (depthLeft == 0 || !scene.Trace(o, d, after, out var t, out var normal, out var colour, out var alpha)) return;
+            if (depthLeft == 0 || !scene.Trace(o, d, after, out var t, out var normal, out var colour, out var alpha, out var objectId)) return;
             first = t;
             firstNormal = normal;
             var shade = 0.35 + 0.65 * Math.Max(0, Vector3d.Dot(normal, light));
@@ -433,8 +433,16 @@ namespace NerfDatasetCreator
             }
             if (alpha < 1) Composite(scene, o, d, t + 1e-9, light, behindBlack, behindWhite, out _, out _, depthLeft - 1, scratch, shading);
             // A relighting condition's shading (AnalyticLighting) replaces the demo's fixed light; the demo's own stays as it was.
+            // It lights the diffuse colour, base × (1 − metallic) of the object's material (AnalyticMaterials), the colour the
+            // material passes and the inverse-rendering exports state (TensoIR's albedo is that diffuse colour).
             var shaded = shading == null ? null : scratch[scratch.Length - 1];
-            shading?.Invoke(o + d * t, normal, colour, shaded);
+            if (shading != null)
+            {
+                var diffuse = scratch[scratch.Length - 2];
+                var keep = 1 - AnalyticMaterials.Metallic(objectId);
+                for (var c = 0; c < 3; c++) diffuse[c] = colour[c] * keep;
+                shading(o + d * t, normal, diffuse, shaded);
+            }
             for (var c = 0; c < 3; c++)
             {
                 var surface = shaded != null ? shaded[c] : colour[c] * shade;

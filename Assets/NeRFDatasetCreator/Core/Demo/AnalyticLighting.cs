@@ -4,8 +4,9 @@ using System.Collections.Generic;
 namespace NerfDatasetCreator
 {
     /// <summary>
-    /// The analytic scene under a relighting condition (<see cref="LightingCondition"/>): Lambert shading of the base colour
-    /// (<see cref="AnalyticScene.ColourOf"/>, read as linear; metallic 0), outgoing = albedo / π · E. An environment's
+    /// The analytic scene under a relighting condition (<see cref="LightingCondition"/>): Lambert shading of the diffuse colour
+    /// (the base colour <see cref="AnalyticScene.ColourOf"/>, read as linear, × (1 − <see cref="AnalyticMaterials.Metallic"/>):
+    /// no specular lobe), outgoing = albedo / π · E. An environment's
     /// irradiance E(n) = ∫ L(ω) max(0, n·ω) dω is integrated numerically over the map's pixels (solid angle
     /// (2π/W)(π/H) sin θ each) into a table of normals, without shadows — as Unity's rasterised relight (SH ambient and a
     /// reflection probe) has none; a point or spot light gives E = I · colour · max(0, n·l) / r², zero where a traced

@@ -92,6 +92,22 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void AConditionLightsTheDiffuseColourBaseTimesOneMinusMetallic()
+        {
+            // One white sphere (the ball, instance 1: metallic 0.6) filling the view; a shading that returns the albedo it is given.
+            var scene = AnalyticScene.OneSphere(Vector3d.Zero, 10);
+            AnalyticDataset.RayOf rays = (double i, double j, out Vector3d origin, out Vector3d direction) =>
+            {
+                origin = new Vector3d(0, 0, 20);
+                direction = new Vector3d((i - 2) * 0.01, (j - 2) * 0.01, -1);
+            };
+            var frame = AnalyticDataset.RenderColour(scene, rays, 4, 4, 1, (point, normal, albedo, result) => { for (var c = 0; c < 3; c++) result[c] = albedo[c]; });
+            var centre = 4 * (2 * 4 + 2);
+            for (var c = 0; c < 3; c++)
+                Assert.That(HalfFloat.ToFloat(frame.ColorOverBlack[centre + c]), Is.EqualTo(1 - AnalyticMaterials.Metallic(1)).Within(1e-3), "channel " + c);
+        }
+
+        [Test]
         public void TheLightsFileDescribesEachConditionAndItsConversions()
         {
             var lights = JObject.Parse(File.ReadAllText(Path.Combine(_dataset, "lights", "lights.json")));
