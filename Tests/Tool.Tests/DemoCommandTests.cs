@@ -65,7 +65,7 @@ namespace NerfDatasetCreator.Tool.Tests
             Assert.That(File.Exists(Path.Combine(train, "r_0_sharp_0000.png")), Is.EqualTo(preset == DemoPreset.Blur));
             Assert.That(File.Exists(Path.Combine(train, "r_0_clean.png")), Is.EqualTo(preset == DemoPreset.Exposure));
             Assert.That(File.Exists(Path.Combine(train, "r_0_hdr.exr")), Is.EqualTo(preset == DemoPreset.Hdr || preset == DemoPreset.Relight));
-            Assert.That(File.Exists(Path.Combine(train, "r_0_albedo.exr")) && File.Exists(Path.Combine(train, "r_0_emission.exr")), Is.EqualTo(preset == DemoPreset.Materials));
+            Assert.That(File.Exists(Path.Combine(train, "r_0_albedo.exr")) && File.Exists(Path.Combine(train, "r_0_emission.exr")), Is.EqualTo(preset == DemoPreset.Materials || preset == DemoPreset.Relight), "the relight preset writes the material passes too");
             Assert.That(File.Exists(Path.Combine(train, "r_0_light_sky_120.png")), Is.EqualTo(preset == DemoPreset.Relight));
             Assert.That(File.Exists(Path.Combine(folder, RelightingKeys.LightsFile)), Is.EqualTo(preset == DemoPreset.Relight));
             Assert.That(File.Exists(Path.Combine(folder, "flow", "flow.json")), Is.EqualTo(preset == DemoPreset.Flow), "the flow preset computes flow/");

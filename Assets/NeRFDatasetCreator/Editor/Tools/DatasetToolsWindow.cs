@@ -31,7 +31,7 @@ namespace NerfDatasetCreator.Editor
         internal PlaceSplatSection PlaceSplat => placeSplat;
 
         /// <summary>The exports a button offers, in the order of Documentation~/exports.md.</summary>
-        internal static readonly (string Label, ExportTarget Target, bool Depths, string Tooltip)[] Exports =
+        public static readonly (string Label, ExportTarget Target, bool Depths, string Tooltip)[] Exports =
         {
             ("nerfstudio", ExportTarget.Nerfstudio, false, "transforms.json for ns-train nerfstudio-data (with depth and masks when every frame has them)."),
             ("COLMAP / 3DGS", ExportTarget.Colmap, false, "A COLMAP text model with the images: 3D Gaussian Splatting's train.py -s."),
@@ -47,7 +47,7 @@ namespace NerfDatasetCreator.Editor
         /// Every other <c>convert --to</c> target, in the enum's order, offered in one menu beside the buttons: a target
         /// added to <see cref="ExportTarget"/> is in the window without a line here.
         /// </summary>
-        internal static readonly ExportTarget[] MoreExports =
+        public static readonly ExportTarget[] MoreExports =
             ((ExportTarget[])Enum.GetValues(typeof(ExportTarget))).Where(t => Exports.All(e => e.Target != t)).ToArray();
 
         /// <summary>The menu's choice for this Editor session (UI state only: a domain reload resets it to the first).</summary>

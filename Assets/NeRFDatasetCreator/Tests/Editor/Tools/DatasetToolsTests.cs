@@ -37,7 +37,7 @@ namespace NerfDatasetCreator.Editor.Tests
             foreach (var e in DatasetToolsWindow.Exports) if (!offered.Contains(e.Target)) offered.Add(e.Target);
             offered.AddRange(DatasetToolsWindow.MoreExports);
             Assert.That(offered, Is.EquivalentTo((ExportTarget[])System.Enum.GetValues(typeof(ExportTarget))));
-            Assert.That(DatasetToolsWindow.MoreExports, Does.Not.Contain(ExportTarget.Colmap), "a target with a button is not in the menu again");
+            Assert.That(DatasetToolsWindow.MoreExports, Has.No.Member(ExportTarget.Colmap), "a target with a button is not in the menu again");
         }
 
         /// <summary>A planned dataset (JSON files, no images), written by the tool's own plan command.</summary>
