@@ -7,6 +7,9 @@ namespace NerfDatasetCreator
     {
         public string DatasetFolder;
         public string RendersFolder;
+
+        /// <summary><c>--flow</c>: a model's rendered flow and tracks (<see cref="FlowPredictions"/>), scored on their own by <see cref="FlowEvaluation"/>; null: images.</summary>
+        public string FlowFolder;
         /// <summary>Null: the protocol's evaluation split (eval_protocol.json), else test.</summary>
         public string Split;
 

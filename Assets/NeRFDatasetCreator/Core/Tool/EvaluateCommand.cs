@@ -11,9 +11,10 @@ namespace NerfDatasetCreator
     public static class EvaluateCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("evaluate",
-            "evaluate <dir> --renders <dir> [--split test|sparse_<n>] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset [--override-protocol]] [--trainer-metrics <json>] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
+            "evaluate <dir> --renders <dir> | --flow <dir> [--split test|sparse_<n>] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset [--override-protocol]] [--trainer-metrics <json>] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
             "score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html", Parse, Run, "override-protocol").WithOptions(
             "--renders <dir>               the trainer's renders of the split (3DGS model folder, ns-render --output-path, instant-ngp --screenshot_dir, or r_<i>.png)",
+            "--flow <dir>                  instead: a model's flow (<video>/flow_<a>_<b>.flo) and tracks (<video>/tracks_<q>.npz) against the dataset's flow/: EPE, PCK-T",
             "--split test|val|train        the split the renders show (default: eval_protocol.json's, else test)",
             "--split sparse_<n>            score only the test views splits/sparse_<n>.json lists (nerf-dataset splits)",
             "--out <dir>                   where metrics.json, report.html and the error maps go (default <renders>/evaluation-<split>)",
@@ -30,9 +31,10 @@ namespace NerfDatasetCreator
         /// <summary><c>evaluate &lt;dataset&gt; --renders &lt;dir&gt; [options]</c> → <see cref="EvaluationOptions"/>.</summary>
         static EvaluationOptions Parse(ToolArguments arguments)
         {
-            arguments.RefuseUnknownOptions("renders", "split", "out", "layout", "background", "override-protocol", "trainer-metrics", "render-depth", "geometry", "gt-mesh", "threshold", "step");
+            arguments.RefuseUnknownOptions("renders", "flow", "split", "out", "layout", "background", "override-protocol", "trainer-metrics", "render-depth", "geometry", "gt-mesh", "threshold", "step");
             var e = new EvaluationOptions();
             e.DatasetFolder = arguments.OnePositional("evaluate needs exactly one dataset folder, e.g. evaluate NeRFDatasets/lego --renders output/lego.");
+            if (arguments.Has("flow")) return ParseFlow(arguments, e);
             if (!arguments.TryGet("renders", out var renders) || string.IsNullOrWhiteSpace(renders))
                 arguments.Error("evaluate needs --renders <folder>: the trainer's renders of the split (3DGS model folder, ns-render dataset's --output-path, instant-ngp --screenshot_dir, or r_<i>.png files).");
             e.RendersFolder = renders;
@@ -78,12 +80,23 @@ namespace NerfDatasetCreator
             return e;
         }
 
+        /// <summary><c>evaluate &lt;dataset&gt; --flow &lt;folder&gt; [--out &lt;dir&gt;]</c>: motion is scored on its own, without the image options.</summary>
+        static EvaluationOptions ParseFlow(ToolArguments arguments, EvaluationOptions e)
+        {
+            e.FlowFolder = arguments.OptionalPath("flow", "--flow is empty; name the folder of the model's <video>/flow_<a>_<b>.flo and <video>/tracks_<q>.npz.");
+            e.OutFolder = arguments.OptionalPath("out", "--out is empty; leave it out to write into <flow folder>/evaluation-flow.");
+            foreach (var other in new[] { "renders", "split", "layout", "background", "override-protocol", "trainer-metrics", "render-depth", "geometry", "gt-mesh", "threshold", "step" })
+                if (arguments.Has(other)) arguments.Error("--" + other + " is for rendered images; --flow scores motion on its own: evaluate <dataset> --flow <folder> [--out <dir>].");
+            return e;
+        }
+
         /// <summary>The command line of the Dataset Tools' Evaluate button: <c>evaluate &lt;dataset&gt; --renders &lt;folder&gt;</c> with the tool's defaults (the protocol's split and background, layout detected).</summary>
         public static string[] Arguments(string datasetFolder, string rendersFolder) =>
             new[] { Command.Name, ToolArguments.Required(datasetFolder), "--renders", ToolArguments.Required(rendersFolder) };
 
         public static int Run(EvaluationOptions options, TextWriter stdout, TextWriter stderr)
         {
+            if (options.FlowFolder != null) return RunFlow(options, stdout, stderr);
             EvaluationResult result;
             try
             {
@@ -137,6 +150,36 @@ namespace NerfDatasetCreator
             if (result.Trainer?.Lpips == null) stdout.WriteLine("  LPIPS is not computed (it needs network weights): 3DGS python metrics.py -m <model>, nerfstudio ns-eval; evaluate shows their figures (--trainer-metrics).");
             stdout.WriteLine("wrote " + Path.Combine(result.OutFolder, MetricsJson.FileName) + ", " + Path.Combine(result.OutFolder, ReportHtml.FileName) + " and " + result.Views.Count + " error maps in " +
                              Path.Combine(result.OutFolder, EvaluationOutput.ErrorFolder));
+            return ToolExitCodes.Success;
+        }
+
+        static int RunFlow(EvaluationOptions options, TextWriter stdout, TextWriter stderr)
+        {
+            FlowEvaluationResult result;
+            try
+            {
+                result = FlowEvaluation.Run(options.DatasetFolder, options.FlowFolder, options.OutFolder);
+            }
+            catch (InvalidParameterException e)
+            {
+                foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
+                stderr.WriteLine("evaluate refused: nothing was written.");
+                return ToolExitCodes.Failure;
+            }
+            catch (InvalidDataException e)
+            {
+                stderr.WriteLine("error: " + e.Message);
+                stderr.WriteLine("evaluate stopped on a file it cannot read.");
+                return ToolExitCodes.Failure;
+            }
+            var c = System.Globalization.CultureInfo.InvariantCulture;
+            if (result.Pairs.Count > 0)
+                stdout.WriteLine("flow of " + result.Pairs.Count + " frame pairs: EPE " + result.EpeVisible.ToString("0.000", c) + " px on pixels visible in both frames, " + result.EpeAll.ToString("0.000", c) + " px on all pixels with a surface");
+            else stdout.WriteLine("flow: not scored (the folder has no .flo files)");
+            if (result.Tracks.Count > 0)
+                stdout.WriteLine("tracks of " + result.Tracks.Count + " query frames: PCK-T " + result.PckT.ToString("0.0000", c) + " (within " + result.Tracks[0].Threshold.ToString("0.##", c) + " px = 0.05 × the larger image side, DyCheck's)");
+            else stdout.WriteLine("tracks: not scored (the folder has no tracks_<q>.npz)");
+            stdout.WriteLine("wrote " + Path.Combine(result.OutFolder, FlowEvaluation.FileName));
             return ToolExitCodes.Success;
         }
 
