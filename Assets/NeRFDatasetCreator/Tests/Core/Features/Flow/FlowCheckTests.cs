@@ -134,6 +134,22 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void FlowRecordedInTheConfigButLostFails()
+        {
+            using (var temp = new TempFolder())
+            {
+                var folder = AnalyticDataset.Write(temp.Path, "lost-record", Options(true));
+                var config = Path.Combine(folder, DatasetLayout.ConfigFileName);
+                var json = Newtonsoft.Json.Linq.JObject.Parse(File.ReadAllText(config));
+                json["flow"] = new Newtonsoft.Json.Linq.JObject { ["record"] = FlowLayout.RecordFile, ["pairs"] = 8 };
+                File.WriteAllText(config, json.ToString());
+                var report = DatasetCheck.Run(folder, new DatasetCheckOptions());
+                Assert.That(Flow(report).Status, Is.EqualTo(DatasetCheckStatus.Failed), Lines(report));
+                Assert.That(report.Problems.Select(p => p.ToString()), Has.Some.StartWith("./flow/flow.json [flow]: dataset_config.json records flow (\"flow\"), but flow/flow.json is missing."), Lines(report));
+            }
+        }
+
+        [Test]
         public void AMissingOrWrongSizedFileIsNamed()
         {
             using (var temp = new TempFolder())
