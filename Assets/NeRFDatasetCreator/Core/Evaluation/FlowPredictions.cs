@@ -26,7 +26,9 @@ namespace NerfDatasetCreator
         {
             try
             {
-                using (var zip = ZipFile.OpenRead(path))
+                // ZipArchive over the file (as NumpyFiles writes), not ZipFile: one assembly fewer for Unity's profile.
+                using (var file = ReadableFile.OpenRead(path, ReadableFile.MaxGeometryBytes))
+                using (var zip = new ZipArchive(file, ZipArchiveMode.Read))
                 {
                     var entry = zip.GetEntry(key + ".npy") ?? throw new InvalidDataException(path + " has no array '" + key + "' (entries: " + string.Join(", ", zip.Entries.Select(e => e.FullName)) + ").");
                     if (entry.Length > ReadableFile.MaxGeometryBytes) throw new InvalidDataException(path + ": '" + key + "' holds " + entry.Length + " bytes, more than any tracks array.");
