@@ -181,7 +181,7 @@ namespace NerfDatasetCreator
         /// <summary>
         /// (c) Occlusion against depth: p's point at b (as in <see cref="CameraFlow"/>) has z-depth z_b there; b's depth d at
         /// its projection (bilinear, one smooth surface only) must be within max(δ_a + δ_b, 1 % of z_b) of z_b where p is
-        /// marked visible, and nearer than z_b by more than that where p is marked occluded.
+        /// marked visible, and nearer than z_b by more than δ_a + δ_b where p is marked occluded.
         /// </summary>
         public static Counts Occlusion(FlowPairFiles f, FlowCheckDepth depthA, FlowCheckDepth depthB, CheckCamera a, CheckCamera b, int stride, out int visibleBad, out int hiddenBad)
         {
@@ -196,11 +196,16 @@ namespace NerfDatasetCreator
                     if (!Target(a, b, u, v, depthA.At(u, v), f.SceneFlow[3 * p], f.SceneFlow[3 * p + 1], f.SceneFlow[3 * p + 2], out var ex, out var ey, out var zb)) continue;
                     var d = depthB.Smooth(u + 0.5 + ex, v + 0.5 + ey);
                     if (double.IsNaN(d)) continue;
-                    var tolerance = Math.Max(depthA.Uncertainty + depthB.Uncertainty, OcclusionRelative * zb);
+                    // Visible: b's depth is the point's, within the depths' uncertainties or 1 % (bilinear depth across a
+                    // pixel on a slope). Occluded: something is nearer by more than the uncertainties alone — a point just
+                    // behind a limb is hidden by a surface only a little nearer, and a visible point marked occluded has
+                    // b's depth equal to its own.
+                    var uncertainty = depthA.Uncertainty + depthB.Uncertainty;
+                    var tolerance = Math.Max(uncertainty, OcclusionRelative * zb);
                     var r = d - zb;
                     c.Judged++;
                     if (f.Occluded[p] == 0 && Math.Abs(r) > tolerance) { c.Bad++; visibleBad++; }
-                    else if (f.Occluded[p] == 255 && r > -tolerance) { c.Bad++; hiddenBad++; }
+                    else if (f.Occluded[p] == 255 && r > -uncertainty) { c.Bad++; hiddenBad++; }
                 }
             return c;
         }
