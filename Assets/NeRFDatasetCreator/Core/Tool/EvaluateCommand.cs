@@ -11,7 +11,7 @@ namespace NerfDatasetCreator
     public static class EvaluateCommand
     {
         public static readonly ToolCommand Command = ToolCommand.Of("evaluate",
-            "evaluate <dir> --renders <dir> | --flow <dir> [--split test|sparse_<n>] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset [--override-protocol]] [--trainer-metrics <json>] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
+            "evaluate <dir> --renders <dir> [--split test|sparse_<n>] [--out <dir>] [--layout 3dgs|nerfstudio|ngp|nerf-pytorch|plain] [--background white|black|dataset [--override-protocol]] [--trainer-metrics <json>] [--render-depth z|ray] [--geometry <recon.ply|.obj|folder> [--gt-mesh <mesh>] [--threshold <units>] [--step <k>]]",
             "score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html", Parse, Run, "override-protocol").WithOptions(
             "--renders <dir>               the trainer's renders of the split (3DGS model folder, ns-render --output-path, instant-ngp --screenshot_dir, or r_<i>.png)",
             "--flow <dir>                  instead: a model's flow (<video>/flow_<a>_<b>.flo) and tracks (<video>/tracks_<q>.npz) against the dataset's flow/: EPE, PCK-T",

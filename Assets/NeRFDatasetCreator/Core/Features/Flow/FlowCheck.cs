@@ -123,7 +123,8 @@ namespace NerfDatasetCreator
                 da = depths.Get(imageA, va);
                 db = depths.Get(imageB, vb);
             }
-            catch (Exception e) when (e is InvalidDataException || e is IOException || e is UnauthorizedAccessException)
+            // PngGray16Reader refuses a depth PNG of another layout with an InvalidParameterException naming it.
+            catch (Exception e) when (e is InvalidDataException || e is IOException || e is UnauthorizedAccessException || e is InvalidParameterException)
             {
                 found.Add((pair.FlowFile, "the depth of its frames cannot be read (" + e.Message + "), so the flow is not compared with it."));
                 return found;

@@ -152,6 +152,24 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void AnUnreadableDepthEndsNoCheckRun()
+        {
+            using (var temp = new TempFolder())
+            {
+                var folder = WithFlow(temp, "bad-depth", true, ExtraOutput.Png);
+                // Frame 1's depth PNG rewritten as 8-bit grey: the dataset check names it; flow compares no pair with it
+                // and the run ends with a report (never an exception).
+                var depth = Path.Combine(folder, "train", "r_1_depth_0000.png");
+                var png = PngReader.Read(depth);
+                File.WriteAllBytes(depth, PngWriter.Encode(new byte[png.Width * png.Height], png.Width, png.Height, PngPixelFormat.Gray8));
+                var report = DatasetCheck.Run(folder, new DatasetCheckOptions());
+                Assert.That(report.Failed, Is.True);
+                Assert.That(report.Problems.Select(p => p.ToString()), Has.Some.Contains("r_1_depth_0000.png"), Lines(report));
+                Assert.That(Flow(report).Status, Is.Not.EqualTo(DatasetCheckStatus.Skipped), Lines(report));
+            }
+        }
+
+        [Test]
         public void AMissingOrWrongSizedFileIsNamed()
         {
             using (var temp = new TempFolder())
