@@ -53,6 +53,34 @@ namespace NerfDatasetCreator.Tool.Tests
             }
         }
 
+        [Test]
+        public void FlowIsScoredOnItsOwnAndImageOptionsBesideItAreUsageMistakes()
+        {
+            using (var scratch = new Scratch())
+            {
+                var dataset = AnalyticDataset.Write(scratch.Root, "moving", new AnalyticDataset.Options
+                {
+                    Width = 32, Height = 24, Supersampling = 1, Train = 3, Val = 1, Test = 1, TimeSteps = 3, Monocular = true, PointCloud = 0,
+                    MeshesAt = AnalyticSceneMeshes.At, GeometryPackEveryStep = true,
+                });
+                FlowWriter.Write(dataset, new FlowSettings { On = true, TrackQueryFrames = new[] { 0 }, TrackStride = 4 });
+                // The model's flow is the dataset's own: EPE 0 (no tracks rendered: not scored).
+                var predictions = scratch.PathOf("model-flow");
+                Directory.CreateDirectory(Path.Combine(predictions, "train"));
+                foreach (var file in Directory.GetFiles(Path.Combine(dataset, "flow", "train"), "flow_*.flo"))
+                    File.Copy(file, Path.Combine(predictions, "train", Path.GetFileName(file)));
+                var run = ToolRun.Of("evaluate", dataset, "--flow", predictions);
+                Assert.That(run.ExitCode, Is.EqualTo(0), run.ToString());
+                Assert.That(run.Out, Does.Contain("flow of 4 frame pairs: EPE 0.000 px on pixels visible in both frames, 0.000 px on all pixels with a surface"));
+                Assert.That(run.Out, Does.Contain("tracks: not scored"));
+                Assert.That(File.Exists(Path.Combine(predictions, "evaluation-flow", "metrics.json")), Is.True);
+
+                var mixed = ToolRun.Of("evaluate", dataset, "--flow", predictions, "--renders", predictions);
+                Assert.That(mixed.ExitCode, Is.EqualTo(2), mixed.ToString());
+                Assert.That(mixed.Err, Does.StartWith("error: --renders is for rendered images; --flow scores motion on its own: evaluate <dataset> --flow <folder> [--out <dir>]."));
+            }
+        }
+
         /// <summary>
         /// A nerf_synthetic-style split (frames without depth_path, 8-bit r_&lt;i&gt;_depth_0000.png pictures beside the
         /// images) with renders that carry depth: evaluate scores the colour and skips depth with a note (keys only, as

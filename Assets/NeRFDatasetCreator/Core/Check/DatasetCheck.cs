@@ -129,6 +129,16 @@ namespace NerfDatasetCreator
                 }
                 foreach (var p in found) report.Add(p);
             }
+            // Issue 37's flow/, judged pair by pair against the views' depth and poses (only when the dataset has flow).
+            var flow = report.Cancelled ? null : FlowCheck.For(root, config);
+            if (flow != null)
+            {
+                var found = new List<DatasetProblem>();
+                var before = Stopwatch.GetTimestamp();
+                flow.Run(views, found, cancel);
+                Time(report, FlowCheck.CheckName, before);
+                foreach (var p in found) report.Add(p);
+            }
             progress?.Invoke(total, total);
             foreach (var p in geometryPack.PackProblems) report.Add(p);
             var recordProblems = new List<DatasetProblem>();
@@ -144,6 +154,7 @@ namespace NerfDatasetCreator
             foreach (var check in checks.Skip(3)) report.Add(check.Finish());
             report.Add(reprojection.Finish(multiSkip ?? (views.Any(v => v.InstanceFile != null) ? null : "no view has an instance map (a capture without labels)")));
             report.Add(records);
+            if (flow != null) report.Add(flow.Finish());
             report.ViewsChecked = decoded;
             report.DecodeSeconds = decodeTicks / (double)Stopwatch.Frequency;
             report.TotalSeconds = (Stopwatch.GetTimestamp() - started) / (double)Stopwatch.Frequency;

@@ -10,6 +10,8 @@ namespace NerfDatasetCreator
 
         /// <summary><c>--inverse</c>: a relightable model's albedo/, normal/, roughness/, relit/&lt;key&gt;/ outputs (<see cref="InverseRenderingEvaluator"/>); null: none.</summary>
         public string InverseFolder;
+        /// <summary><c>--flow</c>: a model's rendered flow and tracks (<see cref="FlowPredictions"/>), scored on their own by <see cref="FlowEvaluation"/>; null: images.</summary>
+        public string FlowFolder;
         /// <summary>Null: the protocol's evaluation split (eval_protocol.json), else test.</summary>
         public string Split;
 

@@ -15,6 +15,7 @@ namespace NerfDatasetCreator
             "score a trainer's renders (PSNR, SSIM, depth, normals, Chamfer/F-score): metrics.json, error maps, report.html", Parse, Run, "override-protocol").WithOptions(
             "--renders <dir>               the trainer's renders of the split (3DGS model folder, ns-render --output-path, instant-ngp --screenshot_dir, or r_<i>.png)",
             "--inverse <dir>               a relightable model's albedo/, normal/, roughness/, relit/<key>/ (r_<i>.png|.exr): TensoIR's albedo PSNR, normal MAE, relit PSNR/SSIM, R3DG's roughness MSE (--renders may then be left out)",
+            "--flow <dir>                  instead: a model's flow (<video>/flow_<a>_<b>.flo) and tracks (<video>/tracks_<q>.npz) against the dataset's flow/: EPE, PCK-T",
             "--split test|val|train        the split the renders show (default: eval_protocol.json's, else test)",
             "--split sparse_<n>            score only the test views splits/sparse_<n>.json lists (nerf-dataset splits)",
             "--out <dir>                   where metrics.json, report.html and the error maps go (default <renders>/evaluation-<split>)",
@@ -31,9 +32,10 @@ namespace NerfDatasetCreator
         /// <summary><c>evaluate &lt;dataset&gt; --renders &lt;dir&gt; [options]</c> → <see cref="EvaluationOptions"/>.</summary>
         static EvaluationOptions Parse(ToolArguments arguments)
         {
-            arguments.RefuseUnknownOptions("renders", "inverse", "split", "out", "layout", "background", "override-protocol", "trainer-metrics", "render-depth", "geometry", "gt-mesh", "threshold", "step");
+            arguments.RefuseUnknownOptions("renders", "inverse", "flow", "split", "out", "layout", "background", "override-protocol", "trainer-metrics", "render-depth", "geometry", "gt-mesh", "threshold", "step");
             var e = new EvaluationOptions();
             e.DatasetFolder = arguments.OnePositional("evaluate needs exactly one dataset folder, e.g. evaluate NeRFDatasets/lego --renders output/lego.");
+            if (arguments.Has("flow")) return ParseFlow(arguments, e);
             e.InverseFolder = arguments.OptionalPath("inverse", "--inverse is empty; name the folder with albedo/, normal/, roughness/ or relit/<key>/, or leave it out.");
             if ((!arguments.TryGet("renders", out var renders) || string.IsNullOrWhiteSpace(renders)) && e.InverseFolder == null)
                 arguments.Error("evaluate needs --renders <folder>: the trainer's renders of the split (3DGS model folder, ns-render dataset's --output-path, instant-ngp --screenshot_dir, or r_<i>.png files).");
@@ -80,12 +82,23 @@ namespace NerfDatasetCreator
             return e;
         }
 
+        /// <summary><c>evaluate &lt;dataset&gt; --flow &lt;folder&gt; [--out &lt;dir&gt;]</c>: motion is scored on its own, without the image options.</summary>
+        static EvaluationOptions ParseFlow(ToolArguments arguments, EvaluationOptions e)
+        {
+            e.FlowFolder = arguments.OptionalPath("flow", "--flow is empty; name the folder of the model's <video>/flow_<a>_<b>.flo and <video>/tracks_<q>.npz.");
+            e.OutFolder = arguments.OptionalPath("out", "--out is empty; leave it out to write into <flow folder>/evaluation-flow.");
+            foreach (var other in new[] { "renders", "inverse", "split", "layout", "background", "override-protocol", "trainer-metrics", "render-depth", "geometry", "gt-mesh", "threshold", "step" })
+                if (arguments.Has(other)) arguments.Error("--" + other + " is for rendered images; --flow scores motion on its own: evaluate <dataset> --flow <folder> [--out <dir>].");
+            return e;
+        }
+
         /// <summary>The command line of the Dataset Tools' Evaluate button: <c>evaluate &lt;dataset&gt; --renders &lt;folder&gt;</c> with the tool's defaults (the protocol's split and background, layout detected).</summary>
         public static string[] Arguments(string datasetFolder, string rendersFolder) =>
             new[] { Command.Name, ToolArguments.Required(datasetFolder), "--renders", ToolArguments.Required(rendersFolder) };
 
         public static int Run(EvaluationOptions options, TextWriter stdout, TextWriter stderr)
         {
+            if (options.FlowFolder != null) return RunFlow(options, stdout, stderr);
             if (options.InverseFolder != null)
             {
                 var code = RunInverse(options, stdout, stderr);
@@ -144,6 +157,36 @@ namespace NerfDatasetCreator
             if (result.Trainer?.Lpips == null) stdout.WriteLine("  LPIPS is not computed (it needs network weights): 3DGS python metrics.py -m <model>, nerfstudio ns-eval; evaluate shows their figures (--trainer-metrics).");
             stdout.WriteLine("wrote " + Path.Combine(result.OutFolder, MetricsJson.FileName) + ", " + Path.Combine(result.OutFolder, ReportHtml.FileName) + " and " + result.Views.Count + " error maps in " +
                              Path.Combine(result.OutFolder, EvaluationOutput.ErrorFolder));
+            return ToolExitCodes.Success;
+        }
+
+        static int RunFlow(EvaluationOptions options, TextWriter stdout, TextWriter stderr)
+        {
+            FlowEvaluationResult result;
+            try
+            {
+                result = FlowEvaluation.Run(options.DatasetFolder, options.FlowFolder, options.OutFolder);
+            }
+            catch (InvalidParameterException e)
+            {
+                foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
+                stderr.WriteLine("evaluate refused: nothing was written.");
+                return ToolExitCodes.Failure;
+            }
+            catch (InvalidDataException e)
+            {
+                stderr.WriteLine("error: " + e.Message);
+                stderr.WriteLine("evaluate stopped on a file it cannot read.");
+                return ToolExitCodes.Failure;
+            }
+            var c = System.Globalization.CultureInfo.InvariantCulture;
+            if (result.Pairs.Count > 0)
+                stdout.WriteLine("flow of " + result.Pairs.Count + " frame pairs: EPE " + result.EpeVisible.ToString("0.000", c) + " px on pixels visible in both frames, " + result.EpeAll.ToString("0.000", c) + " px on all pixels with a surface");
+            else stdout.WriteLine("flow: not scored (the folder has no .flo files)");
+            if (result.Tracks.Count > 0)
+                stdout.WriteLine("tracks of " + result.Tracks.Count + " query frames: PCK-T " + result.PckT.ToString("0.0000", c) + " (within " + result.Tracks[0].Threshold.ToString("0.##", c) + " px = 0.05 × the larger image side, DyCheck's)");
+            else stdout.WriteLine("tracks: not scored (the folder has no tracks_<q>.npz)");
+            stdout.WriteLine("wrote " + Path.Combine(result.OutFolder, FlowEvaluation.FileName));
             return ToolExitCodes.Success;
         }
 

@@ -10,8 +10,8 @@ namespace NerfDatasetCreator
     /// <summary>
     /// Reads the float arrays nerfstudio's <c>ns-render dataset</c> writes for raw outputs (<c>np.save</c> into
     /// <c>gzip.open(…npy.gz)</c>): the NumPy format v1–v3 (magic <c>\x93NUMPY</c>, header length, a Python dict literal
-    /// with <c>descr</c>, <c>fortran_order</c>, <c>shape</c>), little-endian float16/32/64, C order. Anything else is
-    /// refused naming the file.
+    /// with <c>descr</c>, <c>fortran_order</c>, <c>shape</c>), little-endian float16/32/64 and uint8 (as floats), C order.
+    /// Anything else is refused naming the file.
     /// </summary>
     public static class NpyReader
     {
@@ -85,7 +85,10 @@ namespace NerfDatasetCreator
                 case "<f2": size = 2; break;
                 case "<f4": size = 4; break;
                 case "<f8": size = 8; break;
-                default: throw Bad(name, "holds '" + descr + "' values; only little-endian floats (<f2, <f4, <f8) are read.");
+                // uint8 (NumPy writes '|u1': one byte has no order), e.g. flow tracks' state (NumpyFiles.UInt8Array).
+                case "|u1":
+                case "<u1": size = 1; break;
+                default: throw Bad(name, "holds '" + descr + "' values; only little-endian floats (<f2, <f4, <f8) and uint8 (|u1) are read.");
             }
             if (!BitConverter.IsLittleEndian) throw new PlatformNotSupportedException("NpyReader needs a little-endian machine.");
             // The data is read in blocks as it is converted: never more than the shape claims, whatever follows.
@@ -100,6 +103,7 @@ namespace NerfDatasetCreator
                     var at = k * size;
                     values[i] = size == 4 ? BitConverter.ToSingle(block, at)
                         : size == 8 ? (float)BitConverter.ToDouble(block, at)
+                        : size == 1 ? block[at]
                         : HalfFloat.ToFloat((ushort)(block[at] | (block[at + 1] << 8)));
                 }
             }

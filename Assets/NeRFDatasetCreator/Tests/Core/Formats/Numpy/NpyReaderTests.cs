@@ -69,6 +69,19 @@ namespace NerfDatasetCreator.Tests
         }
 
         [Test]
+        public void UInt8IsReadAsNumpyWritesItAndAsNumpyFilesWritesIt()
+        {
+            // np.save(np.array([[0, 1], [255, 3]], np.uint8)) writes descr '|u1' (a byte has no byte order).
+            var byHand = NpyReader.Decode(Npy("|u1", new[] { 2, 2 }, new byte[] { 0, 1, 255, 3 }), "state.npy");
+            Assert.That(byHand.Shape, Is.EqualTo(new[] { 2, 2 }));
+            Assert.That(byHand.Values, Is.EqualTo(new[] { 0f, 1f, 255f, 3f }));
+            var ours = NpyReader.Decode(NumpyFiles.UInt8Array(new byte[] { 2, 3, 1 }, 1, 3), "tracks state");
+            Assert.That(ours.Shape, Is.EqualTo(new[] { 1, 3 }));
+            Assert.That(ours.Values, Is.EqualTo(new[] { 2f, 3f, 1f }));
+            Assert.That(() => NpyReader.Decode(Npy("|u1", new[] { 3 }, new byte[2]), "s.npy"), Throws.TypeOf<InvalidDataException>().With.Message.EqualTo("s.npy is cut short: its shape needs 3 bytes of data."));
+        }
+
+        [Test]
         public void WhatItCannotReadIsRefusedNamingTheFile()
         {
             Assert.That(() => NpyReader.Decode(Encoding.ASCII.GetBytes("PK not numpy"), "a.npy"), Throws.TypeOf<InvalidDataException>().With.Message.EqualTo("a.npy is not a NumPy .npy array."));
