@@ -21,6 +21,15 @@ namespace NerfDatasetCreator
         /// <summary>Share of a pair's judged pixels allowed to disagree in (a), (b), (c): silhouette pixels whose depth sample and mesh ray meet different surfaces.</summary>
         public const double MaxBadShare = 0.01;
 
+        /// <summary>
+        /// The share of a pair's pixels allowed to miss forward ∘ backward = identity: 5 %. The bilinear bound
+        /// (<see cref="FlowPairCheck.InverseSpreadShare"/>) holds on one smooth surface; where the cell straddles a facet kink
+        /// or a silhouette of a curved mesh it does not, and on the flow demo (52 views of 200 px, a faceted sphere) up to
+        /// 3.1 % of a clean pair's pixels (4 of 130) and 1.2 % of a large one's missed it. A flipped sign, swapped axes or a
+        /// pair one step off miss on nearly every pixel, and the depth-and-poses test catches them on its own.
+        /// </summary>
+        public const double MaxInverseBadShare = 0.05;
+
         /// <summary>Share of a pair's surface pixels where the flow's "surface" and frame a's depth may disagree: the silhouette, as in depth vs mask.</summary>
         public const double MaxSurfaceMismatch = 0.005;
 
@@ -180,9 +189,9 @@ namespace NerfDatasetCreator
                     {
                         _judgedInverse++;
                         _worstInverse = Math.Max(_worstInverse, inv.Share);
-                        if (inv.Share > MaxBadShare)
+                        if (inv.Share > MaxInverseBadShare)
                             found.Add((pair.FlowFile, CheckFigures.Percent(inv.Share) + " of " + inv.Judged + " pixels visible both ways do not come back through " + reverse.FlowFile + " (|forward + backward| > " +
-                                DatasetCheckResult.Number(FlowPairCheck.InversePixels) + " px + ¼ of the backward flow's spread over the 4 pixels it is read from; median " + DatasetCheckResult.Number(CheckFigures.Median(residuals), "0.###") + " px), above " + CheckFigures.Percent(MaxBadShare) +
+                                DatasetCheckResult.Number(FlowPairCheck.InversePixels) + " px + ¼ of the backward flow's spread over the 4 pixels it is read from; median " + DatasetCheckResult.Number(CheckFigures.Median(residuals), "0.###") + " px), above " + CheckFigures.Percent(MaxInverseBadShare) +
                                 ": one of the two has its sign or axes wrong, or is of another pair."));
                     }
                 }
@@ -200,8 +209,8 @@ namespace NerfDatasetCreator
             var figure = (_pairs - _skippedPairs) + " pairs; worst pair: " + CheckFigures.Percent(_worstCamera) + " off depth and poses (" + _judgedCamera + " judged), " +
                          CheckFigures.Percent(_worstInverse) + " off forward ∘ backward (" + _judgedInverse + "), " + CheckFigures.Percent(_worstOcclusion) + " against b's depth (" + _judgedOcclusion + "), " +
                          CheckFigures.Percent(_worstSurface) + " NaN vs depth";
-            var threshold = "≤ " + CheckFigures.Percent(MaxBadShare) + " of each pair's pixels off (depth ± tolerance + " + DatasetCheckResult.Number(FlowPairCheck.FlowSlackPixels) + " px; " + DatasetCheckResult.Number(FlowPairCheck.InversePixels) +
-                            " px + ¼ local spread; 1 % depth), ≤ " + CheckFigures.Percent(MaxSurfaceMismatch) + " NaN vs depth, files complete, masks 0/255";
+            var threshold = "≤ " + CheckFigures.Percent(MaxBadShare) + " of each pair's pixels off (depth ± tolerance + " + DatasetCheckResult.Number(FlowPairCheck.FlowSlackPixels) + " px; 1 % depth), ≤ " +
+                            CheckFigures.Percent(MaxInverseBadShare) + " off forward ∘ backward (" + DatasetCheckResult.Number(FlowPairCheck.InversePixels) + " px + ¼ local spread), ≤ " + CheckFigures.Percent(MaxSurfaceMismatch) + " NaN vs depth, files complete, masks 0/255";
             var failed = _badPairs > 0 || _structureProblems > 0;
             return new DatasetCheckResult(CheckName, failed ? DatasetCheckStatus.Failed : DatasetCheckStatus.Passed, figure, threshold,
                 failed ? _badPairs + " pair(s) with problems" : _skippedPairs > 0 ? _skippedPairs + " pairs not checked (their views were not)" : null);
