@@ -104,23 +104,7 @@ namespace NerfDatasetCreator
                 var code = RunInverse(options, stdout, stderr);
                 if (code != ToolExitCodes.Success || options.RendersFolder == null) return code;
             }
-            EvaluationResult result;
-            try
-            {
-                result = RenderEvaluator.Run(options, line => stderr.WriteLine("… " + line));
-            }
-            catch (InvalidParameterException e)
-            {
-                foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
-                stderr.WriteLine("evaluate refused: nothing was written.");
-                return ToolExitCodes.Failure;
-            }
-            catch (InvalidDataException e)
-            {
-                stderr.WriteLine("error: " + e.Message);
-                stderr.WriteLine("evaluate stopped on a file it cannot read.");
-                return ToolExitCodes.Failure;
-            }
+            if (!Attempt(() => RenderEvaluator.Run(options, line => stderr.WriteLine("… " + line)), stderr, out EvaluationResult result)) return ToolExitCodes.Failure;
             foreach (var note in result.Notes.Concat(result.Renders.Notes).Concat(result.Trainer?.Notes ?? Enumerable.Empty<string>())) stdout.WriteLine("note: " + note);
             foreach (var warning in result.Warnings) stderr.WriteLine("warning: " + warning);
             var json = MetricsJson.Build(result);
@@ -162,23 +146,7 @@ namespace NerfDatasetCreator
 
         static int RunFlow(EvaluationOptions options, TextWriter stdout, TextWriter stderr)
         {
-            FlowEvaluationResult result;
-            try
-            {
-                result = FlowEvaluation.Run(options.DatasetFolder, options.FlowFolder, options.OutFolder);
-            }
-            catch (InvalidParameterException e)
-            {
-                foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
-                stderr.WriteLine("evaluate refused: nothing was written.");
-                return ToolExitCodes.Failure;
-            }
-            catch (InvalidDataException e)
-            {
-                stderr.WriteLine("error: " + e.Message);
-                stderr.WriteLine("evaluate stopped on a file it cannot read.");
-                return ToolExitCodes.Failure;
-            }
+            if (!Attempt(() => FlowEvaluation.Run(options.DatasetFolder, options.FlowFolder, options.OutFolder), stderr, out FlowEvaluationResult result)) return ToolExitCodes.Failure;
             var c = System.Globalization.CultureInfo.InvariantCulture;
             if (result.Pairs.Count > 0)
                 stdout.WriteLine("flow of " + result.Pairs.Count + " frame pairs: EPE " + result.EpeVisible.ToString("0.000", c) + " px on pixels visible in both frames, " + result.EpeAll.ToString("0.000", c) + " px on all pixels with a surface");
@@ -190,28 +158,37 @@ namespace NerfDatasetCreator
             return ToolExitCodes.Success;
         }
 
-        /// <summary><c>--inverse</c>: <see cref="InverseRenderingEvaluator"/>, then its figures.</summary>
-        static int RunInverse(EvaluationOptions options, TextWriter stdout, TextWriter stderr)
+        /// <summary>
+        /// Runs one evaluation: a refusal (<see cref="InvalidParameterException"/>, nothing written) or a file it cannot
+        /// read (<see cref="InvalidDataException"/>) is printed as the tool's error lines and gives false.
+        /// </summary>
+        static bool Attempt<T>(Func<T> run, TextWriter stderr, out T result)
         {
-            var split = options.Split ?? "test";
-            var outFolder = options.ResolvedOutFolder(options.InverseFolder, split);
-            Newtonsoft.Json.Linq.JObject json;
+            result = default;
             try
             {
-                json = InverseRenderingEvaluator.Run(options.DatasetFolder, options.InverseFolder, split, outFolder);
+                result = run();
+                return true;
             }
             catch (InvalidParameterException e)
             {
                 foreach (var problem in e.Problems) stderr.WriteLine("error: " + problem);
                 stderr.WriteLine("evaluate refused: nothing was written.");
-                return ToolExitCodes.Failure;
             }
             catch (InvalidDataException e)
             {
                 stderr.WriteLine("error: " + e.Message);
                 stderr.WriteLine("evaluate stopped on a file it cannot read.");
-                return ToolExitCodes.Failure;
             }
+            return false;
+        }
+
+        /// <summary><c>--inverse</c>: <see cref="InverseRenderingEvaluator"/>, then its figures.</summary>
+        static int RunInverse(EvaluationOptions options, TextWriter stdout, TextWriter stderr)
+        {
+            var split = options.Split ?? "test";
+            var outFolder = options.ResolvedOutFolder(options.InverseFolder, split);
+            if (!Attempt(() => InverseRenderingEvaluator.Run(options.DatasetFolder, options.InverseFolder, split, outFolder), stderr, out Newtonsoft.Json.Linq.JObject json)) return ToolExitCodes.Failure;
             stdout.WriteLine("inverse rendering, " + json["views"] + " " + split + " views:");
             if (json["albedo"] is Newtonsoft.Json.Linq.JObject albedo)
                 stdout.WriteLine("  albedo PSNR " + Show(albedo["psnr_tensoir_three_channel_global"], "0.00") + " dB (TensoIR's three-channel global median scaling; single-channel " + Show(albedo["psnr_single_channel_global"], "0.00") +

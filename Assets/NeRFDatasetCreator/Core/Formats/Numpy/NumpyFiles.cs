@@ -38,15 +38,7 @@ namespace NerfDatasetCreator
         public static byte[] Float32Array(float[] values, params int[] shape)
         {
             if (values == null) throw new ArgumentNullException(nameof(values));
-            if (shape == null || shape.Length == 0) throw new ArgumentException("an array needs at least one dimension.", nameof(shape));
-            long count = 1;
-            foreach (var n in shape)
-            {
-                if (n < 0) throw new ArgumentException("a dimension is never negative.", nameof(shape));
-                count *= n;
-            }
-            if (count != values.Length) throw new ArgumentException("values holds " + values.Length + " numbers, not " + count + ".", nameof(values));
-            var tuple = string.Join(", ", Array.ConvertAll(shape, n => n.ToString(CultureInfo.InvariantCulture))) + (shape.Length == 1 ? "," : "");
+            var tuple = ShapeTuple(shape, values.Length);
             var bytes = Start("<f4", tuple, 4, values.Length, out var data);
             for (var i = 0; i < values.Length; i++)
             {
@@ -63,6 +55,15 @@ namespace NerfDatasetCreator
         public static byte[] UInt8Array(byte[] values, params int[] shape)
         {
             if (values == null) throw new ArgumentNullException(nameof(values));
+            var tuple = ShapeTuple(shape, values.Length);
+            var bytes = Start("|u1", tuple, 1, values.Length, out var data);
+            Buffer.BlockCopy(values, 0, bytes, data, values.Length);
+            return bytes;
+        }
+
+        /// <summary>The header's shape tuple ("(n,)" for one dimension) of <paramref name="shape"/>, which must hold <paramref name="length"/> items.</summary>
+        static string ShapeTuple(int[] shape, int length)
+        {
             if (shape == null || shape.Length == 0) throw new ArgumentException("an array needs at least one dimension.", nameof(shape));
             long count = 1;
             foreach (var n in shape)
@@ -70,11 +71,8 @@ namespace NerfDatasetCreator
                 if (n < 0) throw new ArgumentException("a dimension is never negative.", nameof(shape));
                 count *= n;
             }
-            if (count != values.Length) throw new ArgumentException("values holds " + values.Length + " numbers, not " + count + ".", nameof(values));
-            var tuple = string.Join(", ", Array.ConvertAll(shape, n => n.ToString(CultureInfo.InvariantCulture))) + (shape.Length == 1 ? "," : "");
-            var bytes = Start("|u1", tuple, 1, values.Length, out var data);
-            Buffer.BlockCopy(values, 0, bytes, data, values.Length);
-            return bytes;
+            if (count != length) throw new ArgumentException("values holds " + length + " numbers, not " + count + ".", "values");
+            return string.Join(", ", Array.ConvertAll(shape, n => n.ToString(CultureInfo.InvariantCulture))) + (shape.Length == 1 ? "," : "");
         }
 
         /// <summary>
