@@ -31,14 +31,7 @@ namespace NerfDatasetCreator.Editor
 
         public DataPassMaterials()
         {
-            // Shader.Find sees every shader the editor imported, package shaders included: no Resources folder needed.
-            _shader = Shader.Find(ShaderName);
-            if (_shader == null)
-                throw new CaptureException("The shader '" + ShaderName + "' was not found: the package's Shaders folder is " +
-                    "missing or failed to import. Reimport the NeRF Dataset Creator package.");
-            if (!_shader.isSupported)
-                throw new CaptureException("The shader '" + ShaderName + "' does not run on this GPU or graphics API (" +
-                    SystemInfo.graphicsDeviceType + "); check the Console for its compile errors.");
+            _shader = PackageShader.Find(ShaderName);
         }
 
         /// <summary>Shaders seen so far that the data passes draw only approximately (each was warned about once).</summary>

@@ -26,13 +26,7 @@ namespace NerfDatasetCreator.Editor
         public MaterialPassMaterials(MaterialPipeline pipeline)
         {
             _pipeline = pipeline;
-            _shader = Shader.Find(ShaderName);
-            if (_shader == null)
-                throw new CaptureException("The shader '" + ShaderName + "' was not found: the package's Shaders folder is " +
-                    "missing or failed to import. Reimport the NeRF Dataset Creator package.");
-            if (!_shader.isSupported)
-                throw new CaptureException("The shader '" + ShaderName + "' does not run on this GPU or graphics API (" +
-                    SystemInfo.graphicsDeviceType + "); check the Console for its compile errors.");
+            _shader = PackageShader.Find(ShaderName);
         }
 
         /// <summary>Shader names whose parameters the passes read exactly.</summary>
